@@ -1,0 +1,3 @@
+grammar MASL;
+program : EOF ;
+WS : [ \t\r\n]+ -> skip ;
