@@ -390,5 +390,10 @@ WS              : [ \t\r\n\f]+ -> channel(HIDDEN);
 BLOCK_COMMENT   : '/*' .*? '*/' -> channel(HIDDEN);
 LINE_COMMENT    : '//' ~[\r\n]* -> channel(HIDDEN);
 
+// A string the line ends inside: one token, so the error names it instead of its characters one by one.
+UnterminatedString
+    : '"' (~["\\\r\n] | EscapeSequence)*
+    ;
+
 // Anything else is one bad character, reported by the parser with its position instead of a lexer crash.
 UNEXPECTED_CHAR : . ;

@@ -1,0 +1,146 @@
+package masl.translator.parse;
+
+import java.util.ArrayList;
+import java.util.List;
+import masl.grammar.MASLLexer;
+import masl.grammar.MASLParser;
+import masl.translator.diagnostics.Diagnostics;
+import masl.translator.source.SourceFile;
+import org.antlr.v4.runtime.BaseErrorListener;
+import org.antlr.v4.runtime.CharStreams;
+import org.antlr.v4.runtime.CommonTokenStream;
+import org.antlr.v4.runtime.InputMismatchException;
+import org.antlr.v4.runtime.NoViableAltException;
+import org.antlr.v4.runtime.Parser;
+import org.antlr.v4.runtime.RecognitionException;
+import org.antlr.v4.runtime.Recognizer;
+import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.Vocabulary;
+import org.antlr.v4.runtime.misc.IntervalSet;
+
+/**
+ * Parses a MASL program with the ANTLR grammar and turns every syntax error into a positioned
+ * {@link masl.translator.diagnostics.Diagnostic} in the user's words. ANTLR's recovery goes on
+ * after an error, so every syntax error of a file is reported in one run.
+ */
+public final class ProgramParser {
+
+    /** The parse tree and the token stream it was built from (the analysis reads path texts from it). */
+    public record Parsed(SourceFile source, MASLParser.ProgramContext tree, CommonTokenStream tokens) { }
+
+    private ProgramParser() {
+    }
+
+    public static Parsed parse(SourceFile source, Diagnostics diagnostics) {
+        MASLLexer lexer = new MASLLexer(CharStreams.fromString(source.text(), source.name()));
+        lexer.removeErrorListeners();
+        CommonTokenStream tokens = new CommonTokenStream(lexer);
+        MASLParser parser = new MASLParser(tokens);
+        parser.removeErrorListeners();
+        parser.addErrorListener(new Reporter(source.name(), diagnostics));
+        return new Parsed(source, parser.program(), tokens);
+    }
+
+    /** Rewords ANTLR's messages: which token was found, and what was expected when that is short. */
+    private static final class Reporter extends BaseErrorListener {
+        private static final int MAX_LISTED = 4;
+        private final String file;
+        private final Diagnostics diagnostics;
+
+        Reporter(String file, Diagnostics diagnostics) {
+            this.file = file;
+            this.diagnostics = diagnostics;
+        }
+
+        @Override
+        public void syntaxError(Recognizer<?, ?> recognizer, Object offendingSymbol, int line, int column,
+                String antlrMessage, RecognitionException error) {
+            Parser parser = (Parser) recognizer;
+            Token found = (Token) offendingSymbol;
+            if (found.getType() == MASLLexer.UnterminatedString) {
+                diagnostics.error(file, line, column + 1, "unterminated string literal");
+                return;
+            }
+            if (found.getType() == MASLLexer.UNEXPECTED_CHAR) {
+                diagnostics.error(file, line, column + 1, "unexpected character " + quoteCharacter(found.getText()));
+                return;
+            }
+            IntervalSet expected = error != null && !(error instanceof NoViableAltException)
+                    ? error.getExpectedTokens()
+                    : parser.getExpectedTokens();
+            if (antlrMessage.startsWith("missing ")) {
+                Token previous = previousToken(parser, found);
+                if (previous != null) {
+                    diagnostics.error(file, previous.getLine(), endColumn(previous),
+                            "expected " + describe(expected, parser.getVocabulary()));
+                    return;
+                }
+            }
+            String message = "unexpected " + describe(found);
+            boolean listable = expected.size() > 0 && expected.size() <= MAX_LISTED
+                    && (error == null || error instanceof InputMismatchException);
+            if (listable) {
+                message += ", expected " + describe(expected, parser.getVocabulary());
+            }
+            diagnostics.error(file, line, column + 1, message);
+        }
+
+        private static Token previousToken(Parser parser, Token found) {
+            for (int i = found.getTokenIndex() - 1; i >= 0; i--) {
+                Token token = parser.getTokenStream().get(i);
+                if (token.getChannel() == Token.DEFAULT_CHANNEL) {
+                    return token;
+                }
+            }
+            return null;
+        }
+
+        /** The column just after a token, where a missing ';' belongs. */
+        private static int endColumn(Token token) {
+            String text = token.getText();
+            int lastBreak = Math.max(text.lastIndexOf('\n'), text.lastIndexOf('\r'));
+            return lastBreak < 0 ? token.getCharPositionInLine() + text.length() + 1 : text.length() - lastBreak;
+        }
+
+        private static String describe(Token token) {
+            if (token.getType() == Token.EOF) {
+                return "end of file";
+            }
+            return "'" + token.getText() + "'";
+        }
+
+        private static String describe(IntervalSet expected, Vocabulary vocabulary) {
+            List<String> names = new ArrayList<>();
+            for (int type : expected.toArray()) {
+                names.add(tokenName(type, vocabulary));
+            }
+            if (names.size() == 1) {
+                return names.get(0);
+            }
+            return String.join(", ", names.subList(0, names.size() - 1)) + " or " + names.get(names.size() - 1);
+        }
+
+        private static String tokenName(int type, Vocabulary vocabulary) {
+            if (type == Token.EOF) {
+                return "end of file";
+            }
+            String literal = vocabulary.getLiteralName(type);
+            if (literal != null) {
+                return literal;
+            }
+            return switch (vocabulary.getSymbolicName(type)) {
+                case "Identifier" -> "a name";
+                case "IntegerLiteral" -> "an integer";
+                case "FloatingPointLiteral" -> "a number";
+                case "StringLiteral" -> "a string";
+                case "CharacterLiteral" -> "a character";
+                default -> vocabulary.getDisplayName(type);
+            };
+        }
+
+        private static String quoteCharacter(String text) {
+            char c = text.isEmpty() ? '?' : text.charAt(0);
+            return Character.isISOControl(c) ? String.format("U+%04X", (int) c) : "'" + text + "'";
+        }
+    }
+}
