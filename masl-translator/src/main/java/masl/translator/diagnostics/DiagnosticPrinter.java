@@ -1,19 +1,25 @@
 package masl.translator.diagnostics;
 
+import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.HashMap;
 import java.util.Map;
 
 /**
  * Renders diagnostics as compilers do: the headline, the offending source line, and a caret under
- * the column. Source texts are given by file name; a diagnostic whose file is unknown, or whose
- * line lies outside it, is printed as its headline alone.
+ * the column. Source texts come from the map given, else from the file of that name (a descriptor);
+ * a diagnostic whose text cannot be had, or whose line lies outside it, is printed as its headline alone.
  */
 public final class DiagnosticPrinter {
 
     private final Map<String, String> sources;
 
     public DiagnosticPrinter(Map<String, String> sourcesByFile) {
-        this.sources = Map.copyOf(sourcesByFile);
+        this.sources = new HashMap<>(sourcesByFile);
     }
 
     public String render(Diagnostic diagnostic) {
@@ -40,12 +46,20 @@ public final class DiagnosticPrinter {
     }
 
     private String sourceLine(Diagnostic diagnostic) {
-        String text = sources.get(diagnostic.file());
+        String text = sources.computeIfAbsent(diagnostic.file(), DiagnosticPrinter::readOrNull);
         if (text == null || diagnostic.line() <= 0) {
             return null;
         }
         String[] lines = text.split("\r\n|\r|\n", -1);
         return diagnostic.line() <= lines.length ? lines[diagnostic.line() - 1] : null;
+    }
+
+    private static String readOrNull(String file) {
+        try {
+            return Files.readString(Path.of(file), StandardCharsets.UTF_8);
+        } catch (IOException | InvalidPathException | SecurityException unreadable) {
+            return null;
+        }
     }
 
     /** Tabs are kept so the caret lines up with the source line in a terminal. */

@@ -10,7 +10,6 @@ import org.antlr.v4.runtime.BaseErrorListener;
 import org.antlr.v4.runtime.CharStreams;
 import org.antlr.v4.runtime.CommonTokenStream;
 import org.antlr.v4.runtime.InputMismatchException;
-import org.antlr.v4.runtime.NoViableAltException;
 import org.antlr.v4.runtime.Parser;
 import org.antlr.v4.runtime.RecognitionException;
 import org.antlr.v4.runtime.Recognizer;
@@ -46,6 +45,7 @@ public final class ProgramParser {
         private static final int MAX_LISTED = 4;
         private final String file;
         private final Diagnostics diagnostics;
+        private int lastErrorLine;
 
         Reporter(String file, Diagnostics diagnostics) {
             this.file = file;
@@ -57,6 +57,12 @@ public final class ProgramParser {
                 String antlrMessage, RecognitionException error) {
             Parser parser = (Parser) recognizer;
             Token found = (Token) offendingSymbol;
+            // ANTLR's recovery often trips again on the tokens right after an error: one error a line
+            // keeps those echoes out and still reports unrelated errors of the file.
+            if (line == lastErrorLine) {
+                return;
+            }
+            lastErrorLine = line;
             if (found.getType() == MASLLexer.UnterminatedString) {
                 diagnostics.error(file, line, column + 1, "unterminated string literal");
                 return;
@@ -65,10 +71,8 @@ public final class ProgramParser {
                 diagnostics.error(file, line, column + 1, "unexpected character " + quoteCharacter(found.getText()));
                 return;
             }
-            IntervalSet expected = error != null && !(error instanceof NoViableAltException)
-                    ? error.getExpectedTokens()
-                    : parser.getExpectedTokens();
-            if (antlrMessage.startsWith("missing ")) {
+            IntervalSet expected = parser.getExpectedTokens();
+            if (antlrMessage.startsWith("missing ") && closes(expected)) {
                 Token previous = previousToken(parser, found);
                 if (previous != null) {
                     diagnostics.error(file, previous.getLine(), endColumn(previous),
@@ -83,6 +87,16 @@ public final class ProgramParser {
                 message += ", expected " + describe(expected, parser.getVocabulary());
             }
             diagnostics.error(file, line, column + 1, message);
+        }
+
+        /** A missing ';' or closing bracket belongs after the previous token, as javac reports it. */
+        private static boolean closes(IntervalSet expected) {
+            if (expected.size() != 1) {
+                return false;
+            }
+            int type = expected.getMinElement();
+            return type == MASLLexer.SEMI || type == MASLLexer.RPAREN || type == MASLLexer.RBRACE
+                    || type == MASLLexer.RBRACK;
         }
 
         private static Token previousToken(Parser parser, Token found) {
@@ -112,7 +126,12 @@ public final class ProgramParser {
         private static String describe(IntervalSet expected, Vocabulary vocabulary) {
             List<String> names = new ArrayList<>();
             for (int type : expected.toArray()) {
-                names.add(tokenName(type, vocabulary));
+                // `extends` and `super` are names in MASL (§2): "a name" covers them.
+                boolean nameWord = type == MASLLexer.EXTENDS_WORD || type == MASLLexer.SUPER_WORD;
+                String name = tokenName(type, vocabulary);
+                if (!(nameWord && expected.contains(MASLLexer.Identifier)) && !names.contains(name)) {
+                    names.add(name);
+                }
             }
             if (names.size() == 1) {
                 return names.get(0);
