@@ -8,6 +8,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.Supplier;
 
 /**
  * Loads agent type descriptors, validates them (agent-types.md, "Rules the loader enforces") and
@@ -18,10 +19,11 @@ import java.util.Optional;
  * ({@link #ROOT_TYPE}, {@code masl.agents.Default}) unless it is the root type itself; its descriptor is
  * found like any supertype. A loader built with a null root type has no implicit supertype.
  *
- * <p>A supertype named by class name is found, first match wins: as {@code SimpleName.xml} or
- * {@code package/path/SimpleName.xml} next to the subtype's file, on the agent path, among the
- * classpath resources (each candidate's {@code full_class_name} must match); then among all
- * {@code .xml} files next to the subtype's file, then in the path's folders (recursively) and jars.
+ * <p>A supertype is found by class name, first match wins (a candidate's {@code full_class_name}
+ * must match): in the subtype's folder as {@code SimpleName.xml} or {@code package/path/SimpleName.xml},
+ * then as any {@code .xml} file there; then under those two names on the agent path and among the
+ * classpath resources; then as any {@code .xml} file in the path's folders (recursively) and jars.
+ * {@link #loadByClassName} searches the same way without a subtype's folder.
  *
  * <p>Loaded types are cached by location and by class name (the first type loaded for a class name
  * is the one {@link #loadByClassName} returns). Thread-safe: loading is serialised.
@@ -33,6 +35,10 @@ public final class DescriptorLoader {
 
     /** The implementation class of the type every other type extends. */
     public static final String ROOT_TYPE = "masl.agents.Default";
+
+    /** Resources of no class loader: for searching one folder alone. */
+    private static final ClassLoader EMPTY_RESOURCES = new ClassLoader(null) {
+    };
 
     private final AgentPath agentPath;
     private final String rootType;
@@ -174,20 +180,19 @@ public final class DescriptorLoader {
 
     private Optional<DescriptorSource> locate(String className, Path nearFolder, Problems problems) {
         String simpleName = className.substring(className.lastIndexOf('.') + 1);
+        List<String> conventionalNames = List.of(simpleName + ".xml", className.replace('.', '/') + ".xml");
+        // In search order; each is only listed when the ones before hold no descriptor of the class.
+        List<Supplier<List<DescriptorSource>>> searches = new ArrayList<>();
+        if (nearFolder != null) {
+            AgentPath nextToSubtype = AgentPath.of(List.of(nearFolder), EMPTY_RESOURCES);
+            conventionalNames.forEach(name -> searches.add(() -> nextToSubtype.findAll(name, null)));
+            searches.add(() -> AgentPath.xmlFilesIn(nearFolder));
+        }
+        conventionalNames.forEach(name -> searches.add(() -> agentPath.findAll(name, null)));
+        searches.add(agentPath::allDescriptorsInEntries);
         try {
-            for (String candidate : List.of(simpleName + ".xml", className.replace('.', '/') + ".xml")) {
-                for (DescriptorSource source : agentPath.findAll(candidate, nearFolder)) {
-                    if (declares(source, className)) {
-                        return Optional.of(source);
-                    }
-                }
-            }
-            List<DescriptorSource> others = new ArrayList<>();
-            if (nearFolder != null) {
-                others.addAll(AgentPath.xmlFilesIn(nearFolder));
-            }
-            others.addAll(agentPath.allDescriptorsInEntries());
-            return others.stream().filter(source -> declares(source, className)).findFirst();
+            return searches.stream().flatMap(search -> search.get().stream())
+                    .filter(source -> declares(source, className)).findFirst();
         } catch (UncheckedIOException e) {
             problems.at(0, 0, "cannot search for the descriptor of '" + className + "': " + e.getMessage());
             return Optional.empty();
