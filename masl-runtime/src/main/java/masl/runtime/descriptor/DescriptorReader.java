@@ -9,7 +9,6 @@ import java.util.ArrayList;
 import java.util.Deque;
 import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import javax.xml.XMLConstants;
@@ -92,17 +91,18 @@ final class DescriptorReader {
 
     private static XmlElement readValidating(XMLStreamReader reader, String file, List<DescriptorProblem> problems)
             throws XMLStreamException, SAXException {
+        Deque<ElementBuilder> open = new ArrayDeque<>();
+        ProblemCollector collector = new ProblemCollector(file, problems);
         ValidatorHandler validator = SCHEMA.newValidatorHandler();
-        validator.setErrorHandler(new ProblemCollector(file, problems));
-        trySetLocale(validator);
+        validator.setErrorHandler(collector);
         validator.setDocumentLocator(new ReaderLocator(reader, file));
         validator.startDocument();
-        Deque<ElementBuilder> open = new ArrayDeque<>();
         XmlElement root = null;
         while (reader.hasNext()) {
             switch (reader.next()) {
                 case XMLStreamConstants.START_ELEMENT -> {
                     ElementBuilder element = ElementBuilder.start(reader);
+                    collector.validating = element;
                     validator.startElement(nonNull(reader.getNamespaceURI()), element.name, element.name,
                             element.saxAttributes());
                     open.push(element);
@@ -115,9 +115,11 @@ final class DescriptorReader {
                         root = done;
                     } else {
                         open.peek().children.add(done);
+                        collector.validating = open.peek();
                     }
                 }
                 case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA, XMLStreamConstants.SPACE -> {
+                    collector.validating = open.peek();
                     char[] text = reader.getTextCharacters();
                     validator.characters(text, reader.getTextStart(), reader.getTextLength());
                 }
@@ -146,15 +148,6 @@ final class DescriptorReader {
 
     private static String nonNull(String namespace) {
         return namespace == null ? "" : namespace;
-    }
-
-    /** Validator messages are parsed by {@link SchemaMessages}: ask for them in English. */
-    private static void trySetLocale(ValidatorHandler validator) {
-        try {
-            validator.setProperty("http://apache.org/xml/properties/locale", Locale.ENGLISH);
-        } catch (SAXException unsupported) {
-            // Another schema implementation: its messages are passed on as they are.
-        }
     }
 
     private static XMLInputFactory secureInputFactory() {
@@ -248,7 +241,17 @@ final class DescriptorReader {
     }
 
     /** Collects every validation error (validation goes on after one) as a rephrased problem. */
-    private record ProblemCollector(String file, List<DescriptorProblem> problems) implements ErrorHandler {
+    private static final class ProblemCollector implements ErrorHandler {
+        private final String file;
+        private final List<DescriptorProblem> problems;
+        /** The element the validator is at: being started, holding text, or just completed. */
+        ElementBuilder validating;
+
+        ProblemCollector(String file, List<DescriptorProblem> problems) {
+            this.file = file;
+            this.problems = problems;
+        }
+
         @Override
         public void warning(SAXParseException exception) {
             // Schema warnings do not make a descriptor invalid.
@@ -257,12 +260,13 @@ final class DescriptorReader {
         @Override
         public void error(SAXParseException exception) {
             String message = String.valueOf(exception.getMessage());
-            // Every value error on an attribute is followed by a cvc-attribute.3 that names the
-            // attribute; that one alone is reported (the schema has no element with text content).
-            if (!SchemaMessages.isFacetError(message)) {
-                problems.add(new DescriptorProblem(file, Math.max(exception.getLineNumber(), 0),
-                        Math.max(exception.getColumnNumber(), 0), SchemaMessages.rephrase(message)));
+            if (SchemaMessages.isFacetError(message)) {
+                return;
             }
+            String element = validating == null ? "" : validating.name;
+            Map<String, String> attributes = validating == null ? Map.of() : validating.attributes;
+            problems.add(new DescriptorProblem(file, Math.max(exception.getLineNumber(), 0),
+                    Math.max(exception.getColumnNumber(), 0), SchemaMessages.rephrase(message, element, attributes)));
         }
 
         @Override

@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -69,6 +70,26 @@ class DescriptorErrorsTest {
                   <Primitive function_name="stopGripper" synchronous_call="false" return_type_name="void"/>
                 """);
         assertSingleProblem(problems, file(), 3, 3, "<Primitive>: missing attribute 'member_id'");
+    }
+
+    @Test
+    void schemaMessagesAreRephrasedWhateverTheDefaultLanguage() {
+        Locale before = Locale.getDefault();
+        Locale.setDefault(Locale.GERMAN);
+        try {
+            List<DescriptorProblem> problems = loadKheperaWith("""
+                      <Attribute attribute_name="battery" member_id="A1" attribute_class="int" colour="red"/>
+                      <Permeability permeability_name="open" umask="8"/>
+                      <Sensor/>
+                    """);
+            assertEquals(3, problems.size(), () -> TestDescriptors.render(problems));
+            assertProblem(problems.get(0), file(), 3, 3, "<Attribute>: unknown attribute 'colour'");
+            assertProblem(problems.get(1), file(), 4, 3, "<Permeability>: invalid value '8' for attribute 'umask':"
+                    + " expected 3 octal digits");
+            assertProblem(problems.get(2), file(), 5, 3, "unknown or misplaced element <Sensor>: expected <Class>");
+        } finally {
+            Locale.setDefault(before);
+        }
     }
 
     @Test
