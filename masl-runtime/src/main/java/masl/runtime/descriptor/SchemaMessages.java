@@ -28,8 +28,13 @@ final class SchemaMessages {
             "javaClassName", "a fully qualified Java class name",
             "javaTypeName", "a Java type (void, int.class, java.lang.String, int[], a class name)");
 
-    private static final Pattern CODE = Pattern.compile("^(cvc-[\\w.-]+): (.*)$", Pattern.DOTALL);
-    private static final Pattern QUOTED = Pattern.compile("'([^']*)'");
+    /** Some languages put a space before the colon. */
+    private static final Pattern CODE = Pattern.compile("^(cvc-[\\w.-]+)\\s*:\\s*(.*)$", Pattern.DOTALL);
+    /**
+     * A quoted name, or a quoted list of names in braces; without spaces, so that the apostrophes of
+     * words such as French "l'attribut" are not taken for quotes.
+     */
+    private static final Pattern QUOTED = Pattern.compile("'(\\{[^}]*\\}|[^'\\s]+)'");
 
     /**
      * Value-level errors that Xerces always follows with a cvc-attribute.3 naming the attribute; the
@@ -73,16 +78,17 @@ final class SchemaMessages {
                     : "<" + quoted.get(0) + ">: text is not allowed here, only elements";
             case "cvc-elt.1.a" -> quoted.isEmpty() ? null
                     : "the root element must be <Agent>, not <" + quoted.get(0) + ">";
-            case "cvc-attribute.3" -> invalidValue(quoted, element, attributes);
+            case "cvc-attribute.3" -> invalidValue(code.group(2), quoted, element, attributes);
             default -> null;
         };
         return rephrased != null ? rephrased : code.group(2);
     }
 
     /** The attribute whose value is invalid is the one of the element named among the arguments. */
-    private static String invalidValue(List<String> quoted, String element, Map<String, String> attributes) {
+    private static String invalidValue(String text, List<String> quoted, String element,
+            Map<String, String> attributes) {
         for (Map.Entry<String, String> attribute : attributes.entrySet()) {
-            if (quoted.contains(attribute.getKey()) && quoted.contains(attribute.getValue())) {
+            if (quoted.contains(attribute.getKey()) && text.contains("'" + attribute.getValue() + "'")) {
                 String type = quoted.stream().filter(EXPECTED_VALUES::containsKey)
                         .filter(name -> !name.equals(attribute.getKey()) && !name.equals(attribute.getValue()))
                         .findFirst().orElse(null);

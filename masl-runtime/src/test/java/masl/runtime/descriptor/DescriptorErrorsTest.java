@@ -72,10 +72,11 @@ class DescriptorErrorsTest {
         assertSingleProblem(problems, file(), 3, 3, "<Primitive>: missing attribute 'member_id'");
     }
 
-    @Test
-    void schemaMessagesAreRephrasedWhateverTheDefaultLanguage() {
+    @ParameterizedTest
+    @CsvSource({"en", "de", "fr", "ja", "es"})
+    void schemaMessagesAreRephrasedWhateverTheDefaultLanguage(String language) {
         Locale before = Locale.getDefault();
-        Locale.setDefault(Locale.GERMAN);
+        Locale.setDefault(Locale.forLanguageTag(language));
         try {
             List<DescriptorProblem> problems = loadKheperaWith("""
                       <Attribute attribute_name="battery" member_id="A1" attribute_class="int" colour="red"/>
