@@ -2,10 +2,12 @@ package masl.runtime.descriptor;
 
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.Function;
 
 /**
  * An agent type as loaded from its descriptor by a {@link DescriptorLoader}, supertypes resolved and
@@ -162,11 +164,11 @@ public final class AgentType {
     }
 
     private static <M> Map<String, M> visible(Collection<M> inherited, List<M> own,
-            java.util.function.Function<M, String> name) {
+            Function<M, String> name) {
         Map<String, M> visible = new LinkedHashMap<>();
         inherited.forEach(member -> visible.put(name.apply(member), member));
         // put() keeps the position of an existing key: a redefinition stays where the inherited one was.
         own.forEach(member -> visible.put(name.apply(member), member));
-        return java.util.Collections.unmodifiableMap(visible);
+        return Collections.unmodifiableMap(visible);
     }
 }

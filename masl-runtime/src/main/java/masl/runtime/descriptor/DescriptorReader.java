@@ -62,7 +62,7 @@ final class DescriptorReader {
         } catch (XMLStreamException e) {
             problems.add(notWellFormed(file, e));
         } catch (IOException e) {
-            problems.add(new DescriptorProblem(file, 0, 0, "cannot read the descriptor: " + e.getMessage()));
+            problems.add(new DescriptorProblem(file, 0, 0, "cannot read the descriptor: " + e));
         } catch (SAXException e) {
             problems.add(new DescriptorProblem(file, 0, 0, "schema validation failed: " + e.getMessage()));
         }

@@ -3,6 +3,7 @@ package masl.runtime.descriptor;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -109,7 +110,7 @@ final class SchemaMessages {
     }
 
     /** The first argument that is not {@code element}: the other name of a two-name message. */
-    private static java.util.Optional<String> other(List<String> quoted, String element) {
+    private static Optional<String> other(List<String> quoted, String element) {
         return quoted.stream().filter(name -> !name.equals(element)).findFirst();
     }
 

@@ -1,5 +1,7 @@
 package masl.runtime.descriptor;
 
+import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -19,7 +21,7 @@ record XmlElement(String name, Map<String, String> attributes, List<XmlElement> 
             "exception_name", "modifier_name", "name", "full_class_name");
 
     XmlElement {
-        attributes = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(attributes));
+        attributes = Collections.unmodifiableMap(new LinkedHashMap<>(attributes));
         children = List.copyOf(children);
     }
 
