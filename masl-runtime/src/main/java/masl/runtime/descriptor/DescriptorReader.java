@@ -1,6 +1,7 @@
 package masl.runtime.descriptor;
 
 import com.fasterxml.jackson.dataformat.xml.XmlFactory;
+import java.io.FileNotFoundException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.net.URL;
@@ -62,7 +63,8 @@ final class DescriptorReader {
         } catch (XMLStreamException e) {
             problems.add(notWellFormed(file, e));
         } catch (IOException e) {
-            problems.add(new DescriptorProblem(file, 0, 0, "cannot read the descriptor: " + e));
+            String reason = e instanceof FileNotFoundException ? "file not found" : "cannot read the descriptor: " + e;
+            problems.add(new DescriptorProblem(file, 0, 0, reason));
         } catch (SAXException e) {
             problems.add(new DescriptorProblem(file, 0, 0, "schema validation failed: " + e.getMessage()));
         }
@@ -94,6 +96,10 @@ final class DescriptorReader {
         Deque<ElementBuilder> open = new ArrayDeque<>();
         ProblemCollector collector = new ProblemCollector(file, problems);
         ValidatorHandler validator = SCHEMA.newValidatorHandler();
+        // Schema location hints (xsi:schemaLocation) must not make the validator fetch anything either.
+        validator.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
+        validator.setProperty(XMLConstants.ACCESS_EXTERNAL_DTD, "");
+        validator.setProperty(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "");
         validator.setErrorHandler(collector);
         validator.setDocumentLocator(new ReaderLocator(reader, file));
         validator.startDocument();
@@ -103,13 +109,13 @@ final class DescriptorReader {
                 case XMLStreamConstants.START_ELEMENT -> {
                     ElementBuilder element = ElementBuilder.start(reader);
                     collector.validating = element;
-                    validator.startElement(nonNull(reader.getNamespaceURI()), element.name, element.name,
-                            element.saxAttributes());
+                    validator.startElement(nonNull(reader.getNamespaceURI()), element.name, qualifiedName(reader),
+                            saxAttributes(reader));
                     open.push(element);
                 }
                 case XMLStreamConstants.END_ELEMENT -> {
                     validator.endElement(nonNull(reader.getNamespaceURI()), reader.getLocalName(),
-                            reader.getLocalName());
+                            qualifiedName(reader));
                     XmlElement done = open.pop().build();
                     if (open.isEmpty()) {
                         root = done;
@@ -144,6 +150,22 @@ final class DescriptorReader {
         int line = location == null ? 0 : Math.max(location.getLineNumber(), 0);
         int column = location == null ? 0 : Math.max(location.getColumnNumber(), 0);
         return new DescriptorProblem(file, line, column, "not well-formed XML: " + message.strip());
+    }
+
+    private static AttributesImpl saxAttributes(XMLStreamReader reader) {
+        AttributesImpl sax = new AttributesImpl();
+        for (int i = 0; i < reader.getAttributeCount(); i++) {
+            String prefix = nonNull(reader.getAttributePrefix(i));
+            String localName = reader.getAttributeLocalName(i);
+            sax.addAttribute(nonNull(reader.getAttributeNamespace(i)), localName,
+                    prefix.isEmpty() ? localName : prefix + ":" + localName, "CDATA", reader.getAttributeValue(i));
+        }
+        return sax;
+    }
+
+    private static String qualifiedName(XMLStreamReader reader) {
+        String prefix = nonNull(reader.getPrefix());
+        return prefix.isEmpty() ? reader.getLocalName() : prefix + ":" + reader.getLocalName();
     }
 
     private static String nonNull(String namespace) {
@@ -200,16 +222,13 @@ final class DescriptorReader {
             Location location = reader.getLocation();
             ElementBuilder element = new ElementBuilder(reader.getLocalName(), location.getLineNumber(),
                     location.getColumnNumber());
+            // Descriptor attributes have no namespace; others (xsi:…) only concern the validator.
             for (int i = 0; i < reader.getAttributeCount(); i++) {
-                element.attributes.put(reader.getAttributeLocalName(i), reader.getAttributeValue(i));
+                if (nonNull(reader.getAttributeNamespace(i)).isEmpty()) {
+                    element.attributes.put(reader.getAttributeLocalName(i), reader.getAttributeValue(i));
+                }
             }
             return element;
-        }
-
-        AttributesImpl saxAttributes() {
-            AttributesImpl sax = new AttributesImpl();
-            attributes.forEach((name, value) -> sax.addAttribute("", name, name, "CDATA", value));
-            return sax;
         }
 
         XmlElement build() {

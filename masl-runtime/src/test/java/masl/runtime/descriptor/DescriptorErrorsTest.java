@@ -57,6 +57,31 @@ class DescriptorErrorsTest {
     }
 
     @Test
+    void missingFile() {
+        Path absent = folder.resolve("Absent.xml");
+        DescriptorProblem problem = problemsOf(() -> TestDescriptors.loader().load(absent)).get(0);
+        assertEquals(absent.toString(), problem.file());
+        assertEquals(0, problem.line());
+        assertEquals(absent + ": error: file not found", problem.toString());
+    }
+
+    @Test
+    void elementInANamespaceIsNotADescriptorElement() {
+        List<DescriptorProblem> problems = load("""
+                <?xml version="1.0"?>
+                <m:Agent xmlns:m="urn:masl" short_class_name="T" full_class_name="masl.runtime.descriptor.fixtures.Robot"/>
+                """);
+        assertSingleProblem(problems, file(), 2, 1, "the root element must be <Agent>, not <m:Agent>");
+    }
+
+    @Test
+    void problemPrintsAsFileLineColumn() {
+        assertEquals("a/T.xml:3:5: error: boom", new DescriptorProblem("a/T.xml", 3, 5, "boom").toString());
+        assertEquals("a/T.xml:3: error: boom", new DescriptorProblem("a/T.xml", 3, 0, "boom").toString());
+        assertEquals("a/T.xml: error: boom", new DescriptorProblem("a/T.xml", 0, 0, "boom").toString());
+    }
+
+    @Test
     void unknownAttribute() {
         List<DescriptorProblem> problems = loadKheperaWith("""
                   <Attribute attribute_name="battery" member_id="A1" attribute_class="int" colour="red"/>

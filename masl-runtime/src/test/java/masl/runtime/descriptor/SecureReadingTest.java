@@ -48,6 +48,18 @@ class SecureReadingTest {
     }
 
     @Test
+    void schemaLocationHintsAreAcceptedAndNotFollowed() {
+        // Were the hinted schema read, it would be an error: it is not a schema.
+        write(folder, "other.xsd", "not a schema");
+        Path file = write(folder, "Hinted.xml", """
+                <?xml version="1.0"?>
+                <Agent xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" xsi:noNamespaceSchemaLocation="other.xsd"
+                       short_class_name="Hinted" full_class_name="masl.runtime.descriptor.fixtures.Robot"/>
+                """);
+        assertEquals("Hinted", TestDescriptors.loader().load(file).shortName());
+    }
+
+    @Test
     void doctypeNamingALocalDtdIsNotApplied() {
         // Were this DTD read, it would fix short_class_name to "Hacked" or make the file invalid.
         write(folder, "evil.dtd", """
