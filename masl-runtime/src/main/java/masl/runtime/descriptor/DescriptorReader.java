@@ -146,7 +146,6 @@ final class DescriptorReader {
         if (positionSuffix >= 0) {
             message = message.substring(0, positionSuffix);
         }
-        message = message.replaceFirst("^ParseError at \\[row,col\\]:\\[\\d+,\\d+\\]\\s*Message: ", "");
         int line = location == null ? 0 : Math.max(location.getLineNumber(), 0);
         int column = location == null ? 0 : Math.max(location.getColumnNumber(), 0);
         return new DescriptorProblem(file, line, column, "not well-formed XML: " + message.strip());
