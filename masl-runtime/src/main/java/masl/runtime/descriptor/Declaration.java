@@ -1,0 +1,38 @@
+package masl.runtime.descriptor;
+
+import java.util.List;
+import java.util.Map;
+
+/**
+ * What one descriptor file declares, before its supertype is known.
+ *
+ * @param superFullClassName as written, or null
+ * @param agent              the {@code <Agent>} element, where type-level problems are reported
+ */
+record Declaration(String shortName, String fullClassName, String superFullClassName, XmlElement agent,
+        List<UtilityClass> utilityClasses, List<Primitive> primitives, List<Attribute> attributes,
+        List<StateDeclaration> states) {
+
+    int line() {
+        return agent.line();
+    }
+
+    /** The member element at a position (a {@link Primitive} or {@link Attribute} keeps its element's). */
+    XmlElement memberElementAt(int line, int column) {
+        return agent.children().stream().filter(child -> child.line() == line && child.column() == column)
+                .findFirst().orElse(agent);
+    }
+
+    /** A {@code <Class>}. */
+    record UtilityClass(String name, XmlElement element) {
+    }
+
+    /**
+     * A {@code <Permeability>}.
+     *
+     * @param members rights (parsed from octal) by member id, in order; empty means "every member, all rights"
+     */
+    record StateDeclaration(String name, int umask, Map<String, Integer> members, List<XmlElement> memberElements,
+            XmlElement element) {
+    }
+}

@@ -1,0 +1,205 @@
+package masl.runtime.descriptor;
+
+import java.io.UncheckedIOException;
+import java.net.URI;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.function.Supplier;
+
+/**
+ * Loads agent type descriptors, validates them (agent-types.md, "Rules the loader enforces") and
+ * resolves their supertypes, along an {@link AgentPath}. Implementation classes are loaded through
+ * {@link AgentPath#classLoader} with the path's resource loader as parent.
+ *
+ * <p>Every type that names no {@code super_full_class_name} extends the <em>root type</em>
+ * ({@link #ROOT_TYPE}, {@code masl.agents.Default}) unless it is the root type itself; its descriptor is
+ * found like any supertype. A loader built with a null root type has no implicit supertype.
+ *
+ * <p>A supertype is found by class name, first match wins (a candidate's {@code full_class_name}
+ * must match): in the subtype's folder as {@code SimpleName.xml} or {@code package/path/SimpleName.xml},
+ * then as any {@code .xml} file there; then under those two names on the agent path and among the
+ * classpath resources; then as any {@code .xml} file in the path's folders (recursively) and jars.
+ * {@link #loadByClassName} searches the same way without a subtype's folder.
+ *
+ * <p>Loaded types are cached by location and by class name (the first type loaded for a class name
+ * is the one {@link #loadByClassName} returns). Thread-safe: loading is serialised.
+ *
+ * <p>Every loading method throws the unchecked {@link DescriptorException}, listing all the problems
+ * of the descriptor (and of a faulty supertype's descriptor after them).
+ */
+public final class DescriptorLoader {
+
+    /** The implementation class of the type every other type extends. */
+    public static final String ROOT_TYPE = "masl.agents.Default";
+
+    /** Resources of no class loader: for searching one folder alone. */
+    private static final ClassLoader EMPTY_RESOURCES = new ClassLoader(null) {
+    };
+
+    private final AgentPath agentPath;
+    private final String rootType;
+    private final ClassLoader implementationClasses;
+    private final Map<URI, AgentType> byLocation = new HashMap<>();
+    private final Map<String, AgentType> byClassName = new HashMap<>();
+    /** Class names of the descriptors being loaded, outermost first: a supertype among them is a cycle. */
+    private final List<String> loading = new ArrayList<>();
+
+    /** A loader whose types implicitly extend {@code masl.agents.Default}. */
+    public DescriptorLoader(AgentPath agentPath) {
+        this(agentPath, ROOT_TYPE);
+    }
+
+    /**
+     * @param rootType the implementation class of the implicit supertype, or null for none
+     */
+    public DescriptorLoader(AgentPath agentPath, String rootType) {
+        this.agentPath = agentPath;
+        this.rootType = rootType;
+        this.implementationClasses = agentPath.classLoader(agentPath.resources());
+    }
+
+    public AgentPath agentPath() {
+        return agentPath;
+    }
+
+    /** The class loader the implementation classes were checked with; use it to instantiate them. */
+    public ClassLoader implementationClasses() {
+        return implementationClasses;
+    }
+
+    /**
+     * Loads the descriptor in {@code file}, and its supertypes.
+     *
+     * @throws DescriptorException when it or a supertype has problems
+     */
+    public AgentType load(Path file) {
+        return load(DescriptorSource.ofFile(file));
+    }
+
+    /**
+     * Loads a descriptor found by {@link AgentPath#find}, and its supertypes.
+     *
+     * @throws DescriptorException when it or a supertype has problems
+     */
+    public synchronized AgentType load(DescriptorSource source) {
+        AgentType cached = byLocation.get(source.uri());
+        if (cached != null) {
+            return cached;
+        }
+        Problems problems = new Problems(source.displayName());
+        DescriptorReader.Result read = DescriptorReader.read(source);
+        problems.addAll(read.problems());
+        Declaration declaration = read.root() == null ? null : DeclarationReader.read(read.root(), problems);
+        if (declaration == null) {
+            if (problems.isEmpty()) {
+                problems.at(0, 0, "no <Agent> element");
+            }
+            problems.throwIfAny();
+        }
+        loading.add(declaration.fullClassName());
+        try {
+            String supertypeName = supertypeName(declaration);
+            AgentType supertype = supertypeName == null ? null
+                    : resolveSupertype(supertypeName, declaration, source, problems);
+            if (supertypeName != null && supertype == null) {
+                problems.throwIfAny();
+            }
+            AgentType type = TypeAssembler.assemble(declaration, supertype, source, problems);
+            ImplementationChecker.check(declaration, supertype, implementationClasses, problems);
+            problems.throwIfAny();
+            byLocation.put(source.uri(), type);
+            byClassName.putIfAbsent(type.fullClassName(), type);
+            return type;
+        } finally {
+            loading.remove(loading.size() - 1);
+        }
+    }
+
+    /**
+     * Loads the type whose descriptor's {@code full_class_name} is {@code fullClassName}, looked up on the
+     * agent path and among the classpath resources (see the class comment).
+     *
+     * @throws DescriptorException when no descriptor declares that class, or it has problems
+     */
+    public synchronized AgentType loadByClassName(String fullClassName) {
+        AgentType cached = byClassName.get(fullClassName);
+        if (cached != null) {
+            return cached;
+        }
+        Problems problems = new Problems("agent path " + agentPath);
+        Optional<DescriptorSource> found = locate(fullClassName, null, problems);
+        if (found.isEmpty()) {
+            problems.at(0, 0, "no descriptor with full_class_name=\"" + fullClassName + "\" on the agent path"
+                    + " or among the shipped descriptors");
+            problems.throwIfAny();
+        }
+        return load(found.get());
+    }
+
+    private String supertypeName(Declaration declaration) {
+        if (declaration.superFullClassName() != null) {
+            return declaration.superFullClassName();
+        }
+        return rootType == null || rootType.equals(declaration.fullClassName()) ? null : rootType;
+    }
+
+    /** The loaded supertype, or null after adding to {@code problems} why there is none. */
+    private AgentType resolveSupertype(String name, Declaration declaration, DescriptorSource source,
+            Problems problems) {
+        XmlElement agent = declaration.agent();
+        String role = declaration.superFullClassName() != null ? "supertype" : "implicit supertype";
+        int cycleStart = loading.indexOf(name);
+        if (cycleStart >= 0) {
+            List<String> cycle = new ArrayList<>(loading.subList(cycleStart, loading.size()));
+            cycle.add(name);
+            problems.at(agent, "cycle in supertypes: " + String.join(" -> ", cycle));
+            return null;
+        }
+        AgentType cached = byClassName.get(name);
+        if (cached != null) {
+            return cached;
+        }
+        Optional<DescriptorSource> found = locate(name, source.file().map(Path::getParent).orElse(null), problems);
+        if (found.isEmpty()) {
+            problems.at(agent, role + " '" + name + "' not found: no descriptor with full_class_name=\"" + name
+                    + "\" next to this file, on the agent path or among the shipped descriptors");
+            return null;
+        }
+        try {
+            return load(found.get());
+        } catch (DescriptorException e) {
+            problems.at(agent, role + " '" + name + "' (" + found.get().displayName() + ") has errors");
+            problems.addAll(e.problems());
+            return null;
+        }
+    }
+
+    private Optional<DescriptorSource> locate(String className, Path nearFolder, Problems problems) {
+        String simpleName = className.substring(className.lastIndexOf('.') + 1);
+        List<String> conventionalNames = List.of(simpleName + ".xml", className.replace('.', '/') + ".xml");
+        // In search order; each is only listed when the ones before hold no descriptor of the class.
+        List<Supplier<List<DescriptorSource>>> searches = new ArrayList<>();
+        if (nearFolder != null) {
+            AgentPath nextToSubtype = AgentPath.of(List.of(nearFolder), EMPTY_RESOURCES);
+            conventionalNames.forEach(name -> searches.add(() -> nextToSubtype.findAll(name, null)));
+            searches.add(() -> AgentPath.xmlFilesIn(nearFolder));
+        }
+        conventionalNames.forEach(name -> searches.add(() -> agentPath.findAll(name, null)));
+        searches.add(agentPath::allDescriptorsInEntries);
+        try {
+            return searches.stream().flatMap(search -> search.get().stream())
+                    .filter(source -> declares(source, className)).findFirst();
+        } catch (UncheckedIOException e) {
+            problems.at(0, 0, "cannot search for the descriptor of '" + className + "': " + e.getMessage());
+            return Optional.empty();
+        }
+    }
+
+    private static boolean declares(DescriptorSource source, String className) {
+        return DescriptorReader.peekFullClassName(source).filter(className::equals).isPresent();
+    }
+}

@@ -1,0 +1,295 @@
+package masl.runtime.descriptor;
+
+import com.fasterxml.jackson.dataformat.xml.XmlFactory;
+import java.io.FileNotFoundException;
+import java.io.IOException;
+import java.io.InputStream;
+import java.net.URL;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import javax.xml.XMLConstants;
+import javax.xml.stream.Location;
+import javax.xml.stream.XMLInputFactory;
+import javax.xml.stream.XMLStreamConstants;
+import javax.xml.stream.XMLStreamException;
+import javax.xml.stream.XMLStreamReader;
+import javax.xml.transform.stream.StreamSource;
+import javax.xml.validation.Schema;
+import javax.xml.validation.SchemaFactory;
+import javax.xml.validation.ValidatorHandler;
+import org.codehaus.stax2.XMLInputFactory2;
+import org.xml.sax.ErrorHandler;
+import org.xml.sax.Locator;
+import org.xml.sax.SAXException;
+import org.xml.sax.SAXParseException;
+import org.xml.sax.helpers.AttributesImpl;
+
+/**
+ * Reads a descriptor into an {@link XmlElement} tree and validates it against {@code agent-type.xsd} in
+ * the same pass. Reading uses the StAX (Woodstox) factory of Jackson's {@link XmlFactory}, configured so
+ * that no DTD is processed (a {@code <!DOCTYPE>} line is skipped, nothing is fetched) and no entity is
+ * expanded (a reference to one is an error). The validator is fed the reader's events directly, so its
+ * errors carry the reader's positions and it never sees a DTD. Thread-safe.
+ */
+final class DescriptorReader {
+
+    static final String SCHEMA_RESOURCE = "agent-type.xsd";
+
+    private static final XMLInputFactory INPUT = secureInputFactory();
+    private static final Schema SCHEMA = loadSchema();
+
+    /** The tree (null when the file is not well-formed or unreadable) and the problems found. */
+    record Result(XmlElement root, List<DescriptorProblem> problems) {
+    }
+
+    private DescriptorReader() {
+    }
+
+    static Result read(DescriptorSource source) {
+        List<DescriptorProblem> problems = new ArrayList<>();
+        String file = source.displayName();
+        try (InputStream in = source.open()) {
+            XMLStreamReader reader = INPUT.createXMLStreamReader(source.uri().toString(), in);
+            try {
+                return new Result(readValidating(reader, file, problems), problems);
+            } finally {
+                reader.close();
+            }
+        } catch (XMLStreamException e) {
+            problems.add(notWellFormed(file, e));
+        } catch (IOException e) {
+            String reason = e instanceof FileNotFoundException ? "file not found" : "cannot read the descriptor: " + e;
+            problems.add(new DescriptorProblem(file, 0, 0, reason));
+        } catch (SAXException e) {
+            problems.add(new DescriptorProblem(file, 0, 0, "schema validation failed: " + e.getMessage()));
+        }
+        return new Result(null, problems);
+    }
+
+    /** The {@code full_class_name} of the root element, or empty when unreadable or absent. */
+    static Optional<String> peekFullClassName(DescriptorSource source) {
+        try (InputStream in = source.open()) {
+            XMLStreamReader reader = INPUT.createXMLStreamReader(source.uri().toString(), in);
+            try {
+                while (reader.hasNext()) {
+                    if (reader.next() == XMLStreamConstants.START_ELEMENT) {
+                        return Optional.ofNullable(reader.getAttributeValue(null, "full_class_name"));
+                    }
+                }
+                return Optional.empty();
+            } finally {
+                reader.close();
+            }
+        } catch (XMLStreamException | IOException e) {
+            // Not a descriptor we can use to find a supertype; reading it for real reports the error.
+            return Optional.empty();
+        }
+    }
+
+    private static XmlElement readValidating(XMLStreamReader reader, String file, List<DescriptorProblem> problems)
+            throws XMLStreamException, SAXException {
+        Deque<ElementBuilder> open = new ArrayDeque<>();
+        ProblemCollector collector = new ProblemCollector(file, problems);
+        ValidatorHandler validator = SCHEMA.newValidatorHandler();
+        // Schema location hints (xsi:schemaLocation) must not make the validator fetch anything either.
+        validator.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
+        validator.setProperty(XMLConstants.ACCESS_EXTERNAL_DTD, "");
+        validator.setProperty(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "");
+        validator.setErrorHandler(collector);
+        validator.setDocumentLocator(new ReaderLocator(reader, file));
+        validator.startDocument();
+        XmlElement root = null;
+        while (reader.hasNext()) {
+            switch (reader.next()) {
+                case XMLStreamConstants.START_ELEMENT -> {
+                    ElementBuilder element = ElementBuilder.start(reader);
+                    collector.validating = element;
+                    validator.startElement(nonNull(reader.getNamespaceURI()), element.name, qualifiedName(reader),
+                            saxAttributes(reader));
+                    open.push(element);
+                }
+                case XMLStreamConstants.END_ELEMENT -> {
+                    validator.endElement(nonNull(reader.getNamespaceURI()), reader.getLocalName(),
+                            qualifiedName(reader));
+                    XmlElement done = open.pop().build();
+                    if (open.isEmpty()) {
+                        root = done;
+                    } else {
+                        open.peek().children.add(done);
+                        collector.validating = open.peek();
+                    }
+                }
+                case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA, XMLStreamConstants.SPACE -> {
+                    collector.validating = open.peek();
+                    char[] text = reader.getTextCharacters();
+                    validator.characters(text, reader.getTextStart(), reader.getTextLength());
+                }
+                default -> {
+                    // Comments, processing instructions and the ignored DOCTYPE mean nothing here.
+                }
+            }
+        }
+        validator.endDocument();
+        return root;
+    }
+
+    private static DescriptorProblem notWellFormed(String file, XMLStreamException e) {
+        Location location = e.getLocation();
+        String message = String.valueOf(e.getMessage());
+        // Woodstox appends "\n at [row,col ...]" to its messages; the position has its own fields.
+        int positionSuffix = message.indexOf("\n at [");
+        if (positionSuffix >= 0) {
+            message = message.substring(0, positionSuffix);
+        }
+        int line = location == null ? 0 : Math.max(location.getLineNumber(), 0);
+        int column = location == null ? 0 : Math.max(location.getColumnNumber(), 0);
+        return new DescriptorProblem(file, line, column, "not well-formed XML: " + message.strip());
+    }
+
+    private static AttributesImpl saxAttributes(XMLStreamReader reader) {
+        AttributesImpl sax = new AttributesImpl();
+        for (int i = 0; i < reader.getAttributeCount(); i++) {
+            String prefix = nonNull(reader.getAttributePrefix(i));
+            String localName = reader.getAttributeLocalName(i);
+            sax.addAttribute(nonNull(reader.getAttributeNamespace(i)), localName,
+                    prefix.isEmpty() ? localName : prefix + ":" + localName, "CDATA", reader.getAttributeValue(i));
+        }
+        return sax;
+    }
+
+    private static String qualifiedName(XMLStreamReader reader) {
+        String prefix = nonNull(reader.getPrefix());
+        return prefix.isEmpty() ? reader.getLocalName() : prefix + ":" + reader.getLocalName();
+    }
+
+    private static String nonNull(String namespace) {
+        return namespace == null ? "" : namespace;
+    }
+
+    private static XMLInputFactory secureInputFactory() {
+        XMLInputFactory factory = new XmlFactory().getXMLInputFactory();
+        factory.setProperty(XMLInputFactory.SUPPORT_DTD, false);
+        factory.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false);
+        factory.setProperty(XMLInputFactory.IS_NAMESPACE_AWARE, true);
+        factory.setProperty(XMLInputFactory.IS_COALESCING, true);
+        if (factory.isPropertySupported(XMLInputFactory2.P_LAZY_PARSING)) {
+            // Errors then surface from next(), where they are caught, not later from getText().
+            factory.setProperty(XMLInputFactory2.P_LAZY_PARSING, false);
+        }
+        factory.setXMLResolver((publicId, systemId, baseUri, namespace) -> {
+            throw new XMLStreamException("external resource " + systemId + " is not loaded");
+        });
+        return factory;
+    }
+
+    private static Schema loadSchema() {
+        URL schema = DescriptorReader.class.getResource(SCHEMA_RESOURCE);
+        if (schema == null) {
+            throw new IllegalStateException("resource " + SCHEMA_RESOURCE + " is missing from masl-runtime");
+        }
+        try {
+            SchemaFactory factory = SchemaFactory.newInstance(XMLConstants.W3C_XML_SCHEMA_NS_URI);
+            factory.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
+            factory.setProperty(XMLConstants.ACCESS_EXTERNAL_DTD, "");
+            factory.setProperty(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "");
+            return factory.newSchema(new StreamSource(schema.toString()));
+        } catch (SAXException e) {
+            throw new IllegalStateException("the shipped " + SCHEMA_RESOURCE + " is invalid", e);
+        }
+    }
+
+    /** An element being read: its children arrive before it is complete. */
+    private static final class ElementBuilder {
+        final String name;
+        final Map<String, String> attributes = new LinkedHashMap<>();
+        final List<XmlElement> children = new ArrayList<>();
+        final int line;
+        final int column;
+
+        private ElementBuilder(String name, int line, int column) {
+            this.name = name;
+            this.line = line;
+            this.column = column;
+        }
+
+        static ElementBuilder start(XMLStreamReader reader) {
+            Location location = reader.getLocation();
+            ElementBuilder element = new ElementBuilder(reader.getLocalName(), location.getLineNumber(),
+                    location.getColumnNumber());
+            // Descriptor attributes have no namespace; others (xsi:…) only concern the validator.
+            for (int i = 0; i < reader.getAttributeCount(); i++) {
+                if (nonNull(reader.getAttributeNamespace(i)).isEmpty()) {
+                    element.attributes.put(reader.getAttributeLocalName(i), reader.getAttributeValue(i));
+                }
+            }
+            return element;
+        }
+
+        XmlElement build() {
+            return new XmlElement(name, attributes, children, line, column);
+        }
+    }
+
+    /** Tells the validator where the reader is, so its errors carry the element's position. */
+    private record ReaderLocator(XMLStreamReader reader, String file) implements Locator {
+        @Override
+        public String getPublicId() {
+            return null;
+        }
+
+        @Override
+        public String getSystemId() {
+            return file;
+        }
+
+        @Override
+        public int getLineNumber() {
+            return reader.getLocation().getLineNumber();
+        }
+
+        @Override
+        public int getColumnNumber() {
+            return reader.getLocation().getColumnNumber();
+        }
+    }
+
+    /** Collects every validation error (validation goes on after one) as a rephrased problem. */
+    private static final class ProblemCollector implements ErrorHandler {
+        private final String file;
+        private final List<DescriptorProblem> problems;
+        /** The element the validator is at: being started, holding text, or just completed. */
+        ElementBuilder validating;
+
+        ProblemCollector(String file, List<DescriptorProblem> problems) {
+            this.file = file;
+            this.problems = problems;
+        }
+
+        @Override
+        public void warning(SAXParseException exception) {
+            // Schema warnings do not make a descriptor invalid.
+        }
+
+        @Override
+        public void error(SAXParseException exception) {
+            String message = String.valueOf(exception.getMessage());
+            if (SchemaMessages.isFacetError(message)) {
+                return;
+            }
+            String element = validating == null ? "" : validating.name;
+            Map<String, String> attributes = validating == null ? Map.of() : validating.attributes;
+            problems.add(new DescriptorProblem(file, Math.max(exception.getLineNumber(), 0),
+                    Math.max(exception.getColumnNumber(), 0), SchemaMessages.rephrase(message, element, attributes)));
+        }
+
+        @Override
+        public void fatalError(SAXParseException exception) {
+            error(exception);
+        }
+    }
+}

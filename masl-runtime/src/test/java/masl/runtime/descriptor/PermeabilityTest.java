@@ -1,0 +1,106 @@
+package masl.runtime.descriptor;
+
+import static masl.runtime.descriptor.TestDescriptors.agent;
+import static masl.runtime.descriptor.TestDescriptors.write;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.List;
+import masl.runtime.descriptor.PermeabilityState.Requester;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The states of a type, inheritance applied (README, "Descriptors"). */
+class PermeabilityTest {
+
+    private AgentType khepera;
+
+    @BeforeEach
+    void loadKhepera() {
+        khepera = TestDescriptors.loader().load(TestDescriptors.fixtureFolder().resolve("Khepera.xml"));
+    }
+
+    @Test
+    void statesAreInheritedInOrderRedeclaredInPlaceThenOwn() {
+        assertEquals(List.of("nothing", "default", "busy", "careful"),
+                khepera.states().stream().map(PermeabilityState::name).toList());
+        assertEquals("default", khepera.initialState().orElseThrow().name());
+        assertEquals(37, khepera.findState("default").orElseThrow().line(), "Khepera's redeclaration");
+    }
+
+    @Test
+    void listedMembersGetTheirRightsMaskedByTheUmask() {
+        PermeabilityState defaultState = khepera.findState("default").orElseThrow();
+        assertEquals(0, defaultState.umask());
+        assertEquals(0111, defaultState.rights("P1"));
+        assertEquals(0644, defaultState.rights("A1"));
+        PermeabilityState careful = khepera.findState("careful").orElseThrow();
+        assertEquals(0002, careful.umask());
+        assertEquals(0664, careful.rights("A1"), "666 & ~002");
+        assertEquals(0, careful.rights("P1"), "a state that lists members gives the others none");
+    }
+
+    @Test
+    void unlistedMembersInheritFromTheRedeclaredAllowAllDefault() {
+        PermeabilityState defaultState = khepera.findState("default").orElseThrow();
+        assertEquals(0777, defaultState.rights("P2"), "new in Khepera, not listed: the root's default allows all");
+        assertEquals(0777, defaultState.rights("D3"), "inherited from the root");
+        assertEquals(0777, defaultState.rights("R1"), "inherited from Robot");
+        assertEquals(0, defaultState.rights("nonsense"), "not a member");
+    }
+
+    @Test
+    void anInheritedStateKeepsItsRightsAndGivesNewMembersNone() {
+        PermeabilityState busy = khepera.findState("busy").orElseThrow();
+        assertEquals(0110, busy.rights("R1"));
+        assertEquals(0, busy.rights("P1"), "new in Khepera");
+        assertEquals(0, busy.rights("D1"), "Robot's busy does not list the root's members");
+        assertEquals(0, khepera.findState("nothing").orElseThrow().rights("P1"), "umask 777 denies everything");
+    }
+
+    @Test
+    void requesterDigits() {
+        PermeabilityState defaultState = khepera.findState("default").orElseThrow();
+        assertTrue(defaultState.allows("A1", Requester.SELF, PermeabilityState.WRITE));
+        assertTrue(defaultState.allows("A1", Requester.OTHER, PermeabilityState.READ));
+        assertFalse(defaultState.allows("A1", Requester.GROUP, PermeabilityState.WRITE));
+        assertTrue(defaultState.allows("P1", Requester.OTHER, PermeabilityState.INVOKE));
+        PermeabilityState busy = khepera.findState("busy").orElseThrow();
+        assertTrue(busy.allows("R1", Requester.GROUP, PermeabilityState.INVOKE));
+        assertFalse(busy.allows("R1", Requester.OTHER, PermeabilityState.INVOKE));
+    }
+
+    @Test
+    void aRedeclaredStateWithoutMembersAllowsEverything(@TempDir Path folder) {
+        Path file = write(folder, "Open.xml", """
+                <Agent short_class_name="Open" full_class_name="masl.runtime.descriptor.fixtures.Khepera"
+                       super_full_class_name="masl.runtime.descriptor.fixtures.Robot">
+                  <Permeability permeability_name="busy" umask="000"/>
+                </Agent>
+                """);
+        AgentType open = TestDescriptors.loader().load(file);
+        assertEquals(0777, open.findState("busy").orElseThrow().rights("D1"));
+        assertEquals(0777, open.findState("busy").orElseThrow().rights("R1"));
+    }
+
+    @Test
+    void aRootWithoutStatesHasNoInitialStateSoEverythingIsAllowed(@TempDir Path folder) {
+        Path file = write(folder, "Bare.xml", agent("masl.runtime.descriptor.fixtures.Vector2d", ""));
+        AgentType bare = new DescriptorLoader(AgentPath.of(List.of(), getClass().getClassLoader()), null).load(file);
+        assertTrue(bare.states().isEmpty());
+        assertTrue(bare.initialState().isEmpty());
+    }
+
+    @Test
+    void withoutDefaultTheInitialStateIsTheFirst(@TempDir Path folder) {
+        Path file = write(folder, "Two.xml", agent("masl.runtime.descriptor.fixtures.Vector2d", """
+                  <Permeability permeability_name="closed" umask="777"/>
+                  <Permeability permeability_name="open" umask="000"/>
+                """));
+        AgentType two = new DescriptorLoader(AgentPath.of(List.of(), getClass().getClassLoader()), null).load(file);
+        assertEquals("closed", two.initialState().orElseThrow().name());
+    }
+}
