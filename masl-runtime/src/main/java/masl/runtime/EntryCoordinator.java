@@ -2,7 +2,6 @@ package masl.runtime;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Iterator;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
@@ -332,31 +331,28 @@ final class EntryCoordinator {
     }
 
     /**
-     * Applies the consequences of the operation's change, to a fixed point. Exit barriers come
-     * first: agents they release count again as participants before any barrier is checked, so
-     * a block's leavers stay in lock-step with its parent. Barriers whose participants dropped
-     * trip if everyone left has arrived. Free entry barriers whose condition now holds open last;
-     * opening one only adds active members, so it never calls for more exits or trips.
+     * Applies the consequences of the operation's change, to a fixed point, as part of the same
+     * atomic step. Every count that can rise rises first: exit barriers whose block has no active
+     * member left release their agents, and free entry barriers whose condition now holds open.
+     * Only then are the synchronisation barriers whose participants dropped checked, so a barrier
+     * never trips on a state the step passes through: the leavers of a child stay in lock-step
+     * with its parent, and an agent held by a free entry barrier and let in by the same step is
+     * waited for. Releasing and opening only add active members and participants, so they never
+     * call for a trip; tripping changes no membership, so it comes last.
      */
     private void settle() {
-        while (true) {
+        do {
             Wave wave;
             while ((wave = weakenedWaves.poll()) != null) {
                 releaseExitIfNoActiveMember(wave);
             }
-            Iterator<SynchronisationBarrier> barriers = weakenedBarriers.iterator();
-            if (barriers.hasNext()) {
-                SynchronisationBarrier barrier = barriers.next();
-                barriers.remove();
-                if (barrier.completedBy(0)) {
-                    trip(barrier, 0);
-                }
-                continue;
-            }
-            if (!openFirstWave()) {
-                return;
+        } while (openFirstWave());
+        for (SynchronisationBarrier barrier : weakenedBarriers) {
+            if (barrier.completedBy(0)) {
+                trip(barrier, 0);
             }
         }
+        weakenedBarriers.clear();
     }
 
     /** §6.3/§6.5: the last active member finished, so the waiting-out agents leave, as one step. */
