@@ -1,6 +1,7 @@
 package masl.runtime;
 
 import java.util.List;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinWorkerThread;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
@@ -13,6 +14,11 @@ import java.util.concurrent.atomic.AtomicInteger;
  * scalable model (components.md, "Execution model"). A waiting agent holds no thread. A primitive
  * that really blocks should block through {@link Blocking}, which lets the pool add a worker while
  * it blocks, so the other agents keep running.
+ *
+ * <p><b>Fairness.</b> Runnable agents wait in one FIFO run queue, and each pool task runs the
+ * agent at its head. Handing agents to the pool directly would not be fair: a worker runs the
+ * tasks it submitted itself before anything submitted from outside, so agents that keep waking
+ * each other (or a loop that yields) could starve the agents still waiting for their first slice.
  */
 public final class PoolScheduler implements Scheduler {
 
@@ -20,6 +26,7 @@ public final class PoolScheduler implements Scheduler {
 
     private final ForkJoinPool pool;
     private final ScheduledThreadPoolExecutor timer;
+    private final ConcurrentLinkedQueue<AgentTask> runQueue = new ConcurrentLinkedQueue<>();
 
     /** A pool of one worker per available processor. */
     public PoolScheduler() {
@@ -37,7 +44,6 @@ public final class PoolScheduler implements Scheduler {
             thread.setDaemon(true);
             return thread;
         };
-        // asyncMode: agents scheduled from a worker run in FIFO order, so a yield goes to the back.
         pool = new ForkJoinPool(workers, factory, null, true);
         timer = new ScheduledThreadPoolExecutor(1, daemon("masl-timer"));
         timer.setRemoveOnCancelPolicy(true);
@@ -50,7 +56,13 @@ public final class PoolScheduler implements Scheduler {
 
     @Override
     public void schedule(AgentTask agent) {
-        pool.execute(agent::runSlice);
+        runQueue.add(agent);
+        // One pool task per queued agent: each runs whichever agent is at the head by then.
+        pool.execute(this::runNext);
+    }
+
+    private void runNext() {
+        runQueue.poll().runSlice();
     }
 
     @Override
