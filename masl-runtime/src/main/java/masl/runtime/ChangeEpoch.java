@@ -2,21 +2,26 @@ package masl.runtime;
 
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
 
 /**
  * A mission-wide counter of changes an agent's busy-wait loop can observe (MASL §5): shared
- * variable writes, membership and lock policy changes, queued events and invocations. An agent
- * whose busy-wait iteration saw nothing new parks here until the counter moves on.
+ * variable writes, membership and lock policy changes, queued invocations. An agent whose
+ * busy-wait iteration saw nothing new parks here until the counter moves on.
  *
- * <p>No lost wake-up: a waiter registers before it re-reads the counter, and {@link #advance}
- * increments the counter before it wakes the registered waiters.
+ * <p><b>No lost wake-up:</b> a waiter registers before it re-reads the counter, and
+ * {@link #advance} increments the counter before it takes the registered waiters. <b>No
+ * livelock:</b> an advance wakes only the waiters registered in the queue it swapped out; a woken
+ * agent that finds nothing new parks again in the fresh queue, for the next advance, instead of
+ * being woken again and again by the same one.
  */
 final class ChangeEpoch {
 
     private record Waiter(Agent agent, long ticket) { }
 
     private final AtomicLong epoch = new AtomicLong();
-    private final ConcurrentLinkedQueue<Waiter> waiters = new ConcurrentLinkedQueue<>();
+    private final AtomicReference<ConcurrentLinkedQueue<Waiter>> waiters =
+            new AtomicReference<>(new ConcurrentLinkedQueue<>());
 
     long current() {
         return epoch.get();
@@ -25,8 +30,13 @@ final class ChangeEpoch {
     /** Records a change and wakes every agent waiting for one. */
     void advance() {
         epoch.incrementAndGet();
+        if (waiters.get().isEmpty()) {
+            // A waiter registering now re-reads the epoch after registering, and wakes itself.
+            return;
+        }
+        ConcurrentLinkedQueue<Waiter> woken = waiters.getAndSet(new ConcurrentLinkedQueue<>());
         Waiter waiter;
-        while ((waiter = waiters.poll()) != null) {
+        while ((waiter = woken.poll()) != null) {
             waiter.agent().unpark(waiter.ticket());
         }
     }
@@ -37,7 +47,7 @@ final class ChangeEpoch {
      */
     void parkUntilChanged(Agent agent, long seen) {
         long ticket = agent.prepareToPark();
-        waiters.add(new Waiter(agent, ticket));
+        waiters.get().add(new Waiter(agent, ticket));
         if (epoch.get() != seen) {
             agent.unpark(ticket);
         }
