@@ -9,8 +9,10 @@ import java.util.concurrent.atomic.AtomicReference;
  * variable writes, membership and lock policy changes, queued invocations. An agent whose
  * busy-wait iteration saw nothing new parks here until the counter moves on.
  *
- * <p><b>No lost wake-up:</b> a waiter registers before it re-reads the counter, and
- * {@link #advance} increments the counter before it takes the registered waiters. <b>No
+ * <p><b>No lost wake-up:</b> a waiter registers in the current queue, then re-reads the counter
+ * and checks that its queue is still the current one; {@link #advance} increments the counter
+ * before it swaps the queue out and drains it. So an advance either comes after the waiter's
+ * checks and drains the queue it registered in, or the waiter sees it and wakes itself. <b>No
  * livelock:</b> an advance wakes only the waiters registered in the queue it swapped out; a woken
  * agent that finds nothing new parks again in the fresh queue, for the next advance, instead of
  * being woken again and again by the same one.
@@ -47,8 +49,10 @@ final class ChangeEpoch {
      */
     void parkUntilChanged(Agent agent, long seen) {
         long ticket = agent.prepareToPark();
-        waiters.get().add(new Waiter(agent, ticket));
-        if (epoch.get() != seen) {
+        ConcurrentLinkedQueue<Waiter> queue = waiters.get();
+        queue.add(new Waiter(agent, ticket));
+        // An advance that had swapped this queue out already would never drain it again.
+        if (waiters.get() != queue || epoch.get() != seen) {
             agent.unpark(ticket);
         }
     }
