@@ -100,9 +100,16 @@ final class Agent implements AgentContext, AgentTask {
             mission.agentFailed(this, new IllegalStateException(describe()
                     + ": resume returned without a suspension or finish()"));
         } else if (!state.compareAndSet(RUNNING, PARKED)) {
+            mission.countSchedule();
             state.set(SCHEDULED);
             mission.scheduler().schedule(this);
         }
+    }
+
+    /** Parked (waiting for someone else) or done: it cannot make progress on its own. */
+    boolean isIdle() {
+        int current = state.get();
+        return current == PARKED || current == DONE;
     }
 
     private void end() {
@@ -133,9 +140,14 @@ final class Agent implements AgentContext, AgentTask {
         }
         while (true) {
             int current = state.get();
-            if (current == PARKED && state.compareAndSet(PARKED, SCHEDULED)) {
-                mission.scheduler().schedule(this);
-                return;
+            if (current == PARKED) {
+                // Counted before the agent leaves PARKED, for the deadlock watchdog (Mission).
+                mission.countSchedule();
+                if (state.compareAndSet(PARKED, SCHEDULED)) {
+                    mission.scheduler().schedule(this);
+                    return;
+                }
+                continue;
             }
             if (current == RUNNING && state.compareAndSet(RUNNING, RUNNING_WOKEN)) {
                 return;
@@ -253,7 +265,11 @@ final class Agent implements AgentContext, AgentTask {
             return yieldIfSliceUsed();
         }
         long ticket = prepareToPark();
-        mission.scheduler().scheduleAfter(ms, () -> unpark(ticket));
+        mission.timedWakeUpStarted();
+        mission.scheduler().scheduleAfter(ms, () -> {
+            unpark(ticket);
+            mission.timedWakeUpEnded();
+        });
         return false;
     }
 

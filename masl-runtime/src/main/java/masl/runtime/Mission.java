@@ -12,6 +12,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
 import masl.runtime.trace.Trace;
@@ -20,7 +21,8 @@ import masl.runtime.trace.Trace;
  * One run of a MASL program: its agents (proxy ids 0, 1, 2, … in declaration order, each with its
  * implementation bound to its {@link AgentServices} and its program), the state of its e-blocks,
  * its journal and trace, and the scheduler that runs it. The mission ends when every agent's
- * program has finished (MASL §6.5), when a program fails, on timeout or on {@link #stop()}.
+ * program has finished (MASL §6.5), when a program fails, when no agent can make progress any
+ * more (deadlock), on timeout or on {@link #stop()}.
  *
  * <pre>{@code
  * MissionOutcome outcome = Mission.builder()
@@ -34,6 +36,9 @@ import masl.runtime.trace.Trace;
  */
 public final class Mission {
 
+    /** How often the deadlock watchdog looks; a deadlock is reported after two looks agree. */
+    public static final Duration WATCHDOG_PERIOD = Duration.ofMillis(100);
+
     private final List<Agent> agents;
     private final Map<EntryDefinition, Entry> entries;
     private final Scheduler scheduler;
@@ -45,6 +50,9 @@ public final class Mission {
     private final CountDownLatch ended = new CountDownLatch(1);
     private final AtomicReference<Throwable> failure = new AtomicReference<>();
     private volatile boolean stopped;
+    /** Transitions of agents to SCHEDULED after their start: the watchdog's sign of life. */
+    private final AtomicLong schedules = new AtomicLong();
+    private final AtomicInteger pendingTimedWakeUps = new AtomicInteger();
 
     private Mission(Builder builder) {
         scheduler = builder.scheduler != null ? builder.scheduler : new PoolScheduler();
@@ -91,19 +99,45 @@ public final class Mission {
             ended.countDown();
         }
         agents.forEach(scheduler::schedule);
-        boolean endedInTime = ended.await(timeout.toMillis(), TimeUnit.MILLISECONDS);
-        MissionOutcome.Status status;
-        if (failure.get() != null) {
-            status = MissionOutcome.Status.FAILED;
-        } else if (stopped) {
-            status = MissionOutcome.Status.STOPPED;
-        } else {
-            status = endedInTime ? MissionOutcome.Status.COMPLETED : MissionOutcome.Status.TIMED_OUT;
-        }
+        MissionOutcome.Status status = awaitEnd(timeout);
         String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
         scheduler.shutdown();
         journal.flush();
         return new MissionOutcome(status, journal.text(), Optional.ofNullable(failure.get()), report);
+    }
+
+    /**
+     * Waits for the end, looking for a deadlock every {@link #WATCHDOG_PERIOD}: every agent idle
+     * (parked or done), no timed wake-up pending, and no agent scheduled since the previous look.
+     * Agents are read one by one, not in one snapshot, so a look alone could miss a wake-up made
+     * between two reads; but such a wake-up counts a schedule first, so two looks that agree on
+     * the count have seen a state that really lasted.
+     */
+    private MissionOutcome.Status awaitEnd(Duration timeout) throws InterruptedException {
+        long deadline = System.nanoTime() + timeout.toNanos();
+        long schedulesAtLastIdleLook = -1;
+        while (true) {
+            long left = deadline - System.nanoTime();
+            boolean ended = this.ended.await(Math.min(left, WATCHDOG_PERIOD.toNanos()), TimeUnit.NANOSECONDS);
+            if (failure.get() != null) {
+                return MissionOutcome.Status.FAILED;
+            }
+            if (stopped) {
+                return MissionOutcome.Status.STOPPED;
+            }
+            if (ended) {
+                return MissionOutcome.Status.COMPLETED;
+            }
+            if (deadline - System.nanoTime() <= 0) {
+                return MissionOutcome.Status.TIMED_OUT;
+            }
+            long scheduled = schedules.get();
+            boolean idle = pendingTimedWakeUps.get() == 0 && agents.stream().allMatch(Agent::isIdle);
+            if (idle && scheduled == schedules.get() && scheduled == schedulesAtLastIdleLook) {
+                return MissionOutcome.Status.DEADLOCKED;
+            }
+            schedulesAtLastIdleLook = idle ? scheduled : -1;
+        }
     }
 
     /** Stops the mission from outside: {@link #run} returns {@link MissionOutcome.Status#STOPPED}. */
@@ -135,6 +169,18 @@ public final class Mission {
 
     EntryCoordinator coordinator() {
         return coordinator;
+    }
+
+    void countSchedule() {
+        schedules.incrementAndGet();
+    }
+
+    void timedWakeUpStarted() {
+        pendingTimedWakeUps.incrementAndGet();
+    }
+
+    void timedWakeUpEnded() {
+        pendingTimedWakeUps.decrementAndGet();
     }
 
     void agentFinished(Agent agent) {

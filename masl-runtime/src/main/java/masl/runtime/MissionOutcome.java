@@ -13,6 +13,12 @@ public record MissionOutcome(Status status, String journal, Optional<Throwable> 
         COMPLETED,
         /** An agent's program threw, or broke the generated-code contract: see {@code failure}. */
         FAILED,
+        /**
+         * No agent could make progress any more: all were parked (at barriers nobody will trip,
+         * entry barriers nobody will release, busy-waits nothing will satisfy) or done, with no
+         * sleep pending. Detected within {@code 2 * Mission.WATCHDOG_PERIOD}.
+         */
+        DEADLOCKED,
         /** The timeout given to {@link Mission#run} elapsed first. */
         TIMED_OUT,
         /** {@link Mission#stop()} was called. */

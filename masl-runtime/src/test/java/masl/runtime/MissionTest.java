@@ -100,19 +100,49 @@ class MissionTest {
     }
 
     @Test
-    void aMissionThatCannotEndTimesOutWithAReportOfEveryAgent() throws InterruptedException {
+    void aMissionWhoseAgentsCanNoLongerProgressIsReportedAsDeadlocked() throws InterruptedException {
         StringWriter sink = new StringWriter();
         Mission.Builder builder = Mission.builder().main(Stuck.MAIN).journal(sink);
         builder.agent("a", new TestAgent(), Stuck::new).agent("b", new TestAgent(), Stuck::new);
-        MissionOutcome outcome = builder.build().run(Duration.ofMillis(300));
-        assertEquals(MissionOutcome.Status.TIMED_OUT, outcome.status());
+        MissionOutcome outcome = builder.build().run(Duration.ofSeconds(30));
+        assertEquals(MissionOutcome.Status.DEADLOCKED, outcome.status());
         assertEquals("xx", outcome.journal());
         assertEquals("xx", sink.toString());
         assertTrue(outcome.report().contains("agent a (0) at pc 2: [main, child(waiting-in)]"), outcome.report());
         assertTrue(outcome.report().contains("agent b (1) at pc 2: [main, child(waiting-in)]"), outcome.report());
         MissionOutcome.MissionFailedException failure =
                 assertThrows(MissionOutcome.MissionFailedException.class, outcome::requireCompleted);
-        assertTrue(failure.getMessage().startsWith("mission TIMED_OUT"), failure.getMessage());
+        assertTrue(failure.getMessage().startsWith("mission DEADLOCKED"), failure.getMessage());
+    }
+
+    /** {@code asynchronous entry main (true) { while (true) {} }}: busy, never idle, never done. */
+    static final class Endless extends CompactProgram {
+        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
+
+        Endless(TestAgent self) {
+            super(self);
+        }
+
+        @Override
+        protected void resume(AgentContext ctx) {
+            while (true) {
+                switch (pc) {
+                    case 0: if (!arrive(ctx, MAIN, true, 1, 1)) return; continue;
+                    case 1: if (!ctx.loopIteration()) return; continue;
+                    default: throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void aMissionThatDoesNotEndInTimeTimesOut(Driver driver) throws InterruptedException {
+        Mission mission = Mission.builder().main(Endless.MAIN).scheduler(driver.newScheduler())
+                .agent("a", new TestAgent(), Endless::new).build();
+        MissionOutcome outcome = mission.run(Duration.ofMillis(300));
+        assertEquals(MissionOutcome.Status.TIMED_OUT, outcome.status());
+        assertTrue(outcome.report().contains("agent a (0) at pc 1: [main]"), outcome.report());
     }
 
     @Test
