@@ -3,6 +3,8 @@ package masl.runtime;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Queue;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionStage;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
@@ -19,8 +21,15 @@ import masl.runtime.trace.LeaveCause;
  * {@link #unpark(long)} with that ticket: the first unpark of the current ticket wins, a stale or
  * repeated one is ignored. {@code PARKED → SCHEDULED} hands the agent to the scheduler; an unpark
  * that comes while the slice is still running turns {@code RUNNING → RUNNING_WOKEN}, and the slice
- * reschedules the agent when it returns. So an agent is never run by two threads at once and no
- * wake-up is lost.
+ * reschedules the agent when it returns. A program that has finished leaves the agent
+ * {@code DONE}.
+ *
+ * <p><b>Serving while blocked</b> (MASL §5). An invocation queued for a {@code PARKED} or
+ * {@code DONE} agent turns it {@code SERVING} and schedules a slice that runs the pending
+ * invocations on its behalf, without running its program, then returns it to where it was. An
+ * unpark that comes meanwhile turns {@code SERVING → SERVING_WOKEN}, and the serving slice then
+ * schedules the program. So an agent is never run by two threads at once, its program and the
+ * invocations it serves never overlap, and no wake-up or invocation is lost.
  */
 final class Agent implements AgentContext, AgentTask {
 
@@ -28,7 +37,9 @@ final class Agent implements AgentContext, AgentTask {
     private static final int RUNNING = 1;
     private static final int RUNNING_WOKEN = 2;
     private static final int PARKED = 3;
-    private static final int DONE = 4;
+    private static final int SERVING = 4;
+    private static final int SERVING_WOKEN = 5;
+    private static final int DONE = 6;
 
     private final int id;
     private final String name;
@@ -74,12 +85,12 @@ final class Agent implements AgentContext, AgentTask {
     }
 
     @Override
-    public boolean finished() {
-        return finished;
-    }
-
-    @Override
     public void runSlice() {
+        int current = state.get();
+        if (current == SERVING || current == SERVING_WOKEN) {
+            serveWhileBlocked();
+            return;
+        }
         if (!state.compareAndSet(SCHEDULED, RUNNING)) {
             throw new IllegalStateException(describe() + " scheduled twice");
         }
@@ -95,14 +106,55 @@ final class Agent implements AgentContext, AgentTask {
         if (finished) {
             end();
             mission.agentFinished(this);
+            serveIfPending();
         } else if (!suspended) {
             end();
             mission.agentFailed(this, new IllegalStateException(describe()
                     + ": resume returned without a suspension or finish()"));
-        } else if (!state.compareAndSet(RUNNING, PARKED)) {
+        } else if (state.compareAndSet(RUNNING, PARKED)) {
+            // Invocations queued while the slice ran are served now that the agent is blocked.
+            serveIfPending();
+        } else {
             mission.countSchedule();
             state.set(SCHEDULED);
             mission.scheduler().schedule(this);
+        }
+    }
+
+    /** The slice of a blocked (or finished) agent: serve its pending invocations, nothing else. */
+    private void serveWhileBlocked() {
+        try {
+            serveInvocations();
+        } catch (Throwable failure) {
+            end();
+            mission.agentFailed(this, failure);
+            return;
+        }
+        if (finished) {
+            state.set(DONE);
+        } else if (!state.compareAndSet(SERVING, PARKED)) {
+            mission.countSchedule();
+            state.set(SCHEDULED);
+            mission.scheduler().schedule(this);
+            return;
+        }
+        // An invocation queued after the queue was drained found the agent SERVING: serve it too.
+        serveIfPending();
+    }
+
+    /** Schedules a serving slice if invocations wait and the agent is blocked or done. */
+    private void serveIfPending() {
+        while (!invocations.isEmpty()) {
+            int current = state.get();
+            if (current == PARKED) {
+                mission.countSchedule();
+            } else if (current != DONE) {
+                return;
+            }
+            if (state.compareAndSet(current, SERVING)) {
+                mission.scheduler().schedule(this);
+                return;
+            }
         }
     }
 
@@ -152,10 +204,13 @@ final class Agent implements AgentContext, AgentTask {
             if (current == RUNNING && state.compareAndSet(RUNNING, RUNNING_WOKEN)) {
                 return;
             }
+            if (current == SERVING && state.compareAndSet(SERVING, SERVING_WOKEN)) {
+                return;
+            }
             if (current == DONE) {
                 return;
             }
-            if (current == SCHEDULED || current == RUNNING_WOKEN) {
+            if (current == SCHEDULED || current == RUNNING_WOKEN || current == SERVING_WOKEN) {
                 throw new IllegalStateException(describe() + " woken twice");
             }
         }
@@ -265,10 +320,25 @@ final class Agent implements AgentContext, AgentTask {
             return yieldIfSliceUsed();
         }
         long ticket = prepareToPark();
-        mission.timedWakeUpStarted();
+        mission.outsideWakeUpStarted();
         mission.scheduler().scheduleAfter(ms, () -> {
             unpark(ticket);
-            mission.timedWakeUpEnded();
+            mission.outsideWakeUpEnded();
+        });
+        return false;
+    }
+
+    @Override
+    public boolean await(CompletionStage<?> result) {
+        CompletableFuture<?> future = result.toCompletableFuture();
+        if (future.isDone()) {
+            return yieldIfSliceUsed();
+        }
+        long ticket = prepareToPark();
+        mission.outsideWakeUpStarted();
+        future.whenComplete((value, failure) -> {
+            unpark(ticket);
+            mission.outsideWakeUpEnded();
         });
         return false;
     }
@@ -290,10 +360,12 @@ final class Agent implements AgentContext, AgentTask {
 
     /**
      * Queues an external invocation of one of this agent's primitives (MASL §9): the hook the
-     * invocations issue builds on. It runs at the agent's next step boundary or loop iteration.
+     * invocations issue builds on. A running agent runs it at its next step boundary or loop
+     * iteration; a blocked or finished one has it run on its behalf at once (§5).
      */
     void submitInvocation(Runnable invocation) {
         invocations.add(invocation);
+        serveIfPending();
         mission.changes().advance();
     }
 

@@ -1,6 +1,7 @@
 package masl.runtime;
 
 import java.util.Queue;
+import java.util.concurrent.CompletionStage;
 
 /**
  * What a generated program calls on the runtime: one instance per agent, passed to
@@ -100,6 +101,14 @@ public interface AgentContext {
      * the mission clock. Returns {@code false} (suspends) unless {@code ms <= 0}.
      */
     boolean sleep(long ms);
+
+    /**
+     * Waits for {@code result} without holding a thread: a blocking (synchronous) invocation, the
+     * read of a variable holding a future (§9). Returns {@code true} if it is already complete;
+     * otherwise suspends, and the agent is resumed at {@code pc} once it is complete. Either way
+     * the program then reads it with {@code join()} (or {@code getNow}).
+     */
+    boolean await(CompletionStage<?> result);
 
     /**
      * The queue of event occurrences perceived by this agent and not yet reacted to (§8): the hook

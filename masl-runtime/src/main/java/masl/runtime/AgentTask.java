@@ -7,11 +7,9 @@ public interface AgentTask {
     int id();
 
     /**
-     * Runs the agent's program until it suspends or finishes. The scheduler calls it once per
-     * {@link Scheduler#schedule} call, never concurrently for one agent.
+     * Runs the agent's program until it suspends or finishes, or serves the invocations of a
+     * blocked or finished agent. The scheduler calls it once per {@link Scheduler#schedule} call;
+     * the runtime never schedules an agent again before that call has returned.
      */
     void runSlice();
-
-    /** Whether the agent's program has finished (it will not be scheduled again). */
-    boolean finished();
 }

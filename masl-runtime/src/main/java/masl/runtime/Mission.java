@@ -52,7 +52,8 @@ public final class Mission {
     private volatile boolean stopped;
     /** Transitions of agents to SCHEDULED after their start: the watchdog's sign of life. */
     private final AtomicLong schedules = new AtomicLong();
-    private final AtomicInteger pendingTimedWakeUps = new AtomicInteger();
+    /** Wake-ups promised from outside the agents: sleep timers, futures being awaited. */
+    private final AtomicInteger pendingOutsideWakeUps = new AtomicInteger();
 
     private Mission(Builder builder) {
         scheduler = builder.scheduler != null ? builder.scheduler : new PoolScheduler();
@@ -108,7 +109,9 @@ public final class Mission {
 
     /**
      * Waits for the end, looking for a deadlock every {@link #WATCHDOG_PERIOD}: every agent idle
-     * (parked or done), no timed wake-up pending, and no agent scheduled since the previous look.
+     * (parked or done), no wake-up promised from outside the agents pending (a sleep, an awaited
+     * future: what completes it is unknown, so it is given the benefit of the doubt), and no
+     * agent scheduled since the previous look.
      * Agents are read one by one, not in one snapshot, so a look alone could miss a wake-up made
      * between two reads; but such a wake-up counts a schedule first, so two looks that agree on
      * the count have seen a state that really lasted.
@@ -132,7 +135,7 @@ public final class Mission {
                 return MissionOutcome.Status.TIMED_OUT;
             }
             long scheduled = schedules.get();
-            boolean idle = pendingTimedWakeUps.get() == 0 && agents.stream().allMatch(Agent::isIdle);
+            boolean idle = pendingOutsideWakeUps.get() == 0 && agents.stream().allMatch(Agent::isIdle);
             if (idle && scheduled == schedules.get() && scheduled == schedulesAtLastIdleLook) {
                 return MissionOutcome.Status.DEADLOCKED;
             }
@@ -175,12 +178,12 @@ public final class Mission {
         schedules.incrementAndGet();
     }
 
-    void timedWakeUpStarted() {
-        pendingTimedWakeUps.incrementAndGet();
+    void outsideWakeUpStarted() {
+        pendingOutsideWakeUps.incrementAndGet();
     }
 
-    void timedWakeUpEnded() {
-        pendingTimedWakeUps.decrementAndGet();
+    void outsideWakeUpEnded() {
+        pendingOutsideWakeUps.decrementAndGet();
     }
 
     void agentFinished(Agent agent) {

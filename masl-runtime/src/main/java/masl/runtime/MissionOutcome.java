@@ -16,7 +16,7 @@ public record MissionOutcome(Status status, String journal, Optional<Throwable> 
         /**
          * No agent could make progress any more: all were parked (at barriers nobody will trip,
          * entry barriers nobody will release, busy-waits nothing will satisfy) or done, with no
-         * sleep pending. Detected within {@code 2 * Mission.WATCHDOG_PERIOD}.
+         * sleep or awaited future pending. Detected within {@code 2 * Mission.WATCHDOG_PERIOD}.
          */
         DEADLOCKED,
         /** The timeout given to {@link Mission#run} elapsed first. */

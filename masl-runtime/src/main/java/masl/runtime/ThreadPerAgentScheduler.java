@@ -37,14 +37,15 @@ public final class ThreadPerAgentScheduler implements Scheduler {
         threads.forEach(Thread::start);
     }
 
+    /** Runs the agent's slices until the mission ends: a finished agent still serves invocations. */
     private static void drive(AgentTask agent, Semaphore permits) {
         try {
-            while (!agent.finished()) {
+            while (true) {
                 permits.acquire();
                 agent.runSlice();
             }
-        } catch (InterruptedException stopped) {
-            // The mission was stopped: the thread ends with it.
+        } catch (InterruptedException missionEnded) {
+            // shutdown() interrupts the thread: it ends with the mission.
         }
     }
 
