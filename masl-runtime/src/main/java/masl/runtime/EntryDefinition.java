@@ -97,11 +97,6 @@ public final class EntryDefinition {
         }
     }
 
-    /** Nesting depth: 0 for {@code main}. */
-    int depth() {
-        return parent == null ? 0 : parent.depth() + 1;
-    }
-
     @Override
     public String toString() {
         return mode.name().toLowerCase() + " entry " + name;
