@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.StringWriter;
 import java.time.Duration;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;
@@ -143,6 +144,33 @@ class MissionTest {
         MissionOutcome outcome = mission.run(Duration.ofMillis(300));
         assertEquals(MissionOutcome.Status.TIMED_OUT, outcome.status());
         assertTrue(outcome.report().contains("agent a (0) at pc 1: [main]"), outcome.report());
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void aMissionStoppedFromOutsideEndsAsStopped(Driver driver) throws InterruptedException {
+        CountDownLatch running = new CountDownLatch(1);
+        Mission mission = Mission.builder().scheduler(driver.newScheduler())
+                .agent("a", new TestAgent(), self -> new AgentProgram() {
+                    @Override
+                    protected void resume(AgentContext ctx) {
+                        while (true) {
+                            running.countDown();
+                            if (!ctx.loopIteration()) return;
+                        }
+                    }
+                }).build();
+        Thread stopper = new Thread(() -> {
+            try {
+                running.await();
+                mission.stop();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        stopper.start();
+        assertEquals(MissionOutcome.Status.STOPPED, mission.run(Duration.ofSeconds(30)).status());
+        stopper.join();
     }
 
     @Test

@@ -32,18 +32,21 @@ class SynchronousBlockTest {
      *   m0; m1; … m9;
      * }
      * </pre>
+     * or, with {@code breakAfter} = 3, {@code { c0; c1; c2; break; … }}.
      */
     static final class ChildInLockStep extends CompactProgram {
         static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
         static final EntryDefinition CHILD = MAIN.child("child", Mode.SYNCHRONOUS);
 
         private final PhaseLog log;
+        private final int breakAfter;
         private int c;
         private int m;
 
-        ChildInLockStep(TestAgent self, PhaseLog log) {
+        ChildInLockStep(TestAgent self, PhaseLog log, int breakAfter) {
             super(self);
             this.log = log;
+            this.breakAfter = breakAfter;
         }
 
         @Override
@@ -53,8 +56,15 @@ class SynchronousBlockTest {
                 switch (pc) {
                     case 0: if (!arrive(ctx, MAIN, true, 1, 7)) return; continue;
                     case 1: if (!arrive(ctx, CHILD, id % 2 == 0, 2, 4)) return; continue;
-                    case 2: log.instruction(id, "c" + c++); if (!step(ctx, c < 5 ? 2 : 3)) return; continue;
-                    case 3: if (!leave(ctx, CHILD, 4)) return; continue;
+                    case 2: log.instruction(id, "c" + c++); if (!step(ctx, c < 5 && c != breakAfter ? 2 : 3)) return; continue;
+                    case 3:
+                        if (c == breakAfter) {
+                            ctx.breakOut(CHILD);
+                            pc = 4;
+                            continue;
+                        }
+                        if (!leave(ctx, CHILD, 4)) return;
+                        continue;
                     case 4: if (!endOf(ctx, CHILD.sequence(), 5)) return; continue;
                     case 5: log.instruction(id, "m" + m++); if (!step(ctx, m < 10 ? 5 : 6)) return; continue;
                     case 6: if (!leave(ctx, MAIN, 7)) return; continue;
@@ -71,7 +81,7 @@ class SynchronousBlockTest {
     void synchronousChildKeepsLockStepWithItsParentsOtherMembers(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             PhaseLog log = new PhaseLog("main", Trace.NONE);
-            Missions.run(driver, ChildInLockStep.MAIN, 6, self -> new ChildInLockStep(self, log), log);
+            Missions.run(driver, ChildInLockStep.MAIN, 6, self -> new ChildInLockStep(self, log, -1), log);
             Map<Integer, Map<String, Integer>> phases = log.phases();
             for (int agent = 0; agent < 6; agent++) {
                 Map<String, Integer> phase = phases.get(agent);
@@ -90,6 +100,26 @@ class SynchronousBlockTest {
                     for (int k = 0; k < 10; k++) {
                         assertEquals(1 + k, phase.get("m" + k), "agent " + agent + " m" + k);
                     }
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void anAgentBreakingOutOfASynchronousChildKeepsPaceWithoutAnExtraBarrier(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            PhaseLog log = new PhaseLog("main", Trace.NONE);
+            Missions.run(driver, ChildInLockStep.MAIN, 6, self -> new ChildInLockStep(self, log, 3), log);
+            Map<Integer, Map<String, Integer>> phases = log.phases();
+            for (int agent = 0; agent < 6; agent++) {
+                Map<String, Integer> phase = phases.get(agent);
+                int firstMainPhase = agent % 2 == 0 ? 3 : 1;
+                for (int k = 0; agent % 2 == 0 && k < 3; k++) {
+                    assertEquals(k, phase.get("c" + k), "agent " + agent + " c" + k);
+                }
+                for (int k = 0; k < 10; k++) {
+                    assertEquals(firstMainPhase + k, phase.get("m" + k), "agent " + agent + " m" + k);
                 }
             }
         }
@@ -167,6 +197,101 @@ class SynchronousBlockTest {
             // The odd agents' end of e-sequence and m0 … m3 trip without the three held agents.
             assertEquals(5, tripsWhileHeld.size(), events::toString);
             tripsWhileHeld.forEach(trip -> assertEquals(3, trip.agents(), events::toString));
+        }
+    }
+
+    /**
+     * <pre>
+     * synchronous entry main (true) {
+     *   synchronous entry child (true) {
+     *     local boolean reelected = false;
+     *     .nop();
+     *     if (.getProxyID() == 0 &amp;&amp; !reelected) { reelected = true; reelect; }
+     *     if (.getProxyID() == 1) { while (child.getWaitingInCount() == 0) {} child.release(); }
+     *     .nop();
+     *   }
+     * }
+     * </pre>
+     */
+    static final class ReelectInSynchronousBlock extends CompactProgram {
+        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
+        static final EntryDefinition CHILD = MAIN.child("child", Mode.SYNCHRONOUS);
+
+        private boolean keepChildLocals;
+        private boolean reelected;
+
+        ReelectInSynchronousBlock(TestAgent self) {
+            super(self);
+        }
+
+        @Override
+        protected void resume(AgentContext ctx) {
+            int id = self.getProxyID();
+            while (true) {
+                switch (pc) {
+                    case 0: if (!arrive(ctx, MAIN, true, 1, 10)) return; continue;
+                    case 1:
+                        if (!arrive(ctx, CHILD, true, 2, 8)) return;
+                        if (pc == 8) {
+                            keepChildLocals = false;
+                        }
+                        continue;
+                    case 2:
+                        if (!keepChildLocals) {
+                            reelected = false;
+                        }
+                        keepChildLocals = false;
+                        self.nop();
+                        if (!step(ctx, 3)) return;
+                        continue;
+                    case 3:
+                        if (id == 0 && !reelected) {
+                            reelected = true;
+                            ctx.reelect(CHILD);
+                            keepChildLocals = true;
+                            pc = 1;
+                            continue;
+                        }
+                        pc = id == 1 ? 4 : 6;
+                        continue;
+                    case 4:
+                        if (!busyWait(ctx, ctx.entry(CHILD).getWaitingInCount() == 0, 5)) return;
+                        continue;
+                    case 5: ctx.entry(CHILD).release(); pc = 6; continue;
+                    case 6: self.nop(); if (!step(ctx, 7)) return; continue;
+                    case 7: if (!leave(ctx, CHILD, 8)) return; continue;
+                    case 8: if (!endOf(ctx, CHILD.sequence(), 9)) return; continue;
+                    case 9: if (!leave(ctx, MAIN, 10)) return; continue;
+                    case 10: if (!endOf(ctx, MAIN.sequence(), 11)) return; continue;
+                    case 11: ctx.finish(); return;
+                    default: throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void reelectLeavesWithoutExitBarrierAndArrivesAgainAsANewArrival(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            MemoryTrace trace = new MemoryTrace();
+            Missions.run(driver, ReelectInSynchronousBlock.MAIN, 2, ReelectInSynchronousBlock::new, trace);
+            List<String> agent0 = new ArrayList<>();
+            for (TraceEvent event : trace.events()) {
+                if (event instanceof TraceEvent.WaitingIn e && e.agent() == 0 && e.block().equals("child")) {
+                    agent0.add("waiting-in");
+                } else if (event instanceof TraceEvent.Released e && e.agent() == 0 && e.block().equals("child")) {
+                    agent0.add("released into " + e.wave());
+                } else if (event instanceof TraceEvent.Left e && e.agent() == 0 && e.block().equals("child")) {
+                    agent0.add("left by " + e.cause());
+                } else if (event instanceof TraceEvent.WaitingOut e && e.agent() == 0) {
+                    agent0.add("waiting-out of " + e.block());
+                }
+            }
+            // The second arrival meets the entry barrier locked by the first wave, is released
+            // into that wave (agent 1 is still in it), and its local survived the reelect.
+            assertEquals(List.of("waiting-in", "released into 1", "left by REELECT", "waiting-in", "released into 1",
+                    "waiting-out of child", "left by END", "waiting-out of main"), agent0);
         }
     }
 
