@@ -1,7 +1,9 @@
 package masl.runtime.testing;
 
+import java.util.concurrent.atomic.AtomicLong;
 import masl.runtime.PoolScheduler;
 import masl.runtime.Scheduler;
+import masl.runtime.SeededScheduler;
 import masl.runtime.ThreadPerAgentScheduler;
 
 /** The ways of running the same program objects that every concurrency test is run with. */
@@ -26,7 +28,16 @@ public enum Driver {
         public Scheduler newScheduler() {
             return new ThreadPerAgentScheduler();
         }
+    },
+    /** One thread, a seeded random order and virtual time: each mission a new seed, so a new interleaving. */
+    SEEDED {
+        @Override
+        public Scheduler newScheduler() {
+            return new SeededScheduler(SEEDS.incrementAndGet());
+        }
     };
+
+    private static final AtomicLong SEEDS = new AtomicLong();
 
     public abstract Scheduler newScheduler();
 }
