@@ -11,9 +11,8 @@ import java.util.List;
  * <p>The runtime makes no arbitrary choice of its own: a scalar block is run by its first arrival,
  * entry barriers release in arrival order, a trip wakes its agents in arrival order. The only
  * source of non-determinism is therefore the order and interleaving in which a scheduler runs
- * slices, and the clock behind {@link #scheduleAfter}. A deterministic scheduler (one worker
- * picking the next runnable agent with a seeded random generator, virtual time for
- * {@code scheduleAfter}) makes a whole mission reproducible.
+ * slices, and the clock behind {@link #scheduleAfter}: {@link SeededScheduler} (one thread, a
+ * seeded order, virtual time) makes a whole mission reproducible.
  *
  * <p>One scheduler runs one mission.
  */
