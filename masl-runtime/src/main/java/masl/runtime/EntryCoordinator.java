@@ -22,8 +22,9 @@ import masl.runtime.trace.TraceEvent;
  *
  * <p><b>Operation shape.</b> Every public operation locks, applies its change, then
  * {@linkplain #settle() settles} the consequences to a fixed point (exit barriers released, waves
- * ended, synchronisation barriers tripped, free entry barriers opened), and finally, after
- * unlocking, wakes the parked agents it made runnable and advances the change epoch.
+ * ended, free entry barriers opened, then synchronisation barriers tripped), and finally, after
+ * unlocking, wakes the parked agents it made runnable and advances the change epoch. The trace
+ * records under the lock, so it lists changes in the order they happened.
  *
  * <p><b>Invariant.</b> An agent's memberships are changed by other agents only while it is parked
  * (held by an entry or exit barrier); the wake-up that follows publishes the change to it. So an
