@@ -64,9 +64,10 @@ public interface AgentContext {
 
     /**
      * The end of an e-sequence in the body of a block: for an agent whose innermost block is
-     * synchronous and that did not just leave a synchronous block of this e-sequence, the barrier
-     * at the end of the e-sequence (§6.4); otherwise a step boundary without barrier. Before the
-     * call set {@code pc} to the instruction after the e-sequence.
+     * synchronous, the barrier at the end of the e-sequence (§6.4), unless its last action in the
+     * e-sequence was to leave a synchronous block of it (whose instructions were barrier points
+     * already); otherwise a step boundary without barrier. Before the call set {@code pc} to the
+     * instruction after the e-sequence.
      */
     boolean endOfSequence(ESequence sequence);
 
