@@ -11,8 +11,11 @@ import masl.runtime.trace.Trace;
 /** Runs a test mission of {@link TestAgent}s and insists that it completes. */
 public final class Missions {
 
-    /** How often each concurrency test repeats its mission, per driver. */
-    public static final int REPETITIONS = 50;
+    /**
+     * How often each concurrency test repeats its mission, per driver: 50, or the system property
+     * {@code masl.repetitions} for stress runs.
+     */
+    public static final int REPETITIONS = Integer.getInteger("masl.repetitions", 50);
 
     private static final Duration TIMEOUT = Duration.ofSeconds(20);
 
