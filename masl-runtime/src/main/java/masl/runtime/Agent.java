@@ -92,7 +92,9 @@ final class Agent implements AgentContext, AgentTask {
             return;
         }
         if (!state.compareAndSet(SCHEDULED, RUNNING)) {
-            throw new IllegalStateException(describe() + " scheduled twice");
+            // A runtime bug, not the program's: fail the mission rather than the scheduler's thread.
+            mission.agentFailed(this, new IllegalStateException(describe() + " scheduled in state " + current));
+            return;
         }
         suspended = false;
         stepsThisSlice = 0;
