@@ -112,7 +112,8 @@ public final class Mission {
      * (parked or done), no wake-up promised from outside the agents pending (a sleep, an awaited
      * future: what completes it is unknown, so it is given the benefit of the doubt), and no
      * agent scheduled since the previous look.
-     * Agents are read one by one, not in one snapshot, so a look alone could miss a wake-up made
+     *
+     * <p>Agents are read one by one, not in one snapshot, so a look alone could miss a wake-up made
      * between two reads; but such a wake-up counts a schedule first, so two looks that agree on
      * the count have seen a state that really lasted.
      */
