@@ -363,7 +363,9 @@ final class Agent implements AgentContext, AgentTask {
     /**
      * Queues an external invocation of one of this agent's primitives (MASL §9): the hook the
      * invocations issue builds on. A running agent runs it at its next step boundary or loop
-     * iteration; a blocked or finished one has it run on its behalf at once (§5).
+     * iteration; a blocked or finished one has it run on its behalf at once (§5). An invocation
+     * runs the callee's primitive only: served on behalf of a parked agent, it must not use the
+     * agent's {@link AgentContext}, whose memberships other agents may be changing meanwhile.
      */
     void submitInvocation(Runnable invocation) {
         invocations.add(invocation);
