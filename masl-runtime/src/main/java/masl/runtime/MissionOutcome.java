@@ -39,6 +39,7 @@ public record MissionOutcome(Status status, String journal, Optional<Throwable> 
 
     /** Thrown by {@link #requireCompleted()}: the message names the status, failure and report. */
     public static final class MissionFailedException extends RuntimeException {
+        private static final long serialVersionUID = 1L;
         private final transient MissionOutcome outcome;
 
         MissionFailedException(MissionOutcome outcome) {

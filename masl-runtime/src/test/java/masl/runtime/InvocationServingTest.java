@@ -47,6 +47,7 @@ class InvocationServingTest {
         }
 
         @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
         protected void resume(AgentContext ctx) {
             int id = self.getProxyID();
             Entry gate = ctx.entry(GATE);

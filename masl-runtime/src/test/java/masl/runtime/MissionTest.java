@@ -36,6 +36,7 @@ class MissionTest {
         }
 
         @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
         protected void resume(AgentContext ctx) {
             while (true) {
                 switch (pc) {
@@ -85,6 +86,7 @@ class MissionTest {
         }
 
         @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
         protected void resume(AgentContext ctx) {
             switch (pc) {
                 case 0:
@@ -125,6 +127,7 @@ class MissionTest {
         }
 
         @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
         protected void resume(AgentContext ctx) {
             while (true) {
                 switch (pc) {

@@ -55,6 +55,7 @@ class SeededSchedulerTest {
         Mission.builder().main(main).scheduler(new SeededScheduler(7))
                 .agent("sleeper", new TestAgent(), self -> new AgentProgram() {
                     @Override
+                    @SuppressWarnings("fallthrough") // resumption points fall through into the next one
                     protected void resume(AgentContext ctx) {
                         while (true) {
                             switch (pc) {

@@ -45,6 +45,7 @@ class SuspensionTest {
         }
 
         @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
         protected void resume(AgentContext ctx) {
             while (true) {
                 switch (pc) {
@@ -116,6 +117,7 @@ class SuspensionTest {
         }
 
         @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
         protected void resume(AgentContext ctx) {
             while (true) {
                 switch (pc) {

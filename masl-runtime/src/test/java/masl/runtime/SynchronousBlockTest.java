@@ -351,6 +351,8 @@ class SynchronousBlockTest {
                             pc = 12;
                             continue;
                         }
+                        pc = 11;
+                        continue;
                     case 11: if (!leave(ctx, GROUP, 12)) return; continue;
                     case 12: if (!endOf(ctx, KEEP_GROUP, 13)) return; continue;
                     case 13:

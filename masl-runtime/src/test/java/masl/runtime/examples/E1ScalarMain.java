@@ -26,6 +26,7 @@ final class E1ScalarMain extends AgentProgram {
     }
 
     @Override
+    @SuppressWarnings("fallthrough") // resumption points fall through into the next one
     protected void resume(AgentContext ctx) {
         while (true) {
             switch (pc) {

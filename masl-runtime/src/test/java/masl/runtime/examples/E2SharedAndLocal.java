@@ -36,6 +36,7 @@ final class E2SharedAndLocal extends AgentProgram {
     }
 
     @Override
+    @SuppressWarnings("fallthrough") // resumption points fall through into the next one
     protected void resume(AgentContext ctx) {
         while (true) {
             switch (pc) {

@@ -34,6 +34,7 @@ final class E3AsynchronousChild extends AgentProgram {
     }
 
     @Override
+    @SuppressWarnings("fallthrough") // resumption points fall through into the next one
     protected void resume(AgentContext ctx) {
         while (true) {
             switch (pc) {

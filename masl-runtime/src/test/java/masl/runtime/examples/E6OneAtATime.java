@@ -45,6 +45,7 @@ final class E6OneAtATime extends AgentProgram {
     }
 
     @Override
+    @SuppressWarnings("fallthrough") // resumption points fall through into the next one
     protected void resume(AgentContext ctx) {
         while (true) {
             switch (pc) {

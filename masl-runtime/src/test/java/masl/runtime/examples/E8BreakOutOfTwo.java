@@ -35,6 +35,7 @@ final class E8BreakOutOfTwo extends AgentProgram {
     }
 
     @Override
+    @SuppressWarnings("fallthrough") // resumption points fall through into the next one
     protected void resume(AgentContext ctx) {
         while (true) {
             switch (pc) {
