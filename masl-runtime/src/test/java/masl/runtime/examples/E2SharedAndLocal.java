@@ -29,7 +29,7 @@ final class E2SharedAndLocal extends AgentProgram {
     static final EntryDefinition REPORT = REPORT_SEQUENCE.block("report", Mode.SCALAR);
 
     private final TestAgent self;
-    private int mine;
+    private int main$mine;
 
     E2SharedAndLocal(TestAgent self) {
         this.self = self;
@@ -49,13 +49,13 @@ final class E2SharedAndLocal extends AgentProgram {
                     }
                 case 1: // 4-5: declarations (zero duration)
                     ctx.shared(MAIN_N).initialise(() -> 0);
-                    mine = 0;
+                    main$mine = 0;
                     // 6: n++;
                     ctx.shared(MAIN_N).getAndUpdate(n -> n + 1);
                     pc = 2;
                     if (!ctx.stepBoundary()) return;
                 case 2: // 7: mine++;
-                    mine++;
+                    main$mine++;
                     pc = 3;
                     if (!ctx.stepBoundary()) return;
                 case 3: // 8: scalar entry report (true)
@@ -76,7 +76,7 @@ final class E2SharedAndLocal extends AgentProgram {
                     pc = 7;
                     if (!ctx.endOfSequence(REPORT_SEQUENCE)) return;
                 case 7: // 9: .logln("mine=" + mine);
-                    self.logln("mine=" + mine);
+                    self.logln("mine=" + main$mine);
                     pc = 8;
                     if (!ctx.stepBoundary()) return;
                 case 8: // 10: end of main

@@ -25,7 +25,7 @@ final class E7Reelect extends AgentProgram {
     static final EntryDefinition WORK = MAIN.child("work", Mode.ASYNCHRONOUS);
 
     private final TestAgent self;
-    private int rounds;
+    private int main$rounds;
 
     E7Reelect(TestAgent self) {
         this.self = self;
@@ -44,16 +44,16 @@ final class E7Reelect extends AgentProgram {
                         case ENTERED -> { }
                     }
                 case 1: // 4: local int rounds = 0;
-                    rounds = 0;
+                    main$rounds = 0;
                 case 2: // 5: asynchronous entry work (rounds < .getProxyID() + 1)
                     pc = 3;
-                    switch (ctx.enter(WORK, rounds < self.getProxyID() + 1)) {
+                    switch (ctx.enter(WORK, main$rounds < self.getProxyID() + 1)) {
                         case SKIPPED -> { pc = 6; continue; }
                         case WAITING -> { return; }
                         case ENTERED -> { }
                     }
                 case 3: // 6: rounds++;
-                    rounds++;
+                    main$rounds++;
                     pc = 4;
                     if (!ctx.stepBoundary()) return;
                 case 4: // 7: reelect;  (work declares no locals: nothing to keep)
@@ -67,7 +67,7 @@ final class E7Reelect extends AgentProgram {
                     pc = 7;
                     if (!ctx.endOfSequence(WORK.sequence())) return;
                 case 7: // 9: .logln(.getProxyID() + ":" + rounds);
-                    self.logln(self.getProxyID() + ":" + rounds);
+                    self.logln(self.getProxyID() + ":" + main$rounds);
                     pc = 8;
                     if (!ctx.stepBoundary()) return;
                 case 8: // 10: end of main
