@@ -95,11 +95,10 @@ public final class Mission {
         if (!started.compareAndSet(false, true)) {
             throw new IllegalStateException("a mission runs once");
         }
-        scheduler.start(agents);
         if (agents.isEmpty()) {
             ended.countDown();
         }
-        agents.forEach(scheduler::schedule);
+        scheduler.start(agents);
         MissionOutcome.Status status = awaitEnd(timeout);
         String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
         scheduler.shutdown();

@@ -51,7 +51,7 @@ public final class PoolScheduler implements Scheduler {
 
     @Override
     public void start(List<? extends AgentTask> agents) {
-        // Agents need nothing before their first slice in a pool.
+        agents.forEach(this::schedule);
     }
 
     @Override

@@ -18,7 +18,11 @@ import java.util.List;
  */
 public interface Scheduler {
 
-    /** Prepares to run these agents; called once, before any {@link #schedule}. */
+    /**
+     * Starts running these agents: each is runnable once, as if {@link #schedule}d, in the order
+     * given. Called once, before any {@code schedule}; no slice may start before every agent has
+     * been made runnable (a seeded order must not depend on how fast the caller is).
+     */
     void start(List<? extends AgentTask> agents);
 
     /** Makes the agent runnable: its {@code runSlice} is to be called once, soon. */

@@ -39,6 +39,7 @@ public final class SeededScheduler implements Scheduler {
 
     @Override
     public synchronized void start(List<? extends AgentTask> agents) {
+        runnable.addAll(agents);
         worker = new Thread(this::work, "masl-seeded");
         worker.setDaemon(true);
         worker.start();

@@ -16,7 +16,7 @@ public final class ThreadPerAgentScheduler implements Scheduler {
 
     private final List<Thread> threads = new ArrayList<>();
     private final ScheduledThreadPoolExecutor timer;
-    /** One permit per pending slice, indexed by agent id. */
+    /** One permit per pending slice, indexed by agent id; one each at start. */
     private Semaphore[] runnable;
 
     public ThreadPerAgentScheduler() {
@@ -28,7 +28,7 @@ public final class ThreadPerAgentScheduler implements Scheduler {
     public synchronized void start(List<? extends AgentTask> agents) {
         runnable = new Semaphore[agents.size()];
         for (AgentTask agent : agents) {
-            Semaphore permits = new Semaphore(0);
+            Semaphore permits = new Semaphore(1);
             runnable[agent.id()] = permits;
             Thread thread = new Thread(() -> drive(agent, permits), "masl-agent-" + agent.id());
             thread.setDaemon(true);
