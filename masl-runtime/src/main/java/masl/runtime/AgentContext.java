@@ -1,0 +1,126 @@
+package masl.runtime;
+
+import java.util.Queue;
+import java.util.concurrent.CompletionStage;
+
+/**
+ * What a generated program calls on the runtime: one instance per agent, passed to
+ * {@link AgentProgram#resume}. The full contract, with a worked example, is
+ * {@code masl-runtime/docs/generated-code-contract.md}.
+ *
+ * <p><b>Suspension protocol.</b> A method returning {@code boolean} may suspend the agent. Before
+ * calling it the program sets {@code pc} to the point to continue at. {@code true} means "go on
+ * now" (fall through to that point); {@code false} means the agent is suspended: the program must
+ * return from {@code resume} at once, without calling the runtime again, and will be resumed at
+ * {@code pc} once the wait is over (barrier tripped, agent released, time elapsed, change seen).
+ * A program that returns without a suspension or {@link #finish()} is a contract violation that
+ * fails the mission.
+ *
+ * <p>Every method must be called from within {@code resume} of this context's agent.
+ */
+public interface AgentContext {
+
+    /** The agent's proxy id: 0, 1, 2, … in declaration order. */
+    int proxyId();
+
+    /**
+     * The step boundary after an instruction of non-zero duration (MASL §5): (1) events, (2)
+     * pending external invocations, (3) the synchronisation barrier if the innermost block is
+     * synchronous. May also return {@code false} merely to let other agents run (a yield).
+     */
+    boolean stepBoundary();
+
+    /**
+     * The end of an iteration of a loop that may change state the runtime cannot see (its body or
+     * update changes locals, its condition calls a primitive or Java method): steps 1 and 2 of the
+     * step boundary, no barrier, never parks; may yield.
+     */
+    boolean loopIteration();
+
+    /**
+     * The end of an iteration of a busy-wait loop: a loop whose condition and body observe only
+     * state the runtime sees (shared variables, entry members, labels, events, invocations, and
+     * locals the loop does not change). Steps 1 and 2 of the step boundary; then, if nothing the
+     * agent can observe changed and it ran no instruction since its previous busy-wait
+     * iteration, the agent parks until something changes, instead of spinning (§5).
+     */
+    boolean busyWaitIteration();
+
+    /**
+     * Arrival at an e-block, after its test was evaluated (zero duration). The agent must be an
+     * active member of the block's parent, with no block of the parent's body entered (it is at
+     * the parent's instruction level). Before the call, set {@code pc} to the block's first
+     * instruction (its declarations).
+     */
+    Arrival enter(EntryDefinition block, boolean test);
+
+    /**
+     * Normal end of the innermost block. Asynchronous and scalar blocks are left at once;
+     * synchronous ones after the exit barrier (§6.3). Before the call set {@code pc} to the
+     * instruction after the block (the test of the next block of its e-sequence, or the end of
+     * the e-sequence).
+     */
+    boolean leave(EntryDefinition block);
+
+    /**
+     * The end of an e-sequence in the body of a block: for an agent whose innermost block is
+     * synchronous, the barrier at the end of the e-sequence (§6.4), unless its last action in the
+     * e-sequence was to leave a synchronous block of it (whose instructions were barrier points
+     * already); otherwise a step boundary without barrier. Before the call set {@code pc} to the
+     * instruction after the e-sequence.
+     */
+    boolean endOfSequence(ESequence sequence);
+
+    /**
+     * {@code break(…)}: leaves every block from the innermost to {@code outermost} inclusive, with
+     * no exit barrier. The program then continues after {@code outermost}: set {@code pc} to the
+     * instruction after that block and continue.
+     */
+    void breakOut(EntryDefinition outermost);
+
+    /**
+     * {@code reelect(…)}: leaves every block from the innermost to {@code block} inclusive, with
+     * no exit barrier. The program then arrives at {@code block} again: jump to its test, and
+     * keep (do not re-initialise) its locals if the new arrival enters.
+     */
+    void reelect(EntryDefinition block);
+
+    /**
+     * {@code restart}: leaves the blocks nested in {@code block} (if any), which stays the
+     * innermost block. The program then jumps to the first instruction after its declarations.
+     */
+    void restart(EntryDefinition block);
+
+    /** This wave's copy of a shared variable of the innermost block or of one of its ancestors. */
+    <T> SharedVariable<T> shared(SharedDeclaration<T> declaration);
+
+    /** The mission state of a block, for entry members (§6.7): {@code e.count}, {@code e.release()}, … */
+    Entry entry(EntryDefinition block);
+
+    /**
+     * {@code .sleep(ms)} and {@code Thread.sleep(ms)} as statements (§12): a timed suspension on
+     * the mission clock. Returns {@code false} (suspends) unless {@code ms <= 0}.
+     */
+    boolean sleep(long ms);
+
+    /**
+     * Waits for {@code result} without holding a thread: a blocking (synchronous) invocation, the
+     * read of a variable holding a future (§9). Returns {@code true} if it is already complete;
+     * otherwise suspends, and the agent is resumed at {@code pc} once it is complete. Either way
+     * the program then reads it with {@code join()} (or {@code getNow}).
+     */
+    boolean await(CompletionStage<?> result);
+
+    /**
+     * The queue of event occurrences perceived by this agent and not yet reacted to (§8): the hook
+     * where events arrive. Reacting is generated code and belongs to the events issue.
+     */
+    Queue<EventOccurrence> events();
+
+    /**
+     * The agent's program is over: it has left {@code main}, or skipped it, or the program has no
+     * {@code main}. The program must return right after. The agent stays alive to serve
+     * invocations; the mission ends when every agent has finished.
+     */
+    void finish();
+}

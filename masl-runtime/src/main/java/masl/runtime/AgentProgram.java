@@ -1,0 +1,25 @@
+package masl.runtime;
+
+/**
+ * An agent's program as a resumable state machine (components.md, "Execution model"); the
+ * translator generates one subclass per agent type, and docs/generated-code-contract.md says how.
+ *
+ * <p>The program's locals are fields of the subclass; {@link #pc} names the point to resume at.
+ * The runtime calls {@link #resume} whenever the agent is runnable, never from two threads at
+ * once, and each call happens-after the previous one returned. The program runs until a runtime
+ * call returns {@code false}, and then returns at once; or until it calls
+ * {@link AgentContext#finish()} and returns.
+ */
+public abstract class AgentProgram {
+
+    /** The resumption point: 0 at start, then whatever the program set before it returned. */
+    protected int pc;
+
+    /** Runs the program from {@link #pc} until it must wait or has finished. */
+    protected abstract void resume(AgentContext ctx);
+
+    /** The current resumption point, for diagnostics. */
+    public final int pc() {
+        return pc;
+    }
+}

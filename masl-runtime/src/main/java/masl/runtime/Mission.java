@@ -1,0 +1,292 @@
+package masl.runtime;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Function;
+import masl.runtime.trace.Trace;
+
+/**
+ * One run of a MASL program: its agents (proxy ids 0, 1, 2, … in declaration order, each with its
+ * implementation bound to its {@link AgentServices} and its program), the state of its e-blocks,
+ * its journal and trace, and the scheduler that runs it. The mission ends when every agent's
+ * program has finished (MASL §6.5), when a program fails, when no agent can make progress any
+ * more (deadlock), on timeout or on {@link #stop()}.
+ *
+ * <pre>{@code
+ * MissionOutcome outcome = Mission.builder()
+ *         .main(E2.MAIN)
+ *         .agent("a", new Default(), E2::new)
+ *         .agent("b", new Default(), E2::new)
+ *         .journal(System.out)
+ *         .build()
+ *         .run(Duration.ofMinutes(1));
+ * }</pre>
+ */
+public final class Mission {
+
+    /** How often the deadlock watchdog looks; a deadlock is reported after two looks agree. */
+    public static final Duration WATCHDOG_PERIOD = Duration.ofMillis(100);
+
+    private final List<Agent> agents;
+    private final Map<EntryDefinition, Entry> entries;
+    private final Scheduler scheduler;
+    private final Journal journal;
+    private final ChangeEpoch changes = new ChangeEpoch();
+    private final EntryCoordinator coordinator;
+    private final AtomicBoolean started = new AtomicBoolean();
+    private final AtomicInteger running;
+    private final CountDownLatch ended = new CountDownLatch(1);
+    private final AtomicReference<Throwable> failure = new AtomicReference<>();
+    private volatile boolean stopped;
+    /** Transitions of agents to SCHEDULED after their start: the watchdog's sign of life. */
+    private final AtomicLong schedules = new AtomicLong();
+    /** Wake-ups promised from outside the agents: sleep timers, futures being awaited. */
+    private final AtomicInteger pendingOutsideWakeUps = new AtomicInteger();
+
+    private Mission(Builder builder) {
+        scheduler = builder.scheduler != null ? builder.scheduler : new PoolScheduler();
+        journal = new Journal(builder.journalSink);
+        coordinator = new EntryCoordinator(builder.trace, changes);
+        Map<EntryDefinition, Entry> blocks = new IdentityHashMap<>();
+        if (builder.main != null) {
+            addEntries(builder.main, null, blocks);
+        }
+        entries = Collections.unmodifiableMap(blocks);
+        List<Agent> created = new ArrayList<>();
+        for (Builder.AgentDeclaration declaration : builder.agents) {
+            created.add(declaration.create(created.size(), this));
+        }
+        agents = Collections.unmodifiableList(created);
+        running = new AtomicInteger(agents.size());
+        coordinator.addAgents(agents);
+    }
+
+    private void addEntries(EntryDefinition definition, Entry parent, Map<EntryDefinition, Entry> blocks) {
+        Entry entry = new Entry(definition, parent, coordinator);
+        blocks.put(definition, entry);
+        for (EntryDefinition child : definition.children()) {
+            addEntries(child, entry, blocks);
+        }
+    }
+
+    public static Builder builder() {
+        return new Builder();
+    }
+
+    /**
+     * Starts every agent's program and waits until the mission ends or {@code timeout} elapses,
+     * then stops the scheduler's threads. Runs once per mission.
+     *
+     * @throws InterruptedException if the calling thread is interrupted while waiting
+     */
+    public MissionOutcome run(Duration timeout) throws InterruptedException {
+        if (!started.compareAndSet(false, true)) {
+            throw new IllegalStateException("a mission runs once");
+        }
+        if (agents.isEmpty()) {
+            ended.countDown();
+        }
+        scheduler.start(agents);
+        MissionOutcome.Status status = awaitEnd(timeout);
+        String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
+        scheduler.shutdown();
+        journal.flush();
+        return new MissionOutcome(status, journal.text(), Optional.ofNullable(failure.get()), report);
+    }
+
+    /**
+     * Waits for the end, looking for a deadlock every {@link #WATCHDOG_PERIOD}: every agent idle
+     * (parked or done), no wake-up promised from outside the agents pending (a sleep, an awaited
+     * future: what completes it is unknown, so it is given the benefit of the doubt), and no
+     * agent scheduled since the previous look.
+     *
+     * <p>Agents are read one by one, not in one snapshot, so a look alone could miss a wake-up made
+     * between two reads; but such a wake-up counts a schedule first, so two looks that agree on
+     * the count have seen a state that really lasted.
+     */
+    private MissionOutcome.Status awaitEnd(Duration timeout) throws InterruptedException {
+        long deadline = System.nanoTime() + timeout.toNanos();
+        long schedulesAtLastIdleLook = -1;
+        while (true) {
+            long left = deadline - System.nanoTime();
+            boolean ended = this.ended.await(Math.min(left, WATCHDOG_PERIOD.toNanos()), TimeUnit.NANOSECONDS);
+            if (failure.get() != null) {
+                return MissionOutcome.Status.FAILED;
+            }
+            if (stopped) {
+                return MissionOutcome.Status.STOPPED;
+            }
+            if (ended) {
+                return MissionOutcome.Status.COMPLETED;
+            }
+            if (deadline - System.nanoTime() <= 0) {
+                return MissionOutcome.Status.TIMED_OUT;
+            }
+            long scheduled = schedules.get();
+            boolean idle = pendingOutsideWakeUps.get() == 0 && agents.stream().allMatch(Agent::isIdle);
+            if (idle && scheduled == schedules.get() && scheduled == schedulesAtLastIdleLook) {
+                return MissionOutcome.Status.DEADLOCKED;
+            }
+            schedulesAtLastIdleLook = idle ? scheduled : -1;
+        }
+    }
+
+    /** Stops the mission from outside: {@link #run} returns {@link MissionOutcome.Status#STOPPED}. */
+    public void stop() {
+        stopped = true;
+        ended.countDown();
+    }
+
+    public Journal journal() {
+        return journal;
+    }
+
+    /** The mission state of a block of this mission's program. */
+    public Entry entry(EntryDefinition definition) {
+        Entry entry = entries.get(definition);
+        if (entry == null) {
+            throw new IllegalArgumentException(definition + " is not a block of this mission's program");
+        }
+        return entry;
+    }
+
+    Scheduler scheduler() {
+        return scheduler;
+    }
+
+    ChangeEpoch changes() {
+        return changes;
+    }
+
+    EntryCoordinator coordinator() {
+        return coordinator;
+    }
+
+    void countSchedule() {
+        schedules.incrementAndGet();
+    }
+
+    void outsideWakeUpStarted() {
+        pendingOutsideWakeUps.incrementAndGet();
+    }
+
+    void outsideWakeUpEnded() {
+        pendingOutsideWakeUps.decrementAndGet();
+    }
+
+    void agentFinished(Agent agent) {
+        if (running.decrementAndGet() == 0) {
+            ended.countDown();
+        }
+    }
+
+    void agentFailed(Agent agent, Throwable cause) {
+        if (failure.compareAndSet(null, new IllegalStateException(agent.describe() + " failed", cause))) {
+            ended.countDown();
+        }
+    }
+
+    /** Builds a mission: agents in declaration order, the program's {@code main}, and options. */
+    public static final class Builder {
+
+        private record AgentDeclaration(String name, AgentImplementation implementation,
+                Function<AgentImplementation, ? extends AgentProgram> program) {
+
+            Agent create(int id, Mission mission) {
+                implementation.bind(mission.new Services(id));
+                return new Agent(id, name, implementation, program.apply(implementation), mission);
+            }
+        }
+
+        private final List<AgentDeclaration> agents = new ArrayList<>();
+        private EntryDefinition main;
+        private Scheduler scheduler;
+        private Appendable journalSink;
+        private Trace trace = Trace.NONE;
+
+        private Builder() {
+        }
+
+        /**
+         * Declares the next agent (its proxy id is the number of agents declared before it):
+         * {@code implementation} is bound to the agent's services, then {@code program} makes the
+         * agent's program for it.
+         */
+        @SuppressWarnings("unchecked")
+        public <T extends AgentImplementation> Builder agent(String name, T implementation,
+                Function<? super T, ? extends AgentProgram> program) {
+            Objects.requireNonNull(implementation, "implementation");
+            Objects.requireNonNull(program, "program");
+            agents.add(new AgentDeclaration(name, implementation,
+                    impl -> program.apply((T) impl)));
+            return this;
+        }
+
+        /** The program's top-level block; a program without one only creates its agents. */
+        public Builder main(EntryDefinition main) {
+            if (main.parent() != null) {
+                throw new IllegalArgumentException(main + " is not a top-level block");
+            }
+            this.main = main;
+            return this;
+        }
+
+        /** Who runs the agents: a {@link PoolScheduler} of one worker per core unless set. */
+        public Builder scheduler(Scheduler scheduler) {
+            this.scheduler = scheduler;
+            return this;
+        }
+
+        /** Where the journal is written as it grows, besides {@link Journal#text()}. */
+        public Builder journal(Appendable sink) {
+            this.journalSink = sink;
+            return this;
+        }
+
+        public Builder trace(Trace trace) {
+            this.trace = Objects.requireNonNull(trace, "trace");
+            return this;
+        }
+
+        public Mission build() {
+            return new Mission(this);
+        }
+    }
+
+    /** What an agent's implementation reaches the mission through. */
+    private final class Services implements AgentServices {
+        private final int id;
+
+        Services(int id) {
+            this.id = id;
+        }
+
+        @Override
+        public int proxyId() {
+            return id;
+        }
+
+        @Override
+        public void log(String text) {
+            journal.append(text);
+        }
+
+        /** Really blocks the calling thread (a primitive's Java code); the pool stays live meanwhile. */
+        @Override
+        public void sleep(long ms) throws InterruptedException {
+            Blocking.sleep(ms);
+        }
+    }
+}

@@ -1,0 +1,42 @@
+package masl.runtime;
+
+import java.util.List;
+
+/**
+ * Runs a mission's agents. The runtime calls {@link #schedule} when an agent becomes runnable
+ * (at start, after a barrier trip, a release, a wake-up, a yield); the scheduler must then call
+ * {@link AgentTask#runSlice()} once, on one of its threads. An agent is never scheduled again
+ * before that slice has returned.
+ *
+ * <p>The runtime makes no arbitrary choice of its own: a scalar block is run by its first arrival,
+ * entry barriers release in arrival order, a trip wakes its agents in arrival order. The only
+ * source of non-determinism is therefore the order and interleaving in which a scheduler runs
+ * slices, and the clock behind {@link #scheduleAfter}: {@link SeededScheduler} (one thread, a
+ * seeded order, virtual time) makes a whole mission reproducible.
+ *
+ * <p>One scheduler runs one mission.
+ */
+public interface Scheduler {
+
+    /**
+     * Starts running these agents: each is runnable once, as if {@link #schedule}d, in the order
+     * given. Called once, before any {@code schedule}; no slice may start before every agent has
+     * been made runnable (a seeded order must not depend on how fast the caller is).
+     */
+    void start(List<? extends AgentTask> agents);
+
+    /** Makes the agent runnable: its {@code runSlice} is to be called once, soon. */
+    void schedule(AgentTask agent);
+
+    /** Runs {@code action} (quick, non-blocking) after {@code delayMillis} of mission time. */
+    void scheduleAfter(long delayMillis, Runnable action);
+
+    /**
+     * How many step boundaries an agent may pass in one slice before it yields its thread to other
+     * agents; {@link Integer#MAX_VALUE} when agents have threads of their own.
+     */
+    int stepsPerSlice();
+
+    /** Stops every thread of this scheduler, interrupting blocked primitives and sleeps. */
+    void shutdown();
+}

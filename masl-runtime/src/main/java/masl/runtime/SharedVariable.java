@@ -1,0 +1,87 @@
+package masl.runtime;
+
+import java.util.function.Supplier;
+import java.util.function.UnaryOperator;
+
+/**
+ * One wave's copy of a shared variable (MASL §7).
+ *
+ * <p>Reads are plain volatile reads. Every write, and every read-modify-write
+ * ({@code x++}, {@code x op= e}, {@code x = f(x)}), holds this variable's monitor while it
+ * computes and stores the new value, so no other write to the variable comes in between. Each
+ * write advances the mission's change epoch, which wakes agents parked in a busy-wait loop (§5).
+ *
+ * @param <T> the variable's (boxed) Java type
+ */
+public final class SharedVariable<T> {
+
+    private final SharedDeclaration<T> declaration;
+    private final ChangeEpoch changes;
+    private volatile T value;
+    private volatile boolean initialised;
+
+    SharedVariable(SharedDeclaration<T> declaration, ChangeEpoch changes) {
+        this.declaration = declaration;
+        this.changes = changes;
+        this.value = declaration.initialValue();
+    }
+
+    /**
+     * Runs the declaration's initialiser if no member of this wave has run it yet. Every member
+     * calls this when it executes the declaration; the first one evaluates {@code initialiser},
+     * the others wait until it has stored the value, so no member can read the variable before it
+     * is initialised. Initialisation is not a change observed by busy-wait loops: it happens
+     * before any member reads.
+     */
+    public void initialise(Supplier<? extends T> initialiser) {
+        if (initialised) {
+            return;
+        }
+        synchronized (this) {
+            if (!initialised) {
+                value = initialiser.get();
+                initialised = true;
+            }
+        }
+    }
+
+    /** Plain read, not locked (§7). */
+    public T get() {
+        return value;
+    }
+
+    /** Plain assignment {@code x = v}. */
+    public void set(T newValue) {
+        synchronized (this) {
+            value = newValue;
+        }
+        changes.advance();
+    }
+
+    /** Atomic {@code x = f(x)}, {@code ++x}, {@code x op= e}: returns the new value. */
+    public T update(UnaryOperator<T> function) {
+        T updated;
+        synchronized (this) {
+            updated = function.apply(value);
+            value = updated;
+        }
+        changes.advance();
+        return updated;
+    }
+
+    /** Atomic {@code x++}, {@code x--}: returns the value before the update. */
+    public T getAndUpdate(UnaryOperator<T> function) {
+        T previous;
+        synchronized (this) {
+            previous = value;
+            value = function.apply(previous);
+        }
+        changes.advance();
+        return previous;
+    }
+
+    @Override
+    public String toString() {
+        return declaration.name() + "=" + value;
+    }
+}

@@ -1,0 +1,85 @@
+package masl.runtime.trace;
+
+import java.io.Flushable;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+
+/**
+ * Writes one JSON object per line for every event (components.md, "Runtime"), in the order they
+ * happened, for {@code --trace FILE}: for instance
+ * {@code {"nanos":123,"event":"left","agent":2,"block":"work","cause":"reelect"}}. Names are
+ * written as JSON strings, escaped. Source positions are not known to the runtime yet.
+ */
+public final class JsonLinesTrace implements Trace, Flushable {
+
+    private final Appendable out;
+
+    public JsonLinesTrace(Appendable out) {
+        this.out = out;
+    }
+
+    @Override
+    public synchronized void record(TraceEvent event) {
+        String line;
+        if (event instanceof TraceEvent.Entered e) {
+            line = membership(e.nanos(), "entered", e.agent(), e.block());
+        } else if (event instanceof TraceEvent.WaitingIn e) {
+            line = membership(e.nanos(), "waiting-in", e.agent(), e.block());
+        } else if (event instanceof TraceEvent.Released e) {
+            line = membership(e.nanos(), "released", e.agent(), e.block()) + ",\"wave\":" + e.wave();
+        } else if (event instanceof TraceEvent.WaitingOut e) {
+            line = membership(e.nanos(), "waiting-out", e.agent(), e.block());
+        } else if (event instanceof TraceEvent.Left e) {
+            line = membership(e.nanos(), "left", e.agent(), e.block())
+                    + ",\"cause\":" + string(e.cause().name().toLowerCase());
+        } else if (event instanceof TraceEvent.BarrierTripped e) {
+            line = head(e.nanos(), "barrier-tripped") + ",\"domain\":" + string(e.domain()) + ",\"agents\":" + e.agents();
+        } else if (event instanceof TraceEvent.WaveStarted e) {
+            line = head(e.nanos(), "wave-started") + ",\"block\":" + string(e.block()) + ",\"wave\":" + e.wave();
+        } else {
+            TraceEvent.WaveEnded e = (TraceEvent.WaveEnded) event;
+            line = head(e.nanos(), "wave-ended") + ",\"block\":" + string(e.block()) + ",\"wave\":" + e.wave();
+        }
+        try {
+            out.append(line).append("}\n");
+        } catch (IOException e) {
+            throw new UncheckedIOException("trace output failed", e);
+        }
+    }
+
+    @Override
+    public synchronized void flush() throws IOException {
+        if (out instanceof Flushable flushable) {
+            flushable.flush();
+        }
+    }
+
+    private static String head(long nanos, String event) {
+        return "{\"nanos\":" + nanos + ",\"event\":" + string(event);
+    }
+
+    private static String membership(long nanos, String event, int agent, String block) {
+        return head(nanos, event) + ",\"agent\":" + agent + ",\"block\":" + string(block);
+    }
+
+    private static String string(String text) {
+        StringBuilder json = new StringBuilder("\"");
+        for (char c : text.toCharArray()) {
+            switch (c) {
+                case '"' -> json.append("\\\"");
+                case '\\' -> json.append("\\\\");
+                case '\n' -> json.append("\\n");
+                case '\r' -> json.append("\\r");
+                case '\t' -> json.append("\\t");
+                default -> {
+                    if (c < 0x20) {
+                        json.append(String.format("\\u%04x", (int) c));
+                    } else {
+                        json.append(c);
+                    }
+                }
+            }
+        }
+        return json.append('"').toString();
+    }
+}

@@ -1,0 +1,37 @@
+package masl.runtime.trace;
+
+/**
+ * One recorded change. {@code nanos} is {@link System#nanoTime()} when it happened; {@code agent}
+ * is a proxy id; {@code block} an e-block's name.
+ */
+public sealed interface TraceEvent {
+
+    long nanos();
+
+    /** The agent passed the test of an asynchronous or scalar block and is an active member. */
+    record Entered(long nanos, int agent, String block) implements TraceEvent { }
+
+    /** The agent passed the test of a synchronous block and is held by its entry barrier. */
+    record WaitingIn(long nanos, int agent, String block) implements TraceEvent { }
+
+    /** The entry barrier let the agent in: it is an active member of wave {@code wave}. */
+    record Released(long nanos, int agent, String block, int wave) implements TraceEvent { }
+
+    /** The agent ran out of instructions of a synchronous block and is held by its exit barrier. */
+    record WaitingOut(long nanos, int agent, String block) implements TraceEvent { }
+
+    /** The agent is no longer a member of the block. */
+    record Left(long nanos, int agent, String block, LeaveCause cause) implements TraceEvent { }
+
+    /**
+     * The synchronisation barrier of the barrier domain whose outermost block is {@code domain}
+     * tripped, letting {@code agents} agents go on.
+     */
+    record BarrierTripped(long nanos, String domain, int agents) implements TraceEvent { }
+
+    /** The block was empty and an arrival started its wave number {@code wave} (1, 2, …). */
+    record WaveStarted(long nanos, String block, int wave) implements TraceEvent { }
+
+    /** The last member of the wave left: the block is empty (§6.5). */
+    record WaveEnded(long nanos, String block, int wave) implements TraceEvent { }
+}

@@ -1,0 +1,156 @@
+package masl.runtime;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+import masl.runtime.testing.CompactProgram;
+import masl.runtime.testing.Driver;
+import masl.runtime.testing.Missions;
+import masl.runtime.testing.TestAgent;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+
+/** Waiting without holding a thread: sleep, busy-wait loops (MASL §5, §12), blocking primitives. */
+@Timeout(120)
+class SuspensionTest {
+
+    /**
+     * <pre>
+     * asynchronous entry main (true) {
+     *   shared int flag = 0;
+     *   if (.getProxyID() == 0) { .sleep(30); flag = 1; }
+     *   else { while (flag == 0) {} .logln("woke"); }
+     * }
+     * </pre>
+     */
+    static final class SleepAndBusyWait extends CompactProgram {
+        static final long SLEEP_MS = 30;
+        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
+        static final SharedDeclaration<Integer> FLAG = MAIN.declareShared("flag", 0);
+
+        private final AtomicLong sleptNanos;
+        private final AtomicInteger iterations;
+        private long sleepStart;
+
+        SleepAndBusyWait(TestAgent self, AtomicLong sleptNanos, AtomicInteger iterations) {
+            super(self);
+            this.sleptNanos = sleptNanos;
+            this.iterations = iterations;
+        }
+
+        @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
+        protected void resume(AgentContext ctx) {
+            while (true) {
+                switch (pc) {
+                    case 0: if (!arrive(ctx, MAIN, true, 1, 7)) return; continue;
+                    case 1:
+                        ctx.shared(FLAG).initialise(() -> 0);
+                        if (self.getProxyID() != 0) {
+                            pc = 4;
+                            continue;
+                        }
+                        sleepStart = System.nanoTime();
+                        pc = 2;
+                        if (!ctx.sleep(SLEEP_MS)) return;
+                    case 2:
+                        sleptNanos.set(System.nanoTime() - sleepStart);
+                        if (!step(ctx, 3)) return;
+                        continue;
+                    case 3: ctx.shared(FLAG).set(1); if (!step(ctx, 6)) return; continue;
+                    case 4:
+                        iterations.incrementAndGet();
+                        if (!busyWait(ctx, ctx.shared(FLAG).get() == 0, 5)) return;
+                        continue;
+                    case 5: self.logln("woke"); if (!step(ctx, 6)) return; continue;
+                    case 6: if (!leave(ctx, MAIN, 7)) return; continue;
+                    case 7: if (!endOf(ctx, MAIN.sequence(), 8)) return; continue;
+                    case 8: ctx.finish(); return;
+                    default: throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void sleepSuspendsAndABusyWaitParksUntilAChangeItCanSee(Driver driver) {
+        for (int run = 0; run < 10; run++) {
+            AtomicLong slept = new AtomicLong();
+            AtomicInteger iterations = new AtomicInteger();
+            String journal = Missions.run(driver, SleepAndBusyWait.MAIN, 2,
+                    self -> new SleepAndBusyWait(self, slept, iterations)).journal();
+            assertEquals("woke\n", journal);
+            if (driver != Driver.SEEDED) {
+                // Real time: the sleep lasts at least as asked (virtual time takes none).
+                assertTrue(slept.get() >= TimeUnit.MILLISECONDS.toNanos(SleepAndBusyWait.SLEEP_MS), () -> "slept " + slept);
+            }
+            // A spinning loop iterates thousands of times during the sleep. A parked one iterates
+            // at most three times per change the mission makes (it sees the change, finds nothing
+            // new, and may be woken once more by the same change), and this mission makes five:
+            // two arrivals at main, the write, two departures.
+            assertTrue(iterations.get() <= 2 + 3 * 5, () -> iterations + " iterations");
+        }
+    }
+
+    /**
+     * Agent 0's primitive blocks its thread until agent 1's instruction opens a latch: with one
+     * worker, only a pool that adds a worker while a primitive blocks gets there. (The seeded
+     * scheduler runs everything on one thread by design, so it cannot run this program.)
+     */
+    static final class BlockingPrimitive extends CompactProgram {
+        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
+
+        private final CountDownLatch latch;
+        private final AtomicBoolean opened;
+
+        BlockingPrimitive(TestAgent self, CountDownLatch latch, AtomicBoolean opened) {
+            super(self);
+            this.latch = latch;
+            this.opened = opened;
+        }
+
+        @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
+        protected void resume(AgentContext ctx) {
+            while (true) {
+                switch (pc) {
+                    case 0: if (!arrive(ctx, MAIN, true, 1, 3)) return; continue;
+                    case 1:
+                        if (self.getProxyID() == 0) {
+                            try {
+                                opened.set(Blocking.call(() -> latch.await(30, TimeUnit.SECONDS)));
+                            } catch (Exception e) {
+                                throw new IllegalStateException(e);
+                            }
+                        } else {
+                            latch.countDown();
+                        }
+                        if (!step(ctx, 2)) return;
+                        continue;
+                    case 2: if (!leave(ctx, MAIN, 3)) return; continue;
+                    case 3: if (!endOf(ctx, MAIN.sequence(), 4)) return; continue;
+                    case 4: ctx.finish(); return;
+                    default: throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(value = Driver.class, names = {"POOL", "SINGLE_WORKER", "THREADS"})
+    void aPrimitiveThatBlocksItsThreadDoesNotStallTheOtherAgents(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            CountDownLatch latch = new CountDownLatch(1);
+            AtomicBoolean opened = new AtomicBoolean();
+            Missions.run(driver, BlockingPrimitive.MAIN, 2, self -> new BlockingPrimitive(self, latch, opened));
+            assertTrue(opened.get());
+        }
+    }
+}

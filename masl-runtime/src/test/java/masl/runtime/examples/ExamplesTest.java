@@ -1,0 +1,80 @@
+package masl.runtime.examples;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.List;
+import masl.runtime.testing.Driver;
+import masl.runtime.testing.Missions;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+
+/** The worked examples of examples.md, hand-translated, give exactly the journals stated there. */
+@Timeout(120)
+class ExamplesTest {
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void e1ScalarMainIsRunByOneAgent(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            assertEquals("Hi team\n", Missions.run(driver, E1ScalarMain.MAIN, 3, E1ScalarMain::new).journal());
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void e2SharedAndLocalVariablesInLockStep(Driver driver) {
+        String expected = "n=5\n" + "mine=1\n".repeat(5);
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            assertEquals(expected, Missions.run(driver, E2SharedAndLocal.MAIN, 5, E2SharedAndLocal::new).journal());
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void e3AsynchronousChildIsOneInstructionOfItsSynchronousParent(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            assertEquals("xxxxxxyyyy\n",
+                    Missions.run(driver, E3AsynchronousChild.MAIN, 4, E3AsynchronousChild::new).journal());
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void e6LockedBlockAdmitsOneAgentPerWave(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            assertEquals("in 1\nin 1\nin 1\n", Missions.run(driver, E6OneAtATime.MAIN, 4, E6OneAtATime::new).journal());
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void e7ReelectThinsTheWaveOut(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            String journal = Missions.run(driver, E7Reelect.MAIN, 3, E7Reelect::new).journal();
+            assertEquals(List.of("0:1", "1:2", "2:3"), sortedLines(journal));
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void e8BreakLeavesTwoBlocks(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            String journal = Missions.run(driver, E8BreakOutOfTwo.MAIN, 2, E8BreakOutOfTwo::new).journal();
+            assertEquals(List.of("in", "in", "out", "out"), sortedLines(journal));
+            // Each agent's "in" precedes its "out": so the journal cannot start with "out".
+            assertTrue(journal.startsWith("in\n"), journal);
+            assertEquals(2, journal.indexOf("out") > journal.indexOf("in") ? 2 : 0, journal);
+        }
+    }
+
+    private static List<String> sortedLines(String journal) {
+        List<String> lines = new ArrayList<>(Arrays.asList(journal.split("\n")));
+        Collections.sort(lines);
+        return lines;
+    }
+}

@@ -1,0 +1,65 @@
+package masl.runtime.testing;
+
+import masl.runtime.AgentContext;
+import masl.runtime.AgentProgram;
+import masl.runtime.ESequence;
+import masl.runtime.EntryDefinition;
+
+/**
+ * The generated-code contract in a shorter notation for test programs: each helper sets {@code pc}
+ * exactly as the contract says, makes the one runtime call, and returns what the program must do
+ * next: {@code true} continue the dispatch loop (at the new {@code pc}), {@code false} return. A
+ * case then reads {@code if (!step(ctx, 5)) return; continue;}.
+ */
+public abstract class CompactProgram extends AgentProgram {
+
+    protected final TestAgent self;
+
+    protected CompactProgram(TestAgent self) {
+        this.self = self;
+    }
+
+    /** Arrival at {@code block}: continue at {@code body} if a member, at {@code after} if skipped. */
+    protected final boolean arrive(AgentContext ctx, EntryDefinition block, boolean test, int body, int after) {
+        pc = body;
+        switch (ctx.enter(block, test)) {
+            case SKIPPED -> {
+                pc = after;
+                return true;
+            }
+            case WAITING -> {
+                return false;
+            }
+            default -> {
+                return true;
+            }
+        }
+    }
+
+    /** The step boundary after an instruction; continue at {@code next}. */
+    protected final boolean step(AgentContext ctx, int next) {
+        pc = next;
+        return ctx.stepBoundary();
+    }
+
+    /** Normal end of {@code block}; continue at {@code next}. */
+    protected final boolean leave(AgentContext ctx, EntryDefinition block, int next) {
+        pc = next;
+        return ctx.leave(block);
+    }
+
+    /** End of an e-sequence; continue at {@code next}. */
+    protected final boolean endOf(AgentContext ctx, ESequence sequence, int next) {
+        pc = next;
+        return ctx.endOfSequence(sequence);
+    }
+
+    /** A busy-wait loop: continue at {@code loopEnd} when {@code waiting} is false, else iterate at the current pc. */
+    protected final boolean busyWait(AgentContext ctx, boolean waiting, int loopEnd) {
+        if (!waiting) {
+            pc = loopEnd;
+            return true;
+        }
+        return ctx.busyWaitIteration();
+    }
+}

@@ -1,0 +1,23 @@
+package masl.runtime.testing;
+
+import masl.runtime.AgentImplementation;
+
+/** The primitives of {@code Default} the tests need (masl-runtime cannot depend on the agents module). */
+public class TestAgent extends AgentImplementation {
+
+    public int getProxyID() {
+        return services().proxyId();
+    }
+
+    public void nop() {
+        // One instruction of non-zero duration and nothing else.
+    }
+
+    public void log(String message) {
+        services().log(message);
+    }
+
+    public void logln(String message) {
+        services().log(message + "\n");
+    }
+}
