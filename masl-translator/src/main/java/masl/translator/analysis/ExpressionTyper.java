@@ -2,8 +2,10 @@ package masl.translator.analysis;
 
 import java.lang.reflect.Modifier;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 import masl.grammar.MASLBaseVisitor;
 import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.ExpressionContext;
@@ -39,6 +41,7 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
     private final TypeNames typeNames;
     private final EntryNames entryNames;
     private final MemberTyper members;
+    private final Set<String> unresolvedNames = new HashSet<>();
     private Scope scope;
 
     ExpressionTyper(Bindings bindings, Errors errors, TypeNames typeNames, EntryNames entryNames, MemberTyper members) {
@@ -315,7 +318,7 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
             return MaslType.ERROR;
         }
         if (receiver instanceof Receiver.PackagePrefix prefix) {
-            errors.at(prefix.first(), "cannot find symbol " + prefix.first().getText());
+            reportUnresolved(prefix.first());
             return MaslType.ERROR;
         }
         MaslType type = ((Receiver.Value) receiver).type();
@@ -449,7 +452,7 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
             return staticMember(ofType.type(), name, false, access);
         }
         if (owner instanceof Receiver.PackagePrefix prefix) {
-            errors.at(prefix.first(), "cannot find symbol " + prefix.first().getText());
+            reportUnresolved(prefix.first());
             return MaslType.ERROR;
         }
         return instanceMember(((Receiver.Value) owner).type(), name, false, access);
@@ -508,8 +511,7 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
         } else if (receiver instanceof Receiver.OfType ofType) {
             errors.at(expression, "type " + ofType.type().describe() + " is not a value");
         } else {
-            Token first = ((Receiver.PackagePrefix) receiver).first();
-            errors.at(first, "cannot find symbol " + first.getText());
+            reportUnresolved(((Receiver.PackagePrefix) receiver).first());
         }
         return MaslType.ERROR;
     }
@@ -748,6 +750,13 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
     }
 
     // ------------------------------------------------------------------ helpers
+
+    /** An unknown name is one mistake however often it is used: reported at its first use only. */
+    private void reportUnresolved(Token name) {
+        if (unresolvedNames.add(name.getText())) {
+            errors.at(name, "cannot find symbol " + name.getText());
+        }
+    }
 
     private static List<ExpressionContext> arguments(MASLParser.ArgumentsContext arguments) {
         return arguments.expressionList() == null ? List.of() : arguments.expressionList().expression();
