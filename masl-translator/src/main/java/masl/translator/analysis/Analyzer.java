@@ -1,6 +1,7 @@
 package masl.translator.analysis;
 
 import java.util.LinkedHashSet;
+import java.util.List;
 import java.util.Map;
 import masl.grammar.MASLParser;
 import masl.runtime.descriptor.DescriptorLoader;
@@ -28,7 +29,7 @@ public final class Analyzer {
             Diagnostics diagnostics) {
         MASLParser.ProgramContext tree = parsed.tree();
         if (hasSyntaxErrors(tree)) {
-            return new AnalyzedProgram(parsed, Map.of(), java.util.List.of(), new LinkedHashSet<>(), null, new Bindings());
+            return new AnalyzedProgram(parsed, Map.of(), List.of(), new LinkedHashSet<>(), null, new Bindings());
         }
         Errors errors = new Errors(parsed.source().name(), diagnostics);
         HeaderChecker headers = new HeaderChecker(descriptors, parsed.source().folder(), parsed.tokens(), errors);

@@ -82,7 +82,9 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
     Optional<EventDecl> event(MASLParser.IdentifierContext name) {
         Optional<Symbol> symbol = scope.resolve(name.getText());
         if (symbol.isEmpty()) {
-            errors.at(name, "cannot find event " + name.getText());
+            if (unresolvedNames.add(name.getText())) {
+                errors.at(name, "cannot find event " + name.getText());
+            }
             return Optional.empty();
         }
         if (!(symbol.get() instanceof EventDecl event)) {
@@ -170,10 +172,9 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
         if (name.equals("isFinished") && arguments.size() == 1) {
             Optional<Label> label = labelNamed(arguments.get(0));
             if (label.isPresent()) {
-                bindings.type(arguments.get(0), MaslType.VOID);
                 return members.labelMember(label.get(), call.identifier().getStart(), List.of(), expressionOf(call));
             }
-            errors.at(arguments.get(0), "isFinished needs a label, found " + arguments.get(0).getText());
+            notALabel(arguments.get(0), "isFinished needs a label, found " + arguments.get(0).getText());
             return MaslType.BOOLEAN;
         }
         types(arguments);
@@ -352,7 +353,7 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
     private Optional<ImportedType> labelLaunchTarget(ExpressionContext receiver) {
         if (receiver instanceof MASLParser.LabelSelfContext labelSelf) {
             if (labelNamed(labelSelf.expression()).isEmpty()) {
-                errors.at(labelSelf.expression(), labelSelf.expression().getText() + " is not a label");
+                notALabel(labelSelf.expression(), labelSelf.expression().getText() + " is not a label");
             }
             return Optional.empty();
         }
@@ -384,6 +385,17 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
             return Optional.of(label);
         }
         return Optional.empty();
+    }
+
+    /** Reports an expression where a label should be; an undeclared name is reported as such, once. */
+    private void notALabel(ExpressionContext expression, String message) {
+        if (expression instanceof MASLParser.PrimaryExprContext primary
+                && primary.primary() instanceof MASLParser.NameExprContext name
+                && scope.resolve(name.getText()).isEmpty()) {
+            reportUnresolved(name.getStart());
+        } else {
+            errors.at(expression, message);
+        }
     }
 
     /** Resolves what stands before a {@code .}: a value, a label, an entry, a type or a package name. */
@@ -751,7 +763,7 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
 
     // ------------------------------------------------------------------ helpers
 
-    /** An unknown name is one mistake however often it is used: reported at its first use only. */
+    /** An unknown name is one mistake however often it is used: reported at its first use only (events included). */
     private void reportUnresolved(Token name) {
         if (unresolvedNames.add(name.getText())) {
             errors.at(name, "cannot find symbol " + name.getText());

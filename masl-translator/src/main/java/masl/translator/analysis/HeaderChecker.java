@@ -1,6 +1,7 @@
 package masl.translator.analysis;
 
 import java.io.UncheckedIOException;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -132,8 +133,7 @@ final class HeaderChecker {
                 && !agentsDecl.instanceType.getText().equals(agentsDecl.typeName.getText());
         if (namesAnotherType) {
             instantiated = agentType(agentsDecl.instanceType);
-            if (declared != null && instantiated != null && !instantiated.isSubtypeOf(declared)
-                    && declared.isLoaded() && instantiated.isLoaded()) {
+            if (!instantiated.isSubtypeOf(declared) && declared.isLoaded() && instantiated.isLoaded()) {
                 errors.at(agentsDecl.instanceType, instantiated.name() + " is not a subtype of " + declared.name()
                         + ": agents declared " + declared.name() + " cannot be created as " + instantiated.name());
             }
@@ -142,16 +142,22 @@ final class HeaderChecker {
             String name = agentName.getText();
             if (agents.stream().anyMatch(agent -> agent.name().equals(name))) {
                 errors.at(agentName, "agent " + name + " is already declared");
-            } else if (declared != null) {
+            } else {
                 agents.add(new AgentDecl(name, declared, instantiated, agents.size()));
             }
         }
     }
 
+    /**
+     * The type of that name. An unknown one is reported and then defined as a type whose descriptor is
+     * unknown, so that its agents exist and their uses raise no more errors.
+     */
     private ImportedType agentType(MASLParser.IdentifierContext name) {
         ImportedType type = types.get(name.getText());
         if (type == null) {
             errors.at(name, "cannot find agent type " + name.getText() + ": import its descriptor first");
+            type = new ImportedType(name.getText(), "", null, false);
+            types.put(type.name(), type);
         }
         return type;
     }
@@ -200,6 +206,9 @@ final class HeaderChecker {
                         problem.message()));
             }
             errors.at(where, "descriptor " + file + " has errors");
+            return null;
+        } catch (InvalidPathException impossiblePath) {
+            errors.at(where, "cannot find descriptor " + file);
             return null;
         } catch (UncheckedIOException unreadable) {
             errors.at(where, "cannot read descriptor " + file + ": " + unreadable.getCause().getMessage());

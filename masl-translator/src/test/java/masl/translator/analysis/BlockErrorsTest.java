@@ -117,6 +117,12 @@ class BlockErrorsTest {
     }
 
     @Test
+    void unknownEventIsReportedAtItsFirstUseOnly() {
+        analyzeBody("emit(go);\nemit(go);\nreact (go) { .logln(getMessageFromEvent(go)); }")
+                .assertError(7, 6, "cannot find event go");
+    }
+
+    @Test
     void reactionToAnUnknownEventIsReported() {
         analyzeBody("react (go) { resume; }").assertError(7, 8, "cannot find event go");
     }

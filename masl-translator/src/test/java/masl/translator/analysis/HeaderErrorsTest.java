@@ -65,8 +65,12 @@ class HeaderErrorsTest {
 
     @Test
     void agentOfAnUnknownTypeIsReportedOnce() {
-        analyze("Khepera k = newAgent(Khepera);\n")
-                .assertError(1, 1, "cannot find agent type Khepera: import its descriptor first");
+        analyze("""
+                Khepera k = newAgent(Khepera);
+                asynchronous entry main (k.getProximity(1) > 0) {
+                  shared int x limited(Khepera) = k.battery;
+                }
+                """).assertError(1, 1, "cannot find agent type Khepera: import its descriptor first");
     }
 
     @Test
