@@ -45,7 +45,8 @@ public final class Analyzer {
 
         Bindings bindings = new Bindings();
         TypeNames typeNames = new TypeNames(headers.types(), descriptors.implementationClasses());
-        EntryNames entryNames = new EntryNames(root, blockTree.blocksByName(), headers.declaredEntries().keySet(), errors);
+        EntryNames entryNames = new EntryNames(root, blockTree.blocksByName(), headers.declaredEntries().keySet(),
+                errors);
         MemberTyper members = new MemberTyper(bindings, errors, new AgentMembers(headers.types().values()), typeNames);
         ExpressionTyper typer = new ExpressionTyper(bindings, errors, typeNames, entryNames, members);
         if (root != null) {

@@ -54,8 +54,8 @@ final class BlockChecker {
         for (MASLParser.BlockItemContext item : tree.blockItem()) {
             if (item.declaration() != null) {
                 if (instructionSeen) {
-                    errors.at(item.declaration(), "declarations must come before the instructions and reactions of block "
-                            + block.name());
+                    errors.at(item.declaration(),
+                            "declarations must come before the instructions and reactions of block " + block.name());
                 }
                 declare(item.declaration());
             } else if (item.reaction() != null) {
@@ -107,7 +107,8 @@ final class BlockChecker {
             MASLParser.IdentifierContext typeName = declaration.limitedTo().typeName;
             limitedTo = typeNames.agentType(typeName.getText()).orElse(null);
             if (limitedTo == null) {
-                errors.at(typeName, "cannot find agent type " + typeName.getText() + " in limited(" + typeName.getText() + ")");
+                errors.at(typeName, "cannot find agent type " + typeName.getText() + " in limited(" + typeName.getText()
+                        + ")");
             }
         }
         MASLParser.VariableInitializerContext initializer = declaration.variableInitializer();
@@ -242,7 +243,8 @@ final class BlockChecker {
             checkJump("break", jump.jumpTarget());
         } else if (statement instanceof MASLParser.ReelectStmtContext jump) {
             checkJump("reelect", jump.jumpTarget());
-        } else if (statement instanceof MASLParser.ResumeStmtContext || statement instanceof MASLParser.ClearEventsStmtContext) {
+        } else if (statement instanceof MASLParser.ResumeStmtContext
+                || statement instanceof MASLParser.ClearEventsStmtContext) {
             if (!inReaction) {
                 errors.at(statement, statement.getStart().getText() + " can only be used in a reaction");
             }

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.StatementContext;
@@ -37,7 +38,7 @@ final class BlockTreeBuilder {
     }
 
     private Block block(MASLParser.EntryBlockContext tree, Block parent, boolean inReaction) {
-        BlockMode mode = BlockMode.valueOf(tree.blockMode().getText().toUpperCase(java.util.Locale.ROOT));
+        BlockMode mode = BlockMode.valueOf(tree.blockMode().getText().toUpperCase(Locale.ROOT));
         String name = tree.name.getText();
         if (parent != null && parent.mode() == BlockMode.SCALAR && mode != BlockMode.SCALAR) {
             errors.at(tree.blockMode(), "a " + mode.keyword() + " block cannot be nested in scalar block "

@@ -283,7 +283,8 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
 
     @Override
     public MaslType visitLabelSelf(MASLParser.LabelSelfContext labelSelf) {
-        errors.at(labelSelf, labelSelf.getText() + " must be followed by a primitive invocation or an attribute assignment");
+        errors.at(labelSelf,
+                labelSelf.getText() + " must be followed by a primitive invocation or an attribute assignment");
         return MaslType.ERROR;
     }
 
@@ -542,7 +543,8 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
                 errors.at(assignment.value, "a label assignment stores the result of a primitive invocation, "
                         + "such as .m(…) or a.m(…)");
             }
-            labelTarget.ifPresentOrElse(target -> checkAssignable(target, assignment.value), () -> type(assignment.value));
+            labelTarget.ifPresentOrElse(target -> checkAssignable(target, assignment.value),
+                    () -> type(assignment.value));
             return MaslType.VOID;
         }
         MaslType target = assignable(assignment.target);
@@ -583,8 +585,10 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
             return null;
         }
         boolean validTarget = agent.isPresent() || isLabelThis(access.expression());
-        return validTarget ? Optional.of(bindings.type(access, members.attribute(agent.orElse(null), name, true, access)))
-                : Optional.empty();
+        if (!validTarget) {
+            return Optional.empty();
+        }
+        return Optional.of(bindings.type(access, members.attribute(agent.orElse(null), name, true, access)));
     }
 
     private static boolean isInvocation(ExpressionContext value) {
@@ -593,7 +597,7 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
                         && primary.primary() instanceof MASLParser.SelfInvocationContext;
     }
 
-    /** The type of something assigned to (by {@code =}, {@code op=}, {@code ++}, {@code --}); reports what cannot be. */
+    /** The type of what is assigned to (by {@code =}, {@code op=}, {@code ++}, {@code --}); reports what cannot be. */
     private MaslType assignable(ExpressionContext target) {
         MaslType type;
         if (target instanceof MASLParser.PrimaryExprContext primary

@@ -125,7 +125,8 @@ final class JavaMembers {
         for (int i = 0; i < Math.min(parameters.length, arguments.size()); i++) {
             MaslType argument = arguments.get(i);
             boolean primitiveArgument = argument instanceof MaslType.JavaPrimitive;
-            if (!TypeRules.isOpen(argument) && argument != MaslType.NULL && primitiveArgument != parameters[i].isPrimitive()) {
+            boolean boxes = primitiveArgument != parameters[i].isPrimitive();
+            if (!TypeRules.isOpen(argument) && argument != MaslType.NULL && boxes) {
                 return false;
             }
         }

@@ -105,8 +105,9 @@ final class MemberTyper {
         bindings.bind(access, new Member(Member.Kind.ENTRY_MEMBER, name.getText(), List.of(), null));
         boolean isCall = arguments != null;
         if (isCall != member.isCall()) {
-            errors.at(name, member.isCall() ? name.getText() + " is a method: write " + entry.name() + "."
-                    + name.getText() + "()" : name.getText() + " is not a method: write " + entry.name() + "." + name.getText());
+            String written = entry.name() + "." + name.getText();
+            errors.at(name, member.isCall() ? name.getText() + " is a method: write " + written + "()"
+                    : name.getText() + " is not a method: write " + written);
         } else if (isCall && !acceptsEntryArguments(name.getText(), arguments)) {
             errors.at(name, name.getText().equals("release")
                     ? "release takes no argument or one number of agents"

@@ -1,6 +1,7 @@
 package masl.translator.analysis;
 
 import java.util.Optional;
+import java.util.function.Predicate;
 
 /**
  * The result types of Java's operators on MASL types, relaxed as MASL §3 says: {@code !}, {@code &&} and
@@ -29,8 +30,7 @@ final class OperatorTyper {
             case "&", "|", "^" -> bitwise(left, right);
             case "&&", "||" -> bothFit(left, right, TypeRules::isCondition) ? Optional.of(MaslType.BOOLEAN)
                     : Optional.empty();
-            case "<<", ">>", ">>>" -> bothFit(left, right, TypeRules::isIntegral)
-                    ? Optional.of(TypeRules.isOpen(left) ? MaslType.OBJECT : TypeRules.promote(left)) : Optional.empty();
+            case "<<", ">>", ">>>" -> shift(left, right);
             default -> Optional.empty();
         };
     }
@@ -101,7 +101,14 @@ final class OperatorTyper {
         return Optional.empty();
     }
 
-    private static boolean bothFit(MaslType left, MaslType right, java.util.function.Predicate<MaslType> rule) {
+    private static Optional<MaslType> shift(MaslType left, MaslType right) {
+        if (!bothFit(left, right, TypeRules::isIntegral)) {
+            return Optional.empty();
+        }
+        return Optional.of(TypeRules.isOpen(left) ? MaslType.OBJECT : TypeRules.promote(left));
+    }
+
+    private static boolean bothFit(MaslType left, MaslType right, Predicate<MaslType> rule) {
         return (TypeRules.isOpen(left) || rule.test(left)) && (TypeRules.isOpen(right) || rule.test(right));
     }
 }

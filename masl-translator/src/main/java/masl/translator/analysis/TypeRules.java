@@ -108,7 +108,8 @@ final class TypeRules {
             return true;
         }
         if (source instanceof MaslType.JavaPrimitive primitive) {
-            return target instanceof MaslType.JavaClass javaClass && javaClass.type().isAssignableFrom(primitive.boxed());
+            return target instanceof MaslType.JavaClass javaClass
+                    && javaClass.type().isAssignableFrom(primitive.boxed());
         }
         if (target instanceof MaslType.JavaClass targetClass && source instanceof MaslType.JavaClass sourceClass) {
             return targetClass.type().isAssignableFrom(sourceClass.type());
@@ -161,7 +162,8 @@ final class TypeRules {
 
     /** Whether {@code (target) value} can succeed for some value of type {@code source}. */
     static boolean isCastable(MaslType target, MaslType source) {
-        if (isOpen(source) || isError(target) || source == MaslType.NULL && !(target instanceof MaslType.JavaPrimitive)) {
+        boolean nullToReference = source == MaslType.NULL && !(target instanceof MaslType.JavaPrimitive);
+        if (isOpen(source) || isError(target) || nullToReference) {
             return true;
         }
         if (isNumeric(target) && isNumeric(source) || isBoolean(target) && isBoolean(source)) {

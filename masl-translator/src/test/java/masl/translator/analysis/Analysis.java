@@ -54,7 +54,10 @@ final class Analysis {
         return new Result(program, diagnostics.sorted());
     }
 
-    /** A program with the usual headers and {@code body} as the body of {@code asynchronous entry main}; {@code body} starts on line 7, column 1. */
+    /**
+     * A program with the usual headers and {@code body} as the body of {@code asynchronous entry main}:
+     * {@code body} starts on line 7, column 1.
+     */
     static Result analyzeBody(String body) {
         return analyze(HEADERS + "asynchronous entry main (true) {\n" + body + "\n}\n");
     }

@@ -66,7 +66,8 @@ class BlockErrorsTest {
     @Test
     void nonScalarBlockInsideAScalarBlockIsReported() {
         analyzeBody("scalar entry s (true) { scalar entry t (true) { } synchronous entry u (true) { } }")
-                .assertError(7, 51, "a synchronous block cannot be nested in scalar block s: only scalar blocks may be");
+                .assertError(7, 51,
+                        "a synchronous block cannot be nested in scalar block s: only scalar blocks may be");
     }
 
     @Test
@@ -108,7 +109,8 @@ class BlockErrorsTest {
 
     @Test
     void emitOfAnEventNotInScopeIsReported() {
-        analyzeBody("asynchronous entry a (true) { local event go; }\nemit(go);").assertError(8, 6, "cannot find event go");
+        analyzeBody("asynchronous entry a (true) { local event go; }\nemit(go);")
+                .assertError(8, 6, "cannot find event go");
     }
 
     @Test

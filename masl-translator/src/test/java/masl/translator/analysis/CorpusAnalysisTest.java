@@ -27,7 +27,8 @@ class CorpusAnalysisTest {
     @ParameterizedTest
     @MethodSource("corpus")
     void analysesWithoutError(Path program) throws IOException {
-        SourceFile source = new SourceFile(program.getFileName().toString(), Analysis.FIXTURES, Files.readString(program));
+        String name = program.getFileName().toString();
+        SourceFile source = new SourceFile(name, Analysis.FIXTURES, Files.readString(program));
         Analysis.Result result = Analysis.analyze(source);
         result.assertNoError();
         assertFalse(result.program().agents().isEmpty());

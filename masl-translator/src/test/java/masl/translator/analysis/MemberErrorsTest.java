@@ -32,7 +32,8 @@ class MemberErrorsTest {
     @Test
     void primitiveWithAnArgumentOfTheWrongTypeIsReported() {
         analyzeBody("k.setSpeeds(1, \"fast\");")
-                .assertError(7, 16, "argument 2 of primitive void setSpeeds(double, double) must be double, found String");
+                .assertError(7, 16,
+                        "argument 2 of primitive void setSpeeds(double, double) must be double, found String");
     }
 
     @Test
@@ -79,7 +80,8 @@ class MemberErrorsTest {
 
     @Test
     void unknownStaticMethodIsReported() {
-        analyzeBody("local int m = Math.maximum(1, 2);").assertError(7, 20, "cannot find method maximum(int, int) in class Math");
+        analyzeBody("local int m = Math.maximum(1, 2);")
+                .assertError(7, 20, "cannot find method maximum(int, int) in class Math");
     }
 
     @Test
@@ -91,12 +93,14 @@ class MemberErrorsTest {
 
     @Test
     void entryMethodWrittenWithoutParenthesesIsReported() {
-        analyzeBody("local int n = main.getActiveCount;").assertError(7, 20, "getActiveCount is a method: write main.getActiveCount()");
+        analyzeBody("local int n = main.getActiveCount;")
+                .assertError(7, 20, "getActiveCount is a method: write main.getActiveCount()");
     }
 
     @Test
     void entryListsHoldAgents() {
-        analyzeBody("local Khepera[] team = main.getList();\nmain.release(2);\nteam[0].startGripper();").assertNoError();
+        analyzeBody("local Khepera[] team = main.getList();\nmain.release(2);\nteam[0].startGripper();")
+                .assertNoError();
     }
 
     @Test
@@ -117,12 +121,14 @@ class MemberErrorsTest {
 
     @Test
     void labelAssignmentMustStoreIntoAVariableInScope() {
-        analyzeBody("LLabel l;\nl.y = .getProximity(1);").assertError(8, 3, "in l.y = …, y must be a variable in scope");
+        analyzeBody("LLabel l;\nl.y = .getProximity(1);")
+                .assertError(8, 3, "in l.y = …, y must be a variable in scope");
     }
 
     @Test
     void labelLaunchMustTargetAnAgentOrThis() {
-        analyzeBody("LLabel l;\nlocal int z;\nl.z.startGripper();").assertError(9, 3, "in l.z.…, z must be an agent or this");
+        analyzeBody("LLabel l;\nlocal int z;\nl.z.startGripper();")
+                .assertError(9, 3, "in l.z.…, z must be an agent or this");
     }
 
     @Test
@@ -133,7 +139,8 @@ class MemberErrorsTest {
     @Test
     void labelAssignmentStoresTheResultOfAnInvocation() {
         analyzeBody("LLabel l;\nlocal int x;\nl.x = 3;")
-                .assertError(9, 7, "a label assignment stores the result of a primitive invocation, such as .m(…) or a.m(…)");
+                .assertError(9, 7,
+                        "a label assignment stores the result of a primitive invocation, such as .m(…) or a.m(…)");
     }
 
     @Test

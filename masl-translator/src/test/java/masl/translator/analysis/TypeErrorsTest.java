@@ -10,7 +10,8 @@ class TypeErrorsTest {
 
     @Test
     void stringCannotBeAssignedToAnInt() {
-        analyzeBody("local int x = \"five\";").assertError(7, 15, "incompatible types: String cannot be converted to int");
+        analyzeBody("local int x = \"five\";")
+                .assertError(7, 15, "incompatible types: String cannot be converted to int");
     }
 
     @Test
@@ -25,7 +26,8 @@ class TypeErrorsTest {
 
     @Test
     void conditionOfTypeStringIsReported() {
-        analyzeBody("if (\"yes\") .nop();").assertError(7, 5, "the condition of if must be boolean or numeric, found String");
+        analyzeBody("if (\"yes\") .nop();")
+                .assertError(7, 5, "the condition of if must be boolean or numeric, found String");
     }
 
     @Test
@@ -36,8 +38,11 @@ class TypeErrorsTest {
 
     @Test
     void numericConditionsAndNotOnNumbersAreFine() {
-        analyzeBody("local int n = 1;\nwhile (n) { exit; }\nif (!n && .getProximity(0)) .nop();\nasynchronous entry a (n % 2) { }")
-                .assertNoError();
+        analyzeBody("""
+                local int n = 1;
+                while (n) { exit; }
+                if (!n && .getProximity(0)) .nop();
+                asynchronous entry a (n % 2) { }""").assertNoError();
     }
 
     @Test
@@ -47,7 +52,8 @@ class TypeErrorsTest {
 
     @Test
     void objectValuesAreTypedAtRunTime() {
-        analyzeBody("local Object o = \"x\";\nlocal int n = o;\nlocal Khepera kk = o;\nn = o.hashCode() + 1;").assertNoError();
+        analyzeBody("local Object o = \"x\";\nlocal int n = o;\nlocal Khepera kk = o;\nn = o.hashCode() + 1;")
+                .assertNoError();
     }
 
     @Test
@@ -62,7 +68,8 @@ class TypeErrorsTest {
 
     @Test
     void agentOfAnotherTypeCannotBeAssigned() {
-        analyzeBody("local Khepera kk = d;").assertError(7, 20, "incompatible types: Default cannot be converted to Khepera");
+        analyzeBody("local Khepera kk = d;")
+                .assertError(7, 20, "incompatible types: Default cannot be converted to Khepera");
     }
 
     @Test
@@ -97,6 +104,7 @@ class TypeErrorsTest {
 
     @Test
     void arrayIndexMustBeAnInteger() {
-        analyzeBody("local int[] a = {1, 2};\nlocal int x = a[1.5];").assertError(8, 17, "an array index must be an integer, found double");
+        analyzeBody("local int[] a = {1, 2};\nlocal int x = a[1.5];")
+                .assertError(8, 17, "an array index must be an integer, found double");
     }
 }

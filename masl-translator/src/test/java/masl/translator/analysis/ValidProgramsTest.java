@@ -24,7 +24,8 @@ class ValidProgramsTest {
         "local boolean b = true;\nlocal Khepera other = b ? k : null;",
         "local int x = 0;\nx = x > 0 ? x : -x;\nx <<= 2;\nx = (int) (x * 1.5);",
         "local String s = \"ab\";\nif (s.equals(\"x\") || s.length() > 0 && s.charAt(0) == 'a') .logln(s);",
-        "local java.util.Vector<Integer> seen = new java.util.Vector<Integer>();\nlocal int first = seen.get(0) + seen.size();",
+        "local java.util.Vector<Integer> seen = new java.util.Vector<Integer>();\n"
+            + "local int first = seen.get(0) + seen.size();",
         "local Vector2d p = new Vector2d();\np.x = 3;\np = .position();",
         ".logln(Khepera.MAX_SPEED + k.MAX_SPEED + .MAX_SPEED + this.battery + Thread.currentThread().getName());",
         "local String state = getAcceptState(main.getList()[0]);\nmain.release(main.getWaitingInCount());",
