@@ -41,10 +41,6 @@ public final class Block {
         return parent;
     }
 
-    public boolean isRoot() {
-        return parent == null;
-    }
-
     /** 1 for the top-level block, 2 for its children, … */
     public int depth() {
         return parent == null ? 1 : parent.depth() + 1;
@@ -79,16 +75,6 @@ public final class Block {
     /** In source order, which is their priority (§8). */
     public List<Reaction> reactions() {
         return Collections.unmodifiableList(reactions);
-    }
-
-    /** Whether {@code other} is this block or one that encloses it. */
-    public boolean isWithin(Block other) {
-        for (Block block = this; block != null; block = block.parent) {
-            if (block == other) {
-                return true;
-            }
-        }
-        return false;
     }
 
     void addSequence(ESequence sequence) {

@@ -8,32 +8,38 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.stream.Stream;
 import masl.translator.source.SourceFile;
-import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * The analysis never throws on a program that parsed: it is run on every corpus program with each of its
- * lines removed in turn, which leaves programs with undeclared names, missing blocks, broken headers, ….
+ * lines blanked in turn, which leaves programs with undeclared names, missing blocks, broken headers, ….
  */
 class RobustnessTest {
 
-    private static final Path PROGRAM = Path.of("..", "masl-grammar", "src", "test", "resources", "corpus",
-            "every-production.masl");
+    static Stream<Path> corpus() throws IOException {
+        return CorpusAnalysisTest.corpus();
+    }
 
-    @Test
-    void everyProgramWithOneLineRemovedIsAnalysedWithoutException() throws IOException {
-        List<String> lines = Files.readAllLines(PROGRAM);
-        int analysedWithErrors = 0;
-        for (int removed = 0; removed < lines.size(); removed++) {
+    @ParameterizedTest
+    @MethodSource("corpus")
+    void programWithAnyOneLineBlankedIsAnalysedWithoutException(Path program) throws IOException {
+        List<String> lines = Files.readAllLines(program);
+        int semanticallyWrong = 0;
+        for (int blanked = 0; blanked < lines.size(); blanked++) {
             List<String> mutilated = new ArrayList<>(lines);
-            mutilated.set(removed, "");
-            SourceFile source = new SourceFile("line-" + (removed + 1) + ".masl", Analysis.FIXTURES,
+            mutilated.set(blanked, "");
+            SourceFile source = new SourceFile("line-" + (blanked + 1) + ".masl", Analysis.FIXTURES,
                     String.join("\n", mutilated));
             Analysis.Result result = assertDoesNotThrow(() -> Analysis.analyze(source), source.name());
-            if (!result.diagnostics().isEmpty()) {
-                analysedWithErrors++;
+            boolean analysed = !result.program().types().isEmpty();
+            if (analysed && !result.diagnostics().isEmpty()) {
+                semanticallyWrong++;
             }
         }
-        assertTrue(analysedWithErrors >= 10, "removing a declaration line breaks the program: " + analysedWithErrors);
+        // Blanking the first import leaves a program the analysis rejects: the mutants do reach the analysis.
+        assertTrue(semanticallyWrong > 0, program.toString());
     }
 }
