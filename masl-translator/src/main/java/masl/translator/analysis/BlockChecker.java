@@ -321,10 +321,14 @@ final class BlockChecker {
         }
     }
 
-    /** An integer literal's value; one too large for an int counts as more than any nesting. */
+    /** An integer literal's value (decimal, octal, hex or binary); one too large for an int exceeds any nesting. */
     private static int count(String literal) {
+        String digits = literal.replace("_", "").replaceAll("[lL]$", "");
         try {
-            return Integer.decode(literal.replace("_", "").replaceAll("[lL]$", ""));
+            if (digits.startsWith("0b") || digits.startsWith("0B")) {
+                return Integer.parseInt(digits.substring(2), 2);
+            }
+            return Integer.decode(digits);
         } catch (NumberFormatException tooLarge) {
             return Integer.MAX_VALUE;
         }

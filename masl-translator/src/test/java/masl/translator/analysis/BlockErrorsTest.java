@@ -42,6 +42,12 @@ class BlockErrorsTest {
     }
 
     @Test
+    void jumpCountsAreReadAsJavaIntegerLiterals() {
+        analyzeBody("asynchronous entry a (true) { break(0b10); reelect(0x2); break(0b11); }")
+                .assertError(7, 64, "break(0b11) leaves 0b11 blocks but only 2 enclose it");
+    }
+
+    @Test
     void exitOutsideALoopIsReported() {
         analyzeBody("exit;").assertError(7, 1, "exit outside a loop");
     }

@@ -146,8 +146,33 @@ class ModelTest {
         assertEquals("String", program.typeOf(concatenation).describe());
     }
 
+    @Test
+    void programWithSyntaxErrorsIsNotAnalysed() {
+        Analysis.Result broken = Analysis.analyze("import Default.xml;\nasynchronous entry main (true) { foo = ; }\n");
+        broken.assertError(2, 40, "unexpected ';'");
+        assertNull(broken.program().root());
+        assertTrue(broken.program().types().isEmpty());
+    }
+
+    @Test
+    void javaMethodsAreBoundToTheReflectedMethod() throws NoSuchMethodException {
+        Analysis.Result result = Analysis.analyzeBody("local double m = Math.max(1, 2.5);");
+        MASLParser.MethodCallContext call =
+                find(result.program(), MASLParser.MethodCallContext.class, "Math.max(1,2.5)");
+        Member member = (Member) result.program().symbolOf(call).orElseThrow();
+        assertEquals(Member.Kind.JAVA_METHOD, member.kind());
+        assertEquals(Math.class.getMethod("max", double.class, double.class), member.javaMember());
+        assertEquals(MaslType.DOUBLE, result.program().typeOf(call));
+        TypeRef math = assertInstanceOf(TypeRef.class, result.program().symbolOf(call.expression()).orElseThrow());
+        assertEquals(new MaslType.JavaClass(Math.class), math.type());
+    }
+
     private <T extends ParserRuleContext> T find(Class<T> kind, String text) {
-        T found = find(program.parsed().tree(), kind, text);
+        return find(program, kind, text);
+    }
+
+    private static <T extends ParserRuleContext> T find(AnalyzedProgram analyzed, Class<T> kind, String text) {
+        T found = find(analyzed.parsed().tree(), kind, text);
         assertNotNull(found, "no " + kind.getSimpleName() + " " + text);
         return found;
     }
