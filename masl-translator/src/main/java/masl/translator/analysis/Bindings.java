@@ -23,7 +23,10 @@ public final class Bindings {
         return Optional.ofNullable(symbols.get(tree));
     }
 
-    /** The static type of an expression node; {@link MaslType#ERROR} when it was not typed (an error was reported). */
+    /**
+     * The static type of an expression node; {@link MaslType#ERROR} when it has none: an error was reported
+     * in it, or it is not a value (a label, an entry or a type name before a {@code .}).
+     */
     public MaslType typeOf(ParserRuleContext expression) {
         return types.getOrDefault(expression, MaslType.ERROR);
     }
