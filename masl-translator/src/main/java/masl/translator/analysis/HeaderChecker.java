@@ -116,12 +116,19 @@ final class HeaderChecker {
                 typeDecl.typeName.getStart());
     }
 
-    /** §3: the same name twice is fine when it names the same file; the first definition stays. */
+    /**
+     * §3: the same name twice is fine when it names the same file (written alike, or found at the same
+     * place: the loader gives one type per location); the first definition stays.
+     */
     private void define(ImportedType type, Token where) {
         ImportedType existing = types.get(type.name());
         if (existing == null) {
             types.put(type.name(), type);
-        } else if (!existing.file().equals(type.file())) {
+            return;
+        }
+        boolean sameFile = existing.file().equals(type.file())
+                || existing.isLoaded() && existing.descriptor() == type.descriptor();
+        if (!sameFile) {
             errors.at(where, "agent type " + type.name() + " is already defined by " + existing.file());
         }
     }

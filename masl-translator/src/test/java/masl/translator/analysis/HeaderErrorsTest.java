@@ -111,6 +111,7 @@ class HeaderErrorsTest {
     void sameTypeImportedTwiceFromTheSameFileIsFine() {
         analyze("import Default.xml;\ntype Default use Default.xml;\nDefault a = newAgent(Default);\n")
                 .assertNoError();
+        analyze("import robots/Khepera.xml;\nimport robots/../robots/Khepera.xml;\n").assertNoError();
     }
 
     @Test
