@@ -2,6 +2,8 @@ package masl.translator.analysis;
 
 import static masl.translator.analysis.Analysis.analyze;
 import static masl.translator.analysis.Analysis.analyzeBody;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
 
 import org.junit.jupiter.api.Test;
 
@@ -96,7 +98,7 @@ class BlockErrorsTest {
     @Test
     void agentAndSystemEventNamesCannotBeRedeclared() {
         Analysis.Result result = analyzeBody("local int k;\nlocal event timeout;");
-        org.junit.jupiter.api.Assertions.assertEquals("""
+        assertEquals("""
                 test.masl:7:11: error: k is already declared as an agent
                 test.masl:8:13: error: timeout is already declared as a system event""", result.rendered());
     }
@@ -164,7 +166,7 @@ class BlockErrorsTest {
     @Test
     void threeUnrelatedErrorsAreAllReported() {
         Analysis.Result result = analyzeBody("exit;\nresume;\nlocal int x = 0;");
-        org.junit.jupiter.api.Assertions.assertEquals("""
+        assertEquals("""
                 test.masl:7:1: error: exit outside a loop
                 test.masl:8:1: error: resume can only be used in a reaction
                 test.masl:9:1: error: declarations must come before the instructions and reactions of block main""",
@@ -172,9 +174,25 @@ class BlockErrorsTest {
     }
 
     @Test
+    void errorsOfDifferentKindsAreAllReported() {
+        Analysis.Result result = analyze("""
+                import robots/Nope.xml;
+                import Default.xml;
+                Default a = newAgent(Default);
+                asynchronous entry main ("x") {
+                  resume;
+                }
+                """);
+        assertEquals("""
+                test.masl:1:8: error: cannot find descriptor robots/Nope.xml
+                test.masl:4:26: error: the test of entry main must be boolean or numeric, found String
+                test.masl:5:3: error: resume can only be used in a reaction""", result.rendered());
+    }
+
+    @Test
     void programWithoutBlockOnlyCreatesAgents() {
         Analysis.Result result = analyze(Analysis.HEADERS);
         result.assertNoError();
-        org.junit.jupiter.api.Assertions.assertNull(result.program().root());
+        assertNull(result.program().root());
     }
 }
