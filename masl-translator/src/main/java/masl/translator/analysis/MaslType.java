@@ -1,6 +1,7 @@
 package masl.translator.analysis;
 
 import java.util.Map;
+import masl.runtime.descriptor.DescriptorLoader;
 
 /**
  * The static type of a MASL expression or variable: Java's types plus agent types. {@link #ERROR}
@@ -28,6 +29,13 @@ public sealed interface MaslType {
     /** The type as a user writes it, for messages: {@code int}, {@code String}, {@code Khepera[]}. */
     String describe();
 
+    /**
+     * The type in Java source: {@code int}, {@code java.lang.String}, {@code java.util.Map.Entry[]}; an agent
+     * type is its implementation class (the root type's for any agent, {@code Object} when its descriptor
+     * could not be loaded). {@code Object} for {@link #NULL} and {@link #ERROR}.
+     */
+    String javaName();
+
     /** The Java type of a class object, primitives included. */
     static MaslType of(Class<?> type) {
         if (type.isArray()) {
@@ -51,6 +59,11 @@ public sealed interface MaslType {
         public String describe() {
             return type.getName();
         }
+
+        @Override
+        public String javaName() {
+            return type.getName();
+        }
     }
 
     /** A Java class or interface, found by reflection ({@code String}, {@code java.util.Vector}, …). */
@@ -60,6 +73,11 @@ public sealed interface MaslType {
             String name = type.getName();
             return name.startsWith("java.lang.") && name.indexOf('.', 10) < 0 ? type.getSimpleName() : name;
         }
+
+        @Override
+        public String javaName() {
+            return type.getCanonicalName() != null ? type.getCanonicalName() : type.getName();
+        }
     }
 
     /** An agent of an imported type (or of its subtypes); {@code type} is null for any agent. */
@@ -68,12 +86,25 @@ public sealed interface MaslType {
         public String describe() {
             return type == null ? "agent" : type.name();
         }
+
+        @Override
+        public String javaName() {
+            if (type == null) {
+                return DescriptorLoader.ROOT_TYPE;
+            }
+            return type.isLoaded() ? type.descriptor().fullClassName() : Object.class.getName();
+        }
     }
 
     record ArrayOf(MaslType element) implements MaslType {
         @Override
         public String describe() {
             return element.describe() + "[]";
+        }
+
+        @Override
+        public String javaName() {
+            return element.javaName() + "[]";
         }
     }
 
@@ -83,6 +114,11 @@ public sealed interface MaslType {
         @Override
         public String describe() {
             return this == NULL ? "null" : "<error>";
+        }
+
+        @Override
+        public String javaName() {
+            return Object.class.getName();
         }
     }
 }

@@ -107,6 +107,16 @@ class ModelTest {
     }
 
     @Test
+    void typesHaveTheirJavaSpelling() {
+        assertEquals("int", MaslType.INT.javaName());
+        assertEquals("java.lang.String[]", new MaslType.ArrayOf(MaslType.STRING).javaName());
+        assertEquals("java.util.Map.Entry", new MaslType.JavaClass(java.util.Map.Entry.class).javaName());
+        assertEquals("masl.translator.analysis.fixtures.Khepera",
+                new MaslType.AgentRef(program.types().get("K")).javaName());
+        assertEquals("masl.agents.Default", MaslType.ANY_AGENT.javaName());
+    }
+
+    @Test
     void reactionsInSourceOrder() {
         List<Reaction> reactions = program.root().reactions();
         assertEquals(2, reactions.size());
