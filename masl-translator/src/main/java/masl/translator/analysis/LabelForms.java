@@ -44,11 +44,17 @@ final class LabelForms {
         }
         if (receiver instanceof MASLParser.FieldAccessContext access
                 && names.labelNamed(access.expression()).isPresent()) {
-            Optional<Symbol> target = names.resolve(access.identifier().getText());
-            if (target.isPresent() && target.get() instanceof AgentDecl agent) {
+            Symbol target = names.resolve(access.identifier().getText()).orElse(null);
+            if (target instanceof AgentDecl agent) {
                 bindings.bind(access, agent);
                 bindings.type(access, new MaslType.AgentRef(agent.declaredType()));
                 return Optional.of(new Addressee(agent.declaredType(), true));
+            }
+            // A variable holding an agent (an element of an entry list, say) addresses that agent.
+            if (target instanceof Variable variable && variable.type() instanceof MaslType.AgentRef agentType) {
+                bindings.bind(access, variable);
+                bindings.type(access, agentType);
+                return Optional.of(new Addressee(agentType.type(), true));
             }
             errors.at(access.identifier(), "in " + access.getText() + ".…, " + access.identifier().getText()
                     + " must be an agent or this");

@@ -148,6 +148,8 @@ class MemberErrorsTest {
         analyzeBody("""
                 LLabel l;
                 local int x;
+                local Khepera member = main.getList()[0];
+                l.member.startGripper();
                 l.k.startGripper();
                 l.this.startGripper();
                 l.startGripper();
