@@ -1,0 +1,64 @@
+package masl.translator.analysis;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.List;
+import java.util.Optional;
+import masl.runtime.descriptor.Attribute;
+import masl.runtime.descriptor.Primitive;
+
+/**
+ * The primitives and attributes of the imported agent types, by name. A member may be used on any
+ * agent as soon as one imported type has it (MASL §4: on agents of other types the statement is a nop),
+ * so a lookup returns every type's declaration of the name, the receiver's own type first.
+ */
+final class AgentMembers {
+
+    /** One type's declaration of a member. */
+    record Declared<M>(ImportedType owner, M member) { }
+
+    private final Collection<ImportedType> types;
+
+    AgentMembers(Collection<ImportedType> types) {
+        this.types = types;
+    }
+
+    /**
+     * @param receiver the receiver's type, or null when unknown (the current agent, an entry list element)
+     */
+    List<Declared<Primitive>> primitives(String name, ImportedType receiver) {
+        List<Declared<Primitive>> found = new ArrayList<>();
+        for (ImportedType type : ordered(receiver)) {
+            type.descriptor().findPrimitive(name).ifPresent(primitive -> found.add(new Declared<>(type, primitive)));
+        }
+        return found;
+    }
+
+    List<Declared<Attribute>> attributes(String name, ImportedType receiver) {
+        List<Declared<Attribute>> found = new ArrayList<>();
+        for (ImportedType type : ordered(receiver)) {
+            type.descriptor().findAttribute(name).ifPresent(attribute -> found.add(new Declared<>(type, attribute)));
+        }
+        return found;
+    }
+
+    /** Whether some imported type could not be loaded: then any member might be one of its, unknown. */
+    boolean someTypeUnknown() {
+        return types.stream().anyMatch(type -> !type.isLoaded());
+    }
+
+    private List<ImportedType> ordered(ImportedType receiver) {
+        List<ImportedType> ordered = new ArrayList<>();
+        Optional.ofNullable(receiver).filter(ImportedType::isLoaded).ifPresent(ordered::add);
+        for (ImportedType type : types) {
+            if (type.isLoaded() && !ordered.contains(type)) {
+                ordered.add(type);
+            }
+        }
+        return ordered;
+    }
+
+    static List<ImportedType> owners(List<? extends Declared<?>> declarations) {
+        return declarations.stream().map(Declared::owner).distinct().toList();
+    }
+}

@@ -1,0 +1,35 @@
+package masl.translator.analysis;
+
+import masl.runtime.descriptor.AgentType;
+
+/**
+ * An agent type as the program names it (MASL §4): {@code import F as Name;} or {@code type Name use F;}.
+ * Two {@code ImportedType}s may share a descriptor ({@code type OtherDefault use Default.xml;}) and are
+ * still distinct types. {@code descriptor} is null when the descriptor could not be loaded: the name
+ * stays known so that its uses raise no further error.
+ *
+ * @param name the MASL name
+ * @param file the descriptor file as written in the program
+ * @param descriptor the loaded type, or null when loading failed (already reported)
+ * @param definedByType whether it comes from {@code type Name use F;}, which makes a type of its own
+ */
+public record ImportedType(String name, String file, AgentType descriptor, boolean definedByType) {
+
+    public boolean isLoaded() {
+        return descriptor != null;
+    }
+
+    /**
+     * Whether agents of this type are agents of {@code other}. A type made by {@code type … use} is a
+     * subtype of nothing but itself and has no subtypes: it exists to be told apart.
+     */
+    public boolean isSubtypeOf(ImportedType other) {
+        if (this.equals(other)) {
+            return true;
+        }
+        if (!isLoaded() || !other.isLoaded() || definedByType || other.definedByType) {
+            return false;
+        }
+        return descriptor.isSubtypeOf(other.descriptor);
+    }
+}
