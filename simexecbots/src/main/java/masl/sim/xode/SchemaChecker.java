@@ -17,12 +17,14 @@ final class SchemaChecker {
         this.problems = problems;
     }
 
-    void check(XodeElement root) {
+    /** @return false when the root is not {@code <xode>}, in which case nothing else is worth reading */
+    boolean check(XodeElement root) {
         if (!root.name().equals("xode")) {
             problems.error(root, "the root element must be <xode>, found <" + root.name() + ">");
-            return;
+            return false;
         }
         checkElement(root);
+        return true;
     }
 
     private void checkElement(XodeElement element) {

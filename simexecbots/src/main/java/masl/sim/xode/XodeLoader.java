@@ -42,7 +42,9 @@ public final class XodeLoader {
         Problems problems = new Problems(options.strict());
         SceneSpec scene;
         try {
-            new SchemaChecker(problems).check(root);
+            if (!new SchemaChecker(problems).check(root)) {
+                problems.throwIfErrors();
+            }
             scene = new SceneReader(problems, options, safePrefix).read(root);
         } catch (RuntimeException e) {
             // A reader bug must still reach the user as a located message, never as a stack trace.
