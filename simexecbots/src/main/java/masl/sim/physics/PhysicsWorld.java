@@ -14,6 +14,7 @@ import java.util.function.Supplier;
 import masl.sim.xode.LoadTarget;
 import masl.sim.xode.LoadedModel;
 import masl.sim.xode.OdeRuntime;
+import masl.sim.xode.Pose;
 import masl.sim.xode.XodeException;
 import masl.sim.xode.XodeLoader;
 import masl.sim.xode.XodeSource;
@@ -59,7 +60,7 @@ public final class PhysicsWorld implements AutoCloseable {
     private final XodeLoader loader;
     private final Map<String, DBody> bodies = new HashMap<>();
     private final Map<String, DJoint> joints = new HashMap<>();
-    private final Set<String> prefixes = new HashSet<>();
+    private final Set<String> names = new HashSet<>();
     private volatile long steps;
     private volatile boolean running;
     private volatile Throwable failure;
@@ -92,23 +93,28 @@ public final class PhysicsWorld implements AutoCloseable {
     /**
      * Loads an XODE document into this world, its names prefixed (e.g. {@code "khepera0."}).
      *
-     * @throws IllegalArgumentException when the prefix was used before or a name clashes with a loaded
-     *                                  one (the clashing document's objects then stay in the world, unnamed)
-     * @throws XodeException            when the document has errors; nothing is added then
+     * @throws XodeException when the document has errors, a (prefixed) name already loaded among
+     *                       them; nothing is added then
      */
     public LoadedModel load(XodeSource source, String prefix) throws XodeException {
+        return load(source, prefix, Pose.identity());
+    }
+
+    /**
+     * Like {@link #load(XodeSource, String)}, with the document's root placed at {@code placement}
+     * (a robot's initial pose).
+     */
+    public LoadedModel load(XodeSource source, String prefix, Pose placement) throws XodeException {
         lock.lock();
         try {
             checkOpen();
-            if (prefixes.contains(prefix)) {
-                throw new IllegalArgumentException("prefix '" + prefix + "' is already used in this world");
-            }
-            LoadedModel model = loader.load(source, prefix, LoadTarget.into(world, space));
-            checkNewNames(model.bodies(), bodies, "body");
-            checkNewNames(model.joints(), joints, "joint");
-            prefixes.add(prefix);
+            LoadedModel model = loader.load(source, prefix,
+                    LoadTarget.into(world, space).placedAt(placement).excludingNames(names));
             bodies.putAll(model.bodies());
             joints.putAll(model.joints());
+            names.addAll(model.bodies().keySet());
+            names.addAll(model.joints().keySet());
+            names.addAll(model.geoms().keySet());
             return model;
         } finally {
             lock.unlock();
@@ -248,6 +254,11 @@ public final class PhysicsWorld implements AutoCloseable {
         });
     }
 
+    /** The names of all loaded bodies (a copy). */
+    public Set<String> bodyNames() {
+        return withLock(() -> Set.copyOf(bodies.keySet()));
+    }
+
     /** A joint's first-axis position (angle in radians; slider: metres) between steps. */
     public double jointPosition(String jointName) {
         return withLock(() -> JointMotors.position(lookup(joints, jointName, "joint")));
@@ -344,15 +355,6 @@ public final class PhysicsWorld implements AutoCloseable {
     private void checkOpen() {
         if (closed) {
             throw new IllegalStateException("the physics world is closed");
-        }
-    }
-
-    /** A clash is only possible with prefixes nested in each other, such as "a." and "a.b.". */
-    private static <T> void checkNewNames(Map<String, T> loaded, Map<String, T> all, String kind) {
-        for (String name : loaded.keySet()) {
-            if (all.containsKey(name)) {
-                throw new IllegalArgumentException("a " + kind + " named '" + name + "' is already loaded");
-            }
         }
     }
 

@@ -18,11 +18,14 @@ final class JointReader {
     private final Problems problems;
     private final Attributes attributes;
     private final String prefix;
+    private final Pose root;
 
-    JointReader(Problems problems, Attributes attributes, String prefix) {
+    /** @param root the frame absolute anchors and axes are measured from */
+    JointReader(Problems problems, Attributes attributes, String prefix, Pose root) {
         this.problems = problems;
         this.attributes = attributes;
         this.prefix = prefix;
+        this.root = root;
     }
 
     /** @return the joint, or null when it cannot be built */
@@ -65,7 +68,7 @@ final class JointReader {
         return prefix + link.attribute("body").get();
     }
 
-    /** A missing anchor is the parent frame's origin (xode.md §10.9); absolute="true" means world coordinates. */
+    /** A missing anchor is the parent frame's origin (xode.md §10.9); absolute="true" means the document root's frame. */
     private double[] anchor(XodeElement type, Pose frame) {
         List<XodeElement> anchors = type.children("anchor");
         if (anchors.size() > 1) {
@@ -81,7 +84,7 @@ final class JointReader {
         double x = attributes.required(anchor, "x");
         double y = attributes.required(anchor, "y");
         double z = attributes.required(anchor, "z");
-        return attributes.bool(anchor, "absolute", false) ? new double[] {x, y, z} : frame.applyToPoint(x, y, z);
+        return attributes.bool(anchor, "absolute", false) ? root.applyToPoint(x, y, z) : frame.applyToPoint(x, y, z);
     }
 
     private AxisSpec axis(XodeElement axis, String type, int index, Pose frame) {
@@ -92,7 +95,7 @@ final class JointReader {
             problems.error(axis, "the axis direction must not be (0, 0, 0)");
             x = 1;
         }
-        double[] direction = attributes.bool(axis, "absolute", false) ? new double[] {x, y, z} : frame.rotate(x, y, z);
+        double[] direction = attributes.bool(axis, "absolute", false) ? root.rotate(x, y, z) : frame.rotate(x, y, z);
         Map<String, Double> parameters = new LinkedHashMap<>();
         for (String parameter : axis.attributes().keySet()) {
             if (!XodeSchema.AXIS_PARAMETERS.contains(parameter)) {

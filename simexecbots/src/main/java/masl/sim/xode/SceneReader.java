@@ -38,13 +38,22 @@ final class SceneReader {
     private final SceneSpec scene = new SceneSpec();
     private final Map<String, List<XodeElement>> namedElements = new LinkedHashMap<>();
 
-    SceneReader(Problems problems, LoadOptions options, String prefix) {
+    private final Pose root;
+    private final java.util.Set<String> takenNames;
+
+    /**
+     * @param root       where the document's root is placed in the world
+     * @param takenNames names already used in the target world
+     */
+    SceneReader(Problems problems, LoadOptions options, String prefix, Pose root, java.util.Set<String> takenNames) {
         this.problems = problems;
+        this.root = root;
+        this.takenNames = takenNames;
         this.attributes = new Attributes(problems);
-        this.transforms = new TransformReader(problems, attributes, options.euler());
+        this.transforms = new TransformReader(problems, attributes, options.euler(), root);
         this.masses = new MassReader(problems, attributes, transforms);
         this.shapes = new ShapeReader(problems, attributes);
-        this.joints = new JointReader(problems, attributes, prefix);
+        this.joints = new JointReader(problems, attributes, prefix, root);
         this.prefix = prefix;
     }
 
@@ -76,7 +85,7 @@ final class SceneReader {
     private void readWorld(XodeElement element) {
         WorldSpec world = new WorldSpec(name(element), element);
         scene.worlds.add(world);
-        Scope scope = new Scope(transforms.worldFrame(element, Pose.identity()), world, null, null, null);
+        Scope scope = new Scope(transforms.worldFrame(element, root), world, null, null, null);
         for (XodeElement space : element.children("space")) {
             readSpace(space, scope);
         }
@@ -263,6 +272,9 @@ final class SceneReader {
             return null;
         }
         String prefixed = prefix + raw;
+        if (takenNames.contains(prefixed)) {
+            problems.error(element, "the name '" + prefixed + "' is already used in the target world; load this file with another prefix");
+        }
         namedElements.computeIfAbsent(prefixed, n -> new ArrayList<>()).add(element);
         return prefixed;
     }

@@ -4,7 +4,8 @@ import java.util.List;
 
 /**
  * Reads an element's {@code <transform>} and gives the element's world frame
- * W = W(parent)·L, or W = L when {@code absolute="true"} (xode.md §3).
+ * W = W(parent)·L, or W = W(root)·L when {@code absolute="true"} (xode.md §3); W(root) is the
+ * identity unless the caller places the document somewhere.
  */
 final class TransformReader {
 
@@ -13,11 +14,14 @@ final class TransformReader {
     private final Problems problems;
     private final Attributes attributes;
     private final EulerConvention euler;
+    private final Pose root;
 
-    TransformReader(Problems problems, Attributes attributes, EulerConvention euler) {
+    /** @param root the frame of the document root; absolute transforms are measured from it */
+    TransformReader(Problems problems, Attributes attributes, EulerConvention euler, Pose root) {
         this.problems = problems;
         this.attributes = attributes;
         this.euler = euler;
+        this.root = root;
     }
 
     /** The world frame of {@code element}, whose enclosing frame is {@code parentFrame}. */
@@ -31,7 +35,7 @@ final class TransformReader {
         }
         XodeElement transform = transforms.get(0);
         Pose local = local(transform);
-        return attributes.bool(transform, "absolute", false) ? local : parentFrame.compose(local);
+        return attributes.bool(transform, "absolute", false) ? root.compose(local) : parentFrame.compose(local);
     }
 
     private Pose local(XodeElement transform) {

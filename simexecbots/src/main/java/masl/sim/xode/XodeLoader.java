@@ -45,7 +45,7 @@ public final class XodeLoader {
             if (!new SchemaChecker(problems).check(root)) {
                 problems.throwIfErrors();
             }
-            scene = new SceneReader(problems, options, safePrefix).read(root);
+            scene = new SceneReader(problems, options, safePrefix, target.placement(), target.takenNames()).read(root);
         } catch (RuntimeException e) {
             // A reader bug must still reach the user as a located message, never as a stack trace.
             throw new XodeException(List.of(new XodeProblem(XodeProblem.Severity.ERROR, root.location(), root.name(),

@@ -314,7 +314,7 @@ class XodeElementsTest {
         assertTrue(second.bodies().containsKey("khepera1.chassis"));
         assertFalse(first.bodies().containsKey("chassis"));
         assertNotSame(first.body("khepera0.chassis"), second.body("khepera1.chassis"));
-        assertSame(first.body("khepera0.chassis"), first.joint("khepera0.leftMotor").getBody(0));
+        assertSame(first.body("khepera0.chassis"), first.joint("khepera0.leftMotor").getBody(1), "link2 names the chassis");
         assertEquals("khepera1.leftMotor", second.joint("khepera1.leftMotor").getData());
     }
 
