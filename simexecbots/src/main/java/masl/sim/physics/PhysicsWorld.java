@@ -1,11 +1,11 @@
 package masl.sim.physics;
 
 import java.time.Duration;
-import java.util.HashMap;
 import java.util.HashSet;
 import java.util.Map;
 import java.util.NoSuchElementException;
 import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.LockSupport;
@@ -58,8 +58,9 @@ public final class PhysicsWorld implements AutoCloseable {
     private final ContactGenerator contacts;
     private final JointMotors motors = new JointMotors();
     private final XodeLoader loader;
-    private final Map<String, DBody> bodies = new HashMap<>();
-    private final Map<String, DJoint> joints = new HashMap<>();
+    /** Concurrent so that commands can find their joint without waiting for a step to end. */
+    private final Map<String, DBody> bodies = new ConcurrentHashMap<>();
+    private final Map<String, DJoint> joints = new ConcurrentHashMap<>();
     private final Set<String> names = new HashSet<>();
     private volatile long steps;
     private volatile boolean running;
@@ -256,7 +257,7 @@ public final class PhysicsWorld implements AutoCloseable {
 
     /** The names of all loaded bodies (a copy). */
     public Set<String> bodyNames() {
-        return withLock(() -> Set.copyOf(bodies.keySet()));
+        return Set.copyOf(bodies.keySet());
     }
 
     /** A joint's first-axis position (angle in radians; slider: metres) between steps. */
@@ -349,7 +350,7 @@ public final class PhysicsWorld implements AutoCloseable {
     }
 
     private DJoint joint(String name) {
-        return withLock(() -> lookup(joints, name, "joint"));
+        return lookup(joints, name, "joint");
     }
 
     private void checkOpen() {

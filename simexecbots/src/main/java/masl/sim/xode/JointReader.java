@@ -1,5 +1,6 @@
 package masl.sim.xode;
 
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -45,7 +46,7 @@ final class JointReader {
             problems.error(type, "a " + type.name() + " joint needs " + expectedAxes(type.name()) + ", found " + axisElements.size());
             return null;
         }
-        List<AxisSpec> axes = new java.util.ArrayList<>();
+        List<AxisSpec> axes = new ArrayList<>();
         for (int i = 0; i < axisElements.size(); i++) {
             axes.add(axis(axisElements.get(i), type.name(), i, frame));
         }

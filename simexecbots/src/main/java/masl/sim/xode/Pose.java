@@ -1,6 +1,7 @@
 package masl.sim.xode;
 
 import org.ode4j.math.DMatrix3;
+import org.ode4j.math.DMatrix3C;
 import org.ode4j.math.DQuaternion;
 import org.ode4j.math.DVector3;
 import org.ode4j.ode.DRotation;
@@ -54,7 +55,7 @@ public final class Pose {
         return fromMatrix(m, 0, 0, 0);
     }
 
-    static Pose fromMatrix(org.ode4j.math.DMatrix3C m, double x, double y, double z) {
+    static Pose fromMatrix(DMatrix3C m, double x, double y, double z) {
         return new Pose(new double[] {
             m.get00(), m.get01(), m.get02(), m.get10(), m.get11(), m.get12(), m.get20(), m.get21(), m.get22()}, x, y, z);
     }

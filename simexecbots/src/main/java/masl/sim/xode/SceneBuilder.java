@@ -42,6 +42,7 @@ final class SceneBuilder {
     private final Map<JointGroupSpec, DJointGroup> jointGroups = new IdentityHashMap<>();
     private final Map<BodySpec, DBody> bodies = new IdentityHashMap<>();
     private final Map<String, DBody> bodiesByName = new LinkedHashMap<>();
+    private final Map<String, BodySpec> bodySpecsByName = new LinkedHashMap<>();
     private final Map<String, DGeom> geomsByName = new LinkedHashMap<>();
     private final Map<String, DJoint> jointsByName = new LinkedHashMap<>();
     private final Map<String, DSpace> spacesByName = new LinkedHashMap<>();
@@ -109,6 +110,7 @@ final class SceneBuilder {
         }
         bodies.put(spec, body);
         putFirst(bodiesByName, spec.name(), body);
+        putFirst(bodySpecsByName, spec.name(), spec);
     }
 
     private void createGeom(GeomSpec spec) {
@@ -169,10 +171,7 @@ final class SceneBuilder {
     }
 
     private BodySpec bodySpec(String name) {
-        if (name == null) {
-            return null;
-        }
-        return bodies.keySet().stream().filter(b -> name.equals(b.name())).findFirst().orElse(null);
+        return name == null ? null : bodySpecsByName.get(name);
     }
 
     private static DJoint newJoint(String type, DWorld world, DJointGroup group) {
@@ -199,8 +198,7 @@ final class SceneBuilder {
             hinge.setAxis(new DVector3(axes.get(0).direction()));
         } else if (joint instanceof DHinge2Joint hinge2) {
             hinge2.setAnchor(anchor);
-            hinge2.setAxis1(new DVector3(axes.get(0).direction()));
-            hinge2.setAxis2(new DVector3(axes.get(1).direction()));
+            hinge2.setAxes(new DVector3(axes.get(0).direction()), new DVector3(axes.get(1).direction()));
         } else if (joint instanceof DSliderJoint slider) {
             slider.setAxis(new DVector3(axes.get(0).direction()));
         } else if (joint instanceof DUniversalJoint universal) {

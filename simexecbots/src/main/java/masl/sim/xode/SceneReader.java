@@ -1,9 +1,11 @@
 package masl.sim.xode;
 
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import masl.sim.xode.SceneSpec.BodySpec;
 import masl.sim.xode.SceneSpec.GeomSpec;
 import masl.sim.xode.SceneSpec.JointGroupSpec;
@@ -39,13 +41,13 @@ final class SceneReader {
     private final Map<String, List<XodeElement>> namedElements = new LinkedHashMap<>();
 
     private final Pose root;
-    private final java.util.Set<String> takenNames;
+    private final Set<String> takenNames;
 
     /**
      * @param root       where the document's root is placed in the world
      * @param takenNames names already used in the target world
      */
-    SceneReader(Problems problems, LoadOptions options, String prefix, Pose root, java.util.Set<String> takenNames) {
+    SceneReader(Problems problems, LoadOptions options, String prefix, Pose root, Set<String> takenNames) {
         this.problems = problems;
         this.root = root;
         this.takenNames = takenNames;
@@ -219,7 +221,7 @@ final class SceneReader {
                 bodiesByName.computeIfAbsent(body.name(), n -> new ArrayList<>()).add(body);
             }
         }
-        java.util.Set<String> linkTargets = new java.util.HashSet<>();
+        Set<String> linkTargets = new HashSet<>();
         for (JointSpec joint : scene.joints) {
             boolean linksKnown = true;
             for (String target : new String[] {joint.link1Name(), joint.link2Name()}) {

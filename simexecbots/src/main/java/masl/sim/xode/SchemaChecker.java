@@ -1,5 +1,7 @@
 package masl.sim.xode;
 
+import java.util.Set;
+
 /**
  * Reports elements and attributes that XODE does not define, or that stand where XODE does not
  * allow them. Unknown names are warnings (errors in strict mode) as xode.md §10.14 decides; a
@@ -9,7 +11,7 @@ package masl.sim.xode;
 final class SchemaChecker {
 
     /** Attributes some writers add that carry nothing for physics (xode.md §10.14). */
-    private static final java.util.Set<String> TOLERATED = java.util.Set.of("transformstyle");
+    private static final Set<String> TOLERATED = Set.of("transformstyle");
 
     private final Problems problems;
 

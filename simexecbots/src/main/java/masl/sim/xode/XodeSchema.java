@@ -1,6 +1,7 @@
 package masl.sim.xode;
 
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.Map;
 import java.util.Set;
 
@@ -99,7 +100,7 @@ final class XodeSchema {
     }
 
     private static Set<String> matrixAttributes(int size) {
-        java.util.Set<String> names = new java.util.HashSet<>();
+        Set<String> names = new HashSet<>();
         for (int i = 0; i < size; i++) {
             for (int j = 0; j < size; j++) {
                 names.add("m" + i + j);
@@ -109,7 +110,7 @@ final class XodeSchema {
     }
 
     private static Set<String> union(Set<String> a, Set<String> b) {
-        java.util.Set<String> all = new java.util.HashSet<>(a);
+        Set<String> all = new HashSet<>(a);
         all.addAll(b);
         return Set.copyOf(all);
     }
