@@ -36,6 +36,20 @@ class PhysicsWorldTest {
     }
 
     @Test
+    void geomsCollideInsideNestedSpaces() throws XodeException {
+        try (PhysicsWorld world = new PhysicsWorld(Scenes.settings())) {
+            world.load(XodeSource.text("nested.xode", "<xode version=\"1.0r23\"><world><space><space><space>"
+                    + "<geom><plane a=\"0\" b=\"0\" c=\"1\" d=\"0\"/></geom>"
+                    + "<body name=\"ball\"><transform><position x=\"0\" y=\"0\" z=\"0.5\"/></transform>"
+                    + "<mass><mass_shape total=\"1\"><sphere radius=\"0.1\"/></mass_shape></mass>"
+                    + "<geom><sphere radius=\"0.1\"/></geom></body>"
+                    + "</space></space></space></world></xode>"), "");
+            world.step(200);
+            assertEquals(0.1, world.bodyPose("ball").z(), 0.003, "the ball rests on the plane of its own nested space");
+        }
+    }
+
+    @Test
     void pendulumSwingsWithThePhysicalPeriod() throws XodeException {
         PhysicsSettings settings = Scenes.settings().withStepSize(0.002).withGravity(0, -9.81, 0);
         try (PhysicsWorld world = new PhysicsWorld(settings)) {
@@ -116,6 +130,22 @@ class PhysicsWorldTest {
             assertEquals(steps + 1, world.stepCount(), "lock-step again after stop()");
         } finally {
             world.close();
+        }
+    }
+
+    @Test
+    void commandsReachARobotDrivenByTheOwnThread() throws Exception {
+        try (PhysicsWorld world = new PhysicsWorld(Scenes.settings())) {
+            world.load(Scenes.GROUND, "");
+            world.load(Scenes.KHEPERA, "k.");
+            world.start();
+            world.driveJoint("k.leftMotor", 5, 0.5);
+            world.driveJoint("k.rightMotor", 5, 0.5);
+            double commandedAt = world.simulatedTime();
+            assertTrue(world.awaitSimulatedTime(commandedAt + 1.5, Duration.ofSeconds(20)));
+            BodyPose pose = world.bodyPose("k.chassis");
+            world.stop();
+            assertTrue(pose.x() > 0.1, "drove forward while the thread stepped: x = " + pose.x());
         }
     }
 
