@@ -89,28 +89,43 @@ class PhysicsWorldTest {
     }
 
     @Test
-    void lockStepIsDeterministicBitForBit() throws XodeException {
-        double[] first = driveKhepera(Scenes.settings().withSeed(1234));
-        double[] second = driveKhepera(Scenes.settings().withSeed(1234));
-        assertArrayEquals(first, second);
+    void lockStepIsDeterministicBitForBitEvenWithWorldsInterleaved() throws XodeException {
+        PhysicsSettings settings = Scenes.settings().withSeed(1234);
+        try (PhysicsWorld alone = kheperaWorld(settings)) {
+            double[] reference = new double[3 * 200];
+            for (int i = 0; i < 200; i++) {
+                driveStep(alone, i, reference);
+            }
+            // ode4j's random generator is global: interleaving two worlds must not change either.
+            try (PhysicsWorld first = kheperaWorld(settings); PhysicsWorld second = kheperaWorld(settings)) {
+                double[] firstTrajectory = new double[3 * 200];
+                double[] secondTrajectory = new double[3 * 200];
+                for (int i = 0; i < 200; i++) {
+                    driveStep(first, i, firstTrajectory);
+                    driveStep(second, i, secondTrajectory);
+                }
+                assertArrayEquals(reference, firstTrajectory);
+                assertArrayEquals(reference, secondTrajectory);
+            }
+        }
     }
 
-    private static double[] driveKhepera(PhysicsSettings settings) throws XodeException {
-        try (PhysicsWorld world = new PhysicsWorld(settings)) {
-            world.load(Scenes.GROUND, "");
-            world.load(Scenes.KHEPERA, "k.");
-            double[] trajectory = new double[3 * 200];
-            for (int i = 0; i < 200; i++) {
-                world.driveJoint("k.leftMotor", i < 100 ? 4 : -2, 0.5);
-                world.driveJoint("k.rightMotor", 4, 0.5);
-                world.step();
-                BodyPose pose = world.bodyPose("k.chassis");
-                trajectory[3 * i] = pose.x();
-                trajectory[3 * i + 1] = pose.y();
-                trajectory[3 * i + 2] = pose.qz();
-            }
-            return trajectory;
-        }
+    private static PhysicsWorld kheperaWorld(PhysicsSettings settings) throws XodeException {
+        PhysicsWorld world = new PhysicsWorld(settings);
+        world.load(Scenes.GROUND, "");
+        world.load(Scenes.KHEPERA, "k.");
+        return world;
+    }
+
+    /** Drives a curve, then a turn, and records the chassis's x, y and yaw quaternion part. */
+    private static void driveStep(PhysicsWorld world, int step, double[] trajectory) {
+        world.driveJoint("k.leftMotor", step < 100 ? 4 : -2, 0.5);
+        world.driveJoint("k.rightMotor", 3, 0.5);
+        world.step();
+        BodyPose pose = world.bodyPose("k.chassis");
+        trajectory[3 * step] = pose.x();
+        trajectory[3 * step + 1] = pose.y();
+        trajectory[3 * step + 2] = pose.qz();
     }
 
     @Test
