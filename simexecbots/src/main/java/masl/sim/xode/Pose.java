@@ -113,12 +113,6 @@ public final class Pose {
         return new DMatrix3(r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8]);
     }
 
-    public DQuaternion toOdeQuaternion() {
-        DQuaternion q = new DQuaternion();
-        DRotation.dQfromR(q, toOdeRotation());
-        return q;
-    }
-
     /** True when R and t differ from the identity by at most {@code tolerance} in every entry. */
     public boolean isIdentity(double tolerance) {
         return isRotationIdentity(tolerance) && Math.abs(tx) <= tolerance && Math.abs(ty) <= tolerance && Math.abs(tz) <= tolerance;

@@ -35,10 +35,6 @@ final class Problems {
         warnings.add(new XodeProblem(XodeProblem.Severity.WARNING, element.location(), element.name(), message));
     }
 
-    boolean hasErrors() {
-        return !errors.isEmpty();
-    }
-
     /** @throws XodeException listing every error, in document order, if there is any */
     void throwIfErrors() throws XodeException {
         if (!errors.isEmpty()) {

@@ -295,6 +295,19 @@ class XodeElementsTest {
     }
 
     @Test
+    void eachWorldElementGetsItsOwnOdeWorldAndRootSpace() throws XodeException {
+        LoadedModel model = Xode.load("""
+                <xode version="1.0r23"><world name="w1"><space><body name="a"/></space></world>
+                <world name="w2"><transform><position x="0" y="0" z="10"/></transform><space><body name="b"/></space></world></xode>""");
+        assertEquals(2, model.worlds().size());
+        assertEquals("w2", model.worlds().get(1).name());
+        assertSame(model.worlds().get(0).world(), model.body("a").getWorld());
+        assertSame(model.worlds().get(1).world(), model.body("b").getWorld());
+        assertNotSame(model.worlds().get(0).rootSpace(), model.worlds().get(1).rootSpace());
+        assertVector(0, 0, 10, model.body("b").getPosition());
+    }
+
+    @Test
     void extensionsAreSkippedWherever() throws XodeException {
         LoadedModel model = Xode.load("""
                 <xode version="1.0r23"><ext><anything goes="here"><deep/></anything></ext>
