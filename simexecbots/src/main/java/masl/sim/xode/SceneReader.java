@@ -1,10 +1,6 @@
 package masl.sim.xode;
 
-import java.util.ArrayList;
-import java.util.HashSet;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 import masl.sim.xode.SceneSpec.BodySpec;
 import masl.sim.xode.SceneSpec.GeomSpec;
@@ -31,55 +27,51 @@ final class SceneReader {
     private static final double TOLERANCE = 1e-12;
 
     private final Problems problems;
+    private final Pose root;
     private final Attributes attributes;
     private final TransformReader transforms;
     private final MassReader masses;
     private final ShapeReader shapes;
     private final JointReader joints;
-    private final String prefix;
+    private final NameRegistry names;
     private final SceneSpec scene = new SceneSpec();
-    private final Map<String, List<XodeElement>> namedElements = new LinkedHashMap<>();
-
-    private final Pose root;
-    private final Set<String> takenNames;
 
     /**
      * @param root       where the document's root is placed in the world
-     * @param takenNames names already used in the target world
+     * @param takenNames prefixed names already used in the target world
      */
     SceneReader(Problems problems, LoadOptions options, String prefix, Pose root, Set<String> takenNames) {
         this.problems = problems;
         this.root = root;
-        this.takenNames = takenNames;
         this.attributes = new Attributes(problems);
         this.transforms = new TransformReader(problems, attributes, options.euler(), root);
         this.masses = new MassReader(problems, attributes, transforms);
         this.shapes = new ShapeReader(problems, attributes);
         this.joints = new JointReader(problems, attributes, prefix, root);
-        this.prefix = prefix;
+        this.names = new NameRegistry(problems, prefix, takenNames);
     }
 
-    SceneSpec read(XodeElement root) {
-        checkVersion(root);
-        for (XodeElement world : root.children("world")) {
+    SceneSpec read(XodeElement document) {
+        checkVersion(document);
+        for (XodeElement world : document.children("world")) {
             readWorld(world);
         }
         if (scene.worlds.isEmpty()) {
-            problems.error(root, "the document holds no <world>");
+            problems.error(document, "the document holds no <world>");
         }
-        checkLinksAndNames();
+        names.reportDuplicates(new LinkChecker(problems, names).check(scene.bodies, scene.joints));
         return scene;
     }
 
-    private void checkVersion(XodeElement root) {
-        String version = root.attribute("version").orElse(null);
+    private void checkVersion(XodeElement document) {
+        String version = document.attribute("version").orElse(null);
         if (version == null) {
-            problems.error(root, "missing required attribute 'version'");
+            problems.error(document, "missing required attribute 'version'");
         } else if (!version.equals("1.0r23")) {
             if (version.matches("1\\.0r\\d+")) {
-                problems.notice(root, "version " + version + " read as 1.0r23");
+                problems.notice(document, "version " + version + " read as 1.0r23");
             } else {
-                problems.warning(root, "version " + version + " is not XODE 1.0; read as 1.0r23");
+                problems.warning(document, "version " + version + " is not XODE 1.0; read as 1.0r23");
             }
         }
     }
@@ -213,72 +205,8 @@ final class SceneReader {
         }
     }
 
-    /** Links must name bodies of this document; a name used as a link target must be unique (xode.md §10.15). */
-    private void checkLinksAndNames() {
-        Map<String, List<BodySpec>> bodiesByName = new LinkedHashMap<>();
-        for (BodySpec body : scene.bodies) {
-            if (body.name() != null) {
-                bodiesByName.computeIfAbsent(body.name(), n -> new ArrayList<>()).add(body);
-            }
-        }
-        Set<String> linkTargets = new HashSet<>();
-        for (JointSpec joint : scene.joints) {
-            boolean linksKnown = true;
-            for (String target : new String[] {joint.link1Name(), joint.link2Name()}) {
-                if (target == null) {
-                    continue;
-                }
-                linkTargets.add(target);
-                if (!bodiesByName.containsKey(target)) {
-                    XodeElement link = joint.element().child(target.equals(joint.link1Name()) ? "link1" : "link2").orElse(joint.element());
-                    problems.error(link, "no body named '" + target.substring(prefix.length()) + "' in this document");
-                    linksKnown = false;
-                }
-            }
-            if (linksKnown) {
-                checkEnds(joint, bodiesByName);
-            }
-        }
-        for (Map.Entry<String, List<XodeElement>> entry : namedElements.entrySet()) {
-            List<XodeElement> uses = entry.getValue();
-            if (uses.size() > 1) {
-                String message = "the name '" + entry.getKey().substring(prefix.length()) + "' is already used at " + uses.get(0).location();
-                if (linkTargets.contains(entry.getKey())) {
-                    problems.error(uses.get(1), message + ", and a joint links to it");
-                } else {
-                    problems.warning(uses.get(1), message);
-                }
-            }
-        }
-    }
-
-    private void checkEnds(JointSpec joint, Map<String, List<BodySpec>> bodiesByName) {
-        BodySpec first = resolve(joint.link1Name(), bodiesByName);
-        BodySpec second = resolve(joint.link2Name(), bodiesByName);
-        BodySpec[] ends = JointEnds.resolve(first, joint.link1Name() != null, second, joint.link2Name() != null, joint.enclosing());
-        if (ends[0] == null && ends[1] == null) {
-            problems.error(joint.element(), "the joint links nothing: give <link1>/<link2> or put it inside a body");
-        } else if (ends[0] == ends[1]) {
-            problems.error(joint.element(), "both ends of the joint are the same body");
-        }
-    }
-
-    private static BodySpec resolve(String name, Map<String, List<BodySpec>> bodiesByName) {
-        List<BodySpec> named = name == null ? null : bodiesByName.get(name);
-        return named == null ? null : named.get(0);
-    }
-
     private String name(XodeElement element) {
-        String raw = element.attribute("name").orElse(null);
-        if (raw == null) {
-            return null;
-        }
-        String prefixed = prefix + raw;
-        if (takenNames.contains(prefixed)) {
-            problems.error(element, "the name '" + prefixed + "' is already used in the target world; load this file with another prefix");
-        }
-        namedElements.computeIfAbsent(prefixed, n -> new ArrayList<>()).add(element);
-        return prefixed;
+        return names.register(element);
     }
 
     private double[] vector(XodeElement body, String childName) {
