@@ -50,6 +50,22 @@ class PhysicsWorldTest {
     }
 
     @Test
+    void raysSenseButDoNotPush() throws XodeException {
+        try (PhysicsWorld world = new PhysicsWorld(Scenes.settings())) {
+            world.load(Scenes.GROUND, "");
+            world.load(XodeSource.text("probe.xode", "<xode version=\"1.0r23\"><world><space><body name=\"probe\">"
+                    + "<transform><position x=\"0\" y=\"0\" z=\"0.5\"/></transform>"
+                    + "<mass><mass_shape total=\"1\"><sphere radius=\"0.1\"/></mass_shape></mass>"
+                    + "<geom><sphere radius=\"0.1\"/></geom>"
+                    + "<geom name=\"downRay\"><transform><rotation><euler x=\"180\" y=\"0\" z=\"0\" aformat=\"degrees\"/></rotation>"
+                    + "</transform><ray length=\"1\"/></geom>"
+                    + "</body></space></world></xode>"), "");
+            world.step(200);
+            assertEquals(0.1, world.bodyPose("probe").z(), 0.003, "the 1 m ray through the floor does not hold the body up");
+        }
+    }
+
+    @Test
     void pendulumSwingsWithThePhysicalPeriod() throws XodeException {
         PhysicsSettings settings = Scenes.settings().withStepSize(0.002).withGravity(0, -9.81, 0);
         try (PhysicsWorld world = new PhysicsWorld(settings)) {
