@@ -1,0 +1,13 @@
+package masl.sim.xode;
+
+/**
+ * A position in an XODE source: the file's display name, a 1-based line and a 1-based column.
+ * Printed as {@code file:line:column}, the form compilers use, so editors can jump to it.
+ */
+public record SourceLocation(String file, int line, int column) {
+
+    @Override
+    public String toString() {
+        return file + ":" + line + ":" + column;
+    }
+}

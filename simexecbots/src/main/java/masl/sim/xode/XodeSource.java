@@ -1,0 +1,71 @@
+package masl.sim.xode;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * Where an XODE document comes from, and the name its messages use. Documents are read as UTF-8
+ * (a byte-order mark is skipped); undecodable bytes become U+FFFD, so odd bytes surface as XML errors.
+ */
+public final class XodeSource {
+
+    /** Produces the raw bytes; may fail with an IOException. */
+    @FunctionalInterface
+    private interface ByteSupplier {
+        byte[] get() throws IOException;
+    }
+
+    private final String name;
+    private final ByteSupplier bytes;
+
+    private XodeSource(String name, ByteSupplier bytes) {
+        this.name = name;
+        this.bytes = bytes;
+    }
+
+    /** A file; messages name it as given. */
+    public static XodeSource file(Path path) {
+        return new XodeSource(path.toString(), () -> Files.readAllBytes(path));
+    }
+
+    /** A class-path resource such as {@code masl/sim/robots/khepera.xode}. */
+    public static XodeSource resource(String resourcePath) {
+        return new XodeSource(resourcePath, () -> {
+            try (InputStream in = XodeSource.class.getClassLoader().getResourceAsStream(resourcePath)) {
+                if (in == null) {
+                    throw new IOException("no such resource on the class path");
+                }
+                return in.readAllBytes();
+            }
+        });
+    }
+
+    /** In-memory text, named {@code name} in messages. */
+    public static XodeSource text(String name, String xml) {
+        return new XodeSource(name, () -> xml.getBytes(StandardCharsets.UTF_8));
+    }
+
+    /** In-memory bytes, named {@code name} in messages. */
+    public static XodeSource bytes(String name, byte[] content) {
+        byte[] copy = content.clone();
+        return new XodeSource(name, () -> copy);
+    }
+
+    public String name() {
+        return name;
+    }
+
+    String readText() throws XodeException {
+        try {
+            String text = new String(bytes.get(), StandardCharsets.UTF_8);
+            return text.startsWith("\uFEFF") ? text.substring(1) : text;
+        } catch (IOException e) {
+            throw new XodeException(List.of(new XodeProblem(XodeProblem.Severity.ERROR, new SourceLocation(name, 1, 1), "",
+                    "cannot read the file: " + e.getMessage())));
+        }
+    }
+}
