@@ -1,0 +1,40 @@
+package masl.translator;
+
+import masl.runtime.descriptor.AgentPath;
+import masl.runtime.descriptor.DescriptorLoader;
+import masl.translator.analysis.AnalyzedProgram;
+import masl.translator.analysis.Analyzer;
+import masl.translator.diagnostics.Diagnostics;
+import masl.translator.parse.ProgramParser;
+import masl.translator.source.SourceFile;
+
+/**
+ * The front half of the pipeline, shared by {@code masl check}, {@code compile}, {@code run} and the
+ * Gradle plug-in: parse, then analyse against the descriptors. Syntax errors stop it before the
+ * analysis, whose messages on a tree ANTLR had to repair would mostly be echoes of them.
+ */
+public final class Frontend {
+
+    /** The analysed program, or null when {@code diagnostics} holds errors. */
+    public record Result(SourceFile source, AnalyzedProgram program, Diagnostics diagnostics) {
+        public boolean succeeded() {
+            return !diagnostics.hasErrors();
+        }
+    }
+
+    private final AgentPath agentPath;
+
+    public Frontend(AgentPath agentPath) {
+        this.agentPath = agentPath;
+    }
+
+    public Result analyse(SourceFile source) {
+        Diagnostics diagnostics = new Diagnostics();
+        ProgramParser.Parsed parsed = ProgramParser.parse(source, diagnostics);
+        if (diagnostics.hasErrors()) {
+            return new Result(source, null, diagnostics);
+        }
+        AnalyzedProgram program = Analyzer.analyze(parsed, new DescriptorLoader(agentPath), diagnostics);
+        return new Result(source, diagnostics.hasErrors() ? null : program, diagnostics);
+    }
+}
