@@ -281,7 +281,7 @@ final class ExpressionWriter {
         } else if (primary instanceof MASLParser.PrimitiveClassLiteralContext literal) {
             return literal.getText();
         } else if (primary instanceof MASLParser.PlainCallContext) {
-            return unsupported.report(expression, "label members");
+            return unsupported.report(expression, "a label member");
         } else if (primary instanceof MASLParser.GetAcceptStateExprContext) {
             return unsupported.report(expression, "getAcceptState (permeability)");
         } else if (primary instanceof MASLParser.GetMessageExprContext) {
@@ -298,7 +298,7 @@ final class ExpressionWriter {
         if (symbol instanceof TypeRef type) {
             return JavaTypes.name(type.type());
         }
-        return unsupported.report(expression, "references to other agents");
+        return unsupported.report(expression, "a reference to an agent other than this");
     }
 
     /** The value of a variable. */
@@ -348,9 +348,9 @@ final class ExpressionWriter {
         return switch (member.kind()) {
             case ENTRY_MEMBER -> entry(access.expression()) + "." + name + "()";
             case ATTRIBUTE -> isThis(access.expression()) ? "self." + name
-                    : unsupported.report(access, "attributes of other agents");
+                    : unsupported.report(access, "an attribute of another agent");
             case JAVA_FIELD -> receiver(access.expression()) + "." + name;
-            case DYNAMIC -> unsupported.report(access, "members of Object-typed values");
+            case DYNAMIC -> unsupported.report(access, "a field of an Object-typed value");
             default -> unsupported.report(access, "this member access");
         };
     }
@@ -364,12 +364,12 @@ final class ExpressionWriter {
         }
         return switch (member.kind()) {
             case PRIMITIVE -> isThis(call.expression()) ? selfPrimitive(name, arguments, call)
-                    : unsupported.report(call, "invocations of other agents' primitives");
+                    : unsupported.report(call, "an invocation of another agent's primitive");
             case ENTRY_MEMBER -> entryCall(call.expression(), name, arguments);
             case JAVA_METHOD -> receiver(call.expression()) + "." + name + "(" + String.join(", ", all(arguments))
                     + ")";
-            case LABEL_MEMBER -> unsupported.report(call, "label members");
-            case DYNAMIC -> unsupported.report(call, "methods of Object-typed values");
+            case LABEL_MEMBER -> unsupported.report(call, "a label member");
+            case DYNAMIC -> unsupported.report(call, "a method call on an Object-typed value");
             default -> unsupported.report(call, "this call");
         };
     }
@@ -402,7 +402,7 @@ final class ExpressionWriter {
     private String selfPrimitive(String name, List<ExpressionContext> arguments, ParserRuleContext where) {
         Optional<Primitive> primitive = selfType.descriptor().findPrimitive(name);
         if (primitive.isEmpty()) {
-            return unsupported.report(where, "a primitive this agent's type lacks, inside an expression,");
+            return unsupported.report(where, "a primitive call the agent's type lacks, inside an expression,");
         }
         List<Parameter> parameters = primitive.get().parameters();
         List<String> java = new ArrayList<>();
@@ -460,7 +460,7 @@ final class ExpressionWriter {
         }
         if (target instanceof MASLParser.FieldAccessContext access && symbol instanceof Member member
                 && member.kind() == Member.Kind.ATTRIBUTE && !isThis(access.expression())) {
-            return Optional.of(unsupported.report(target, "attributes of other agents"));
+            return Optional.of(unsupported.report(target, "an attribute of another agent"));
         }
         String left = expr(target);
         return Optional.of(left + " " + operator + " " + (operator.equals("=") ? converted(type, value) : expr(value)));

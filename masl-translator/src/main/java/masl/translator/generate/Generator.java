@@ -44,13 +44,15 @@ public final class Generator {
         String packageName = "masl.generated." + id;
         String missionClass = JavaNames.missionClass(id);
         Unsupported unsupported = new Unsupported(fileName, diagnostics);
-        StaticStructure structure = new StaticStructure(program.root(), fileName);
+        // Comments name the file as the user knows it best, by its own name: `// hello.masl:4`.
+        String shortName = java.nio.file.Path.of(fileName).getFileName().toString();
+        StaticStructure structure = new StaticStructure(program.root(), shortName);
         Set<Block> kept = keptOnReelect(program);
 
         JavaNames.Unique classNames = new JavaNames.Unique(missionClass);
         Map<String, String> programClasses = new LinkedHashMap<>();
         Map<String, String> programSources = new LinkedHashMap<>();
-        ProgramClassWriter writer = new ProgramClassWriter(program, structure, unsupported, fileName, kept);
+        ProgramClassWriter writer = new ProgramClassWriter(program, structure, unsupported, shortName, kept);
         for (AgentDecl agent : program.agents()) {
             ImportedType type = agent.instantiatedType();
             if (!programClasses.containsKey(type.name())) {
@@ -65,7 +67,7 @@ public final class Generator {
         }
         Map<String, String> sources = new LinkedHashMap<>();
         sources.put(packageName + "." + missionClass,
-                MissionClassWriter.write(packageName, missionClass, fileName, program, structure, programClasses));
+                MissionClassWriter.write(packageName, missionClass, shortName, program, structure, programClasses));
         sources.putAll(programSources);
         return new Output(packageName + "." + missionClass, sources);
     }

@@ -133,7 +133,7 @@ final class StatementWriter {
         cases.place(first, null);
         for (MASLParser.BlockItemContext item : tree.blockItem()) {
             if (item.reaction() != null) {
-                unsupported.report(item.reaction(), "react (events)");
+                unsupported.report(item.reaction(), "a reaction (react, events)");
             } else if (item.statement() != null) {
                 statementInList(item.statement());
             }
@@ -153,9 +153,9 @@ final class StatementWriter {
     private void declarations(Block block, boolean keeps) {
         for (MASLParser.BlockItemContext item : block.tree().blockItem()) {
             if (item.declaration() instanceof MASLParser.EventDeclContext event) {
-                unsupported.report(event, "events");
+                unsupported.report(event, "an event declaration");
             } else if (item.declaration() instanceof MASLParser.LabelDeclContext label) {
-                unsupported.report(label, "labels");
+                unsupported.report(label, "a label declaration");
             }
         }
         List<Variable> variables = block.variables();
@@ -248,10 +248,10 @@ final class StatementWriter {
                 || statement instanceof MASLParser.ClearEventsStmtContext
                 || statement instanceof MASLParser.EmitStmtContext
                 || statement instanceof MASLParser.EmitWithMessageStmtContext) {
-            unsupported.report(statement, "events (" + statement.getStart().getText() + ")");
+            unsupported.report(statement, statement.getStart().getText() + " (events)");
         } else if (statement instanceof MASLParser.SetAcceptStateStmtContext
                 || statement instanceof MASLParser.WaitStmtContext) {
-            unsupported.report(statement, "permeability (" + statement.getStart().getText() + ")");
+            unsupported.report(statement, statement.getStart().getText() + " (permeability)");
         } else {
             unsupported.report(statement, "this statement");
         }
