@@ -95,6 +95,23 @@ final class ExpressionWriter {
         return convert(target, program.typeOf(expression), expr(expression));
     }
 
+    /**
+     * {@code expression} converted for a shared variable of type {@code target}: its value is boxed
+     * as the variable's own type, so a number of another type is cast first ({@code 10} for a {@code long}).
+     */
+    String convertedBoxed(MaslType target, ExpressionContext expression) {
+        return exactly(target, program.typeOf(expression), converted(target, expression));
+    }
+
+    private static String exactly(MaslType target, MaslType source, String java) {
+        Class<?> from = JavaTypes.unboxed(source);
+        if (target instanceof MaslType.JavaPrimitive primitive && from != null && from != primitive.type()
+                && !java.startsWith("(" + primitive.type().getName() + ")")) {
+            return "(" + primitive.type().getName() + ") (" + java + ")";
+        }
+        return java;
+    }
+
     private static String convert(MaslType target, MaslType source, String java) {
         if (MaslType.STRING.equals(target) && !MaslType.STRING.equals(source) && source != MaslType.NULL) {
             return "String.valueOf(" + java + ")";
@@ -128,7 +145,7 @@ final class ExpressionWriter {
             return JavaTypes.defaultValue(target);
         }
         if (initializer.expression() != null) {
-            return converted(target, initializer.expression());
+            return convertedBoxed(target, initializer.expression());
         }
         return "new " + JavaTypes.name(target) + " " + arrayInitializer(target, initializer.arrayInitializer());
     }
@@ -451,10 +468,10 @@ final class ExpressionWriter {
             }
             String shared = "ctx.shared(" + structure.shared(variable) + ")";
             if (operator.equals("=") && isStatement && !mentions(value, variable)) {
-                return Optional.of(shared + ".set(" + converted(type, value) + ")");
+                return Optional.of(shared + ".set(" + convertedBoxed(type, value) + ")");
             }
             String parameter = lambdaParameter(variable);
-            String function = inUpdate(variable, parameter, () -> operator.equals("=") ? converted(type, value)
+            String function = inUpdate(variable, parameter, () -> operator.equals("=") ? convertedBoxed(type, value)
                     : compound(type, parameter, operator.substring(0, operator.length() - 1), value));
             return Optional.of(shared + ".update(" + parameter + " -> " + function + ")");
         }
