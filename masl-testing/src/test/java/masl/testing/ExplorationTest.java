@@ -10,6 +10,11 @@ import org.junit.jupiter.api.Test;
 /** Issue 4: exploring seeded schedules finds the interleavings a mission's correctness depends on. */
 class ExplorationTest {
 
+    /**
+     * Three agents update a shared counter in an asynchronous child; the report comes after the
+     * parent's barrier that ends the child (the {@code .nop()} keeps the two blocks from forming one
+     * e-sequence, which would be one instruction, letting the report run before the others finish).
+     */
     private static String counterMission(String increment) {
         return """
                 import Default.xml as Default;
@@ -20,6 +25,7 @@ class ExplorationTest {
                     local int seen = 0;
                     %s
                   }
+                  .nop();
                   scalar entry report (true) { .logln("counter=" + counter); }
                 }
                 """.formatted(increment);

@@ -1,11 +1,14 @@
 package masl.translator.gradle;
 
 import java.io.File;
+import java.util.List;
+import masl.translator.MaslClassPath;
 import org.gradle.api.Plugin;
 import org.gradle.api.Project;
 import org.gradle.api.plugins.JavaPlugin;
 import org.gradle.api.tasks.SourceSet;
 import org.gradle.api.tasks.SourceSetContainer;
+import org.gradle.api.tasks.compile.JavaCompile;
 
 /**
  * The {@code masl} plug-in: applies {@code java}, translates the MASL programs of
@@ -29,7 +32,7 @@ public class MaslPlugin implements Plugin<Project> {
         translation(project, extension, sourceSets.getByName(SourceSet.TEST_SOURCE_SET_NAME), "maslCompileTest");
 
         // Generated code is compiled against the runtime and the agents' classes, and runs with them.
-        project.getDependencies().add("implementation", project.files(PluginClasspath.runtimeAndShippedAgents()));
+        project.getDependencies().add("implementation", project.files(MaslClassPath.runtimeAndShippedAgents()));
         project.getDependencies().add("implementation", extension.getAgentPath());
 
         MaslRun run = project.getTasks().create("maslRun", MaslRun.class);
@@ -41,6 +44,7 @@ public class MaslPlugin implements Plugin<Project> {
         run.setPlatform(stringProperty(project, "platform"));
         run.setSeed(stringProperty(project, "seed"));
         run.setTimeoutSeconds(stringProperty(project, "timeout"));
+        run.dependsOn(main);
     }
 
     private static MaslCompile translation(Project project, MaslExtension extension, SourceSet sourceSet, String taskName) {
@@ -55,7 +59,12 @@ public class MaslPlugin implements Plugin<Project> {
         task.setAgentPath(extension.getAgentPath());
         task.setOutputDir(generated);
         sourceSet.getJava().srcDir(generated);
-        project.getTasks().getByName(sourceSet.getCompileJavaTaskName()).dependsOn(task);
+        JavaCompile compile = (JavaCompile) project.getTasks().getByName(sourceSet.getCompileJavaTaskName());
+        compile.dependsOn(task);
+        // Generated code is Java 17, like the runtime it runs on.
+        if (!compile.getOptions().getCompilerArgs().contains("--release")) {
+            compile.getOptions().getCompilerArgs().addAll(List.of("--release", "17"));
+        }
         return task;
     }
 

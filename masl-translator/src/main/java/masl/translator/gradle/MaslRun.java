@@ -116,7 +116,9 @@ public class MaslRun extends DefaultTask {
     }
 
     private String[] arguments(File program) {
-        List<String> arguments = new ArrayList<>(List.of("run", getProject().relativePath(program)));
+        // Absolute: the build's JVM does not run in the project's folder. Diagnostics with the
+        // project-relative name come from maslCompile, which runs first.
+        List<String> arguments = new ArrayList<>(List.of("run", program.getAbsolutePath()));
         String path = agentPath.getFiles().stream().map(File::getPath).collect(Collectors.joining(File.pathSeparator));
         if (!path.isEmpty()) {
             arguments.addAll(List.of("--agent-path", path));
