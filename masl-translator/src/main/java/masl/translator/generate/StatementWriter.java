@@ -76,10 +76,11 @@ final class StatementWriter {
         if (root != null) {
             CaseWriter.Point end = cases.point();
             block(root, end);
-            cases.place(end, "after " + root.name());
+            cases.place(end, file + ":" + root.tree().getStop().getLine() + ": after " + root.name());
             cases.suspending("ctx.endOfSequence(" + structure.topSequence(root) + ")", cases.point());
+            cases.note(file + ":" + root.tree().getStop().getLine() + ": the end of the agent's program");
         } else {
-            cases.place(cases.point(), "a program without blocks only creates its agents");
+            cases.place(cases.point(), file + ":1: a program without blocks only creates its agents");
         }
         cases.line("ctx.finish();");
         cases.end("return;");

@@ -64,6 +64,7 @@ class ConstructsTest {
                   total = total * 2;
                   old = n--;
                   scalar entry letter (true) { letters = letters + "a"; }
+                  .nop();
                   scalar entry report (true) { .logln(n + " " + total + " " + letters + "bcd"); }
                 }
                 """);
