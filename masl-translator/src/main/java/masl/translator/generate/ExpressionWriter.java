@@ -37,6 +37,10 @@ final class ExpressionWriter {
     private final Unsupported unsupported;
     private final Map<Variable, String> locals = new java.util.LinkedHashMap<>();
     private final Map<String, Primitive> throwingPrimitives = new java.util.LinkedHashMap<>();
+    /** Temporaries of split expressions, field name to Java type. */
+    private final Map<String, String> temporaries = new java.util.LinkedHashMap<>();
+    /** Statements to run before the one being translated: values hoisted out of atomic updates. */
+    private final List<String> hoisted = new ArrayList<>();
     /** Inside the function of an atomic update: the variable updated and the function's parameter. */
     private Variable updated;
     private String updatedParameter;
@@ -64,6 +68,18 @@ final class ExpressionWriter {
         return throwingPrimitives;
     }
 
+    /** The temporaries used so far: field name to Java type. */
+    Map<String, String> temporaries() {
+        return temporaries;
+    }
+
+    /** Takes the statements that must run before the statement just translated, in order. */
+    List<String> takeHoisted() {
+        List<String> taken = List.copyOf(hoisted);
+        hoisted.clear();
+        return taken;
+    }
+
     ImportedType selfType() {
         return selfType;
     }
@@ -74,6 +90,9 @@ final class ExpressionWriter {
     String condition(ExpressionContext expression) {
         if (usesAbsentMember(expression)) {
             return "false";
+        }
+        if (throwsChecked(expression)) {
+            return unsupported.report(expression, "a Java call that may throw a checked exception, in a condition,");
         }
         return truth(expression);
     }
@@ -144,6 +163,9 @@ final class ExpressionWriter {
         if (usesAbsentMember(initializer)) {
             return JavaTypes.defaultValue(target);
         }
+        if (throwsChecked(initializer)) {
+            return unsupported.report(initializer, "a Java call that may throw a checked exception, in an initialiser,");
+        }
         if (initializer.expression() != null) {
             return convertedBoxed(target, initializer.expression());
         }
@@ -210,6 +232,24 @@ final class ExpressionWriter {
         }
         for (int i = 0; i < tree.getChildCount(); i++) {
             if (mentions(tree.getChild(i), variable)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether {@code tree} calls Java code declaring checked exceptions (a primitive's are wrapped instead). */
+    boolean throwsChecked(org.antlr.v4.runtime.tree.ParseTree tree) {
+        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
+                && member.javaMember() != null) {
+            for (Class<?> exception : member.javaMember().getExceptionTypes()) {
+                if (!RuntimeException.class.isAssignableFrom(exception) && !Error.class.isAssignableFrom(exception)) {
+                    return true;
+                }
+            }
+        }
+        for (int i = 0; i < tree.getChildCount(); i++) {
+            if (throwsChecked(tree.getChild(i))) {
                 return true;
             }
         }
@@ -471,8 +511,15 @@ final class ExpressionWriter {
                 return Optional.of(shared + ".set(" + convertedBoxed(type, value) + ")");
             }
             String parameter = lambdaParameter(variable);
+            String binary = operator.substring(0, operator.length() - 1);
+            if (isStatement && !operator.equals("=") && !mentions(value, variable) && !isSimple(value)) {
+                // Only what reads the variable runs under its monitor (x += .sense() calls the primitive first).
+                String temporary = hoist(value);
+                return Optional.of(shared + ".update(" + parameter + " -> "
+                        + compound(type, parameter, binary, temporary, program.typeOf(value)) + ")");
+            }
             String function = inUpdate(variable, parameter, () -> operator.equals("=") ? convertedBoxed(type, value)
-                    : compound(type, parameter, operator.substring(0, operator.length() - 1), value));
+                    : compound(type, parameter, binary, expr(value), program.typeOf(value)));
             return Optional.of(shared + ".update(" + parameter + " -> " + function + ")");
         }
         if (target instanceof MASLParser.FieldAccessContext access && symbol instanceof Member member
@@ -483,10 +530,25 @@ final class ExpressionWriter {
         return Optional.of(left + " " + operator + " " + (operator.equals("=") ? converted(type, value) : expr(value)));
     }
 
-    private String compound(MaslType type, String parameter, String operator, ExpressionContext value) {
-        String java = parameter + " " + operator + " (" + expr(value) + ")";
+    /** Evaluates {@code value} into a new temporary, before the statement; returns the temporary. */
+    private String hoist(ExpressionContext value) {
+        String temporary = "tmp$" + (temporaries.size() + 1);
+        temporaries.put(temporary, JavaTypes.name(program.typeOf(value)));
+        hoisted.add(temporary + " = " + expr(value) + ";");
+        return temporary;
+    }
+
+    /** A literal or a name: nothing gained by evaluating it before an atomic update. */
+    private static boolean isSimple(ExpressionContext value) {
+        return value instanceof MASLParser.PrimaryExprContext primary
+                && (primary.primary() instanceof MASLParser.LiteralExprContext
+                || primary.primary() instanceof MASLParser.NameExprContext);
+    }
+
+    private String compound(MaslType type, String parameter, String operator, String value, MaslType valueType) {
+        String java = parameter + " " + operator + " (" + value + ")";
         Class<?> target = JavaTypes.unboxed(type);
-        Class<?> source = JavaTypes.unboxed(program.typeOf(value));
+        Class<?> source = JavaTypes.unboxed(valueType);
         if (target == null || target == boolean.class || operator.startsWith("<") || operator.startsWith(">")) {
             return needsCast(target) ? "(" + target.getName() + ") (" + java + ")" : java;
         }

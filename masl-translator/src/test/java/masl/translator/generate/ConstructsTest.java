@@ -52,8 +52,9 @@ class ConstructsTest {
 
     @Test
     void readModifyWritesOfSharedVariablesAreAtomic() {
-        assertJournal("16 160 abcd\n", FOUR + """
+        assertJournal("16 160 abcd 10\n", FOUR + """
                 synchronous entry main (true) {
+                  shared int ids = 0;
                   shared int n = 0;
                   shared long total = 10;
                   shared String letters = "";
@@ -61,11 +62,12 @@ class ConstructsTest {
                   n++;
                   ++n;
                   n += 3;
+                  ids += .getProxyID() + 1;
                   total = total * 2;
                   old = n--;
                   scalar entry letter (true) { letters = letters + "a"; }
                   .nop();
-                  scalar entry report (true) { .logln(n + " " + total + " " + letters + "bcd"); }
+                  scalar entry report (true) { .logln(n + " " + total + " " + letters + "bcd " + ids); }
                 }
                 """);
     }

@@ -106,6 +106,19 @@ class GeneratorTest {
     }
 
     @Test
+    void aCompoundAssignmentOfASharedVariableEvaluatesItsValueBeforeTakingTheLock() {
+        String program = program("""
+                shared int n = 0;
+                n += .getProxyID() * 2;
+                n = n * 2 + .getProxyID();
+                """);
+        assertTrue(program.contains("tmp$1 = self.getProxyID() * 2;\n"), program);
+        assertTrue(program.contains("ctx.shared(MAIN_N).update(n -> n + (tmp$1));"), program);
+        assertTrue(program.contains("ctx.shared(MAIN_N).update(n -> n * 2 + self.getProxyID());"), program);
+        assertTrue(program.contains("private int tmp$1;"), program);
+    }
+
+    @Test
     void anIfWhoseBranchesCannotSuspendIsAPlainJavaIf() {
         String program = program("if (main.count > 1) main.lock(); else main.release(2);");
         assertTrue(program.contains("if (ctx.entry(MAIN).count() > 1) {"), program);
