@@ -37,6 +37,7 @@ final class ExpressionWriter {
     private final Unsupported unsupported;
     private final Map<Variable, String> locals = new java.util.LinkedHashMap<>();
     private final Map<String, Primitive> throwingPrimitives = new java.util.LinkedHashMap<>();
+    private boolean usesDynamicMembers;
     /** Temporaries of split expressions, field name to Java type. */
     private final Map<String, String> temporaries = new java.util.LinkedHashMap<>();
     /** Statements to run before the one being translated: values hoisted out of atomic updates. */
@@ -66,6 +67,11 @@ final class ExpressionWriter {
     /** Primitives called so far that declare checked exceptions: each gets a wrapper method. */
     Map<String, Primitive> throwingPrimitives() {
         return throwingPrimitives;
+    }
+
+    /** Whether members of Object-typed values were used: the program class then needs {@link DynamicMembers}. */
+    boolean usesDynamicMembers() {
+        return usesDynamicMembers;
     }
 
     /** The temporaries used so far: field name to Java type. */
@@ -407,7 +413,7 @@ final class ExpressionWriter {
             case ATTRIBUTE -> isThis(access.expression()) ? "self." + name
                     : unsupported.report(access, "an attribute of another agent");
             case JAVA_FIELD -> receiver(access.expression()) + "." + name;
-            case DYNAMIC -> unsupported.report(access, "a field of an Object-typed value");
+            case DYNAMIC -> dynamicField(access.expression(), name);
             default -> unsupported.report(access, "this member access");
         };
     }
@@ -426,9 +432,19 @@ final class ExpressionWriter {
             case JAVA_METHOD -> receiver(call.expression()) + "." + name + "(" + String.join(", ", all(arguments))
                     + ")";
             case LABEL_MEMBER -> unsupported.report(call, "a label member");
-            case DYNAMIC -> unsupported.report(call, "a method call on an Object-typed value");
+            case DYNAMIC -> dynamicCall(call.expression(), name, arguments);
             default -> unsupported.report(call, "this call");
         };
+    }
+
+    private String dynamicField(ExpressionContext receiver, String name) {
+        usesDynamicMembers = true;
+        return DynamicMembers.field(expr(receiver), name);
+    }
+
+    private String dynamicCall(ExpressionContext receiver, String name, List<ExpressionContext> arguments) {
+        usesDynamicMembers = true;
+        return DynamicMembers.call(expr(receiver), name, all(arguments));
     }
 
     private String receiver(ExpressionContext expression) {
@@ -526,6 +542,9 @@ final class ExpressionWriter {
                 && member.kind() == Member.Kind.ATTRIBUTE && !isThis(access.expression())) {
             return Optional.of(unsupported.report(target, "an attribute of another agent"));
         }
+        if (symbol instanceof Member member && member.kind() == Member.Kind.DYNAMIC) {
+            return Optional.of(unsupported.report(target, "an assignment to a field of an Object-typed value"));
+        }
         String left = expr(target);
         return Optional.of(left + " " + operator + " " + (operator.equals("=") ? converted(type, value) : expr(value)));
     }
@@ -575,6 +594,9 @@ final class ExpressionWriter {
                 return Optional.of("ctx.shared(" + structure.shared(variable) + ")."
                         + (prefix ? "update(" : "getAndUpdate(") + parameter + " -> " + function + ")");
             }
+        }
+        if (symbol instanceof Member member && member.kind() == Member.Kind.DYNAMIC) {
+            return Optional.of(unsupported.report(target, "an assignment to a field of an Object-typed value"));
         }
         String operand = expr(target);
         return Optional.of(prefix ? operator + operand : operand + operator);

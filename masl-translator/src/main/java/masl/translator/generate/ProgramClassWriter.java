@@ -86,6 +86,10 @@ final class ProgramClassWriter {
         out.add("            }");
         out.add("        }");
         out.add("    }");
+        if (expressions.usesDynamicMembers()) {
+            out.add("");
+            out.addAll(DynamicMembers.helpers());
+        }
         for (Primitive primitive : expressions.throwingPrimitives().values()) {
             out.add("");
             out.addAll(wrapper(primitive));

@@ -114,6 +114,24 @@ class ConstructsTest {
     }
 
     @Test
+    void membersOfObjectTypedValuesAreFoundAtRunTime() {
+        assertJournal("3\nbc\n3\ntrue\n", ONE + """
+                asynchronous entry main (true) {
+                  local java.util.Vector v = new java.util.Vector();
+                  local java.util.Vector w = new java.util.Vector();
+                  local int n = 0;
+                  v.add("abc");
+                  w.add(v.iterator());
+                  .logln(v.get(0).length());
+                  .logln(v.get(0).substring(1));
+                  n = v.get(0).length();
+                  .logln(n);
+                  .logln(w.get(0).hasNext());
+                }
+                """);
+    }
+
+    @Test
     void sleepSuspendsOnTheMissionClock() {
         assertJournal("slept\n", ONE + """
                 asynchronous entry main (true) {
