@@ -62,7 +62,6 @@ final class RunCommand {
             builder.scheduler(new ThreadPerAgentScheduler());
         } else if (line.seed != null) {
             builder.scheduler(new SeededScheduler(line.seed));
-            err.println("masl: seed " + line.seed);
         }
         builder.journal(out);
         Writer trace = openTrace(line.traceFile);
@@ -71,7 +70,7 @@ final class RunCommand {
         }
         Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
         try {
-            return report(runStoppable(builder.build(), timeout));
+            return report(runStoppable(builder.build(), timeout), line.seed);
         } finally {
             out.flush();
             closeTrace(trace, line.traceFile);
@@ -98,7 +97,7 @@ final class RunCommand {
         }
     }
 
-    private int report(MissionOutcome outcome) {
+    private int report(MissionOutcome outcome, Long seed) {
         if (outcome.completed()) {
             return Masl.OK;
         }
@@ -116,6 +115,9 @@ final class RunCommand {
         });
         if (!outcome.report().isEmpty()) {
             err.println(outcome.report().stripTrailing());
+        }
+        if (seed != null) {
+            err.println("masl: the same run again: --seed " + seed);
         }
         return Masl.MISSION_FAILED;
     }

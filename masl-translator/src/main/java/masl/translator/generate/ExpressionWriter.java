@@ -37,6 +37,11 @@ final class ExpressionWriter {
     private final Unsupported unsupported;
     private final Map<Variable, String> locals = new java.util.LinkedHashMap<>();
     private final Map<String, Primitive> throwingPrimitives = new java.util.LinkedHashMap<>();
+    private boolean usesDynamicMembers;
+    /** Temporaries of split expressions, field name to Java type. */
+    private final Map<String, String> temporaries = new java.util.LinkedHashMap<>();
+    /** Statements to run before the one being translated: values hoisted out of atomic updates. */
+    private final List<String> hoisted = new ArrayList<>();
     /** Inside the function of an atomic update: the variable updated and the function's parameter. */
     private Variable updated;
     private String updatedParameter;
@@ -64,6 +69,23 @@ final class ExpressionWriter {
         return throwingPrimitives;
     }
 
+    /** Whether members of Object-typed values were used: the program class then needs {@link DynamicMembers}. */
+    boolean usesDynamicMembers() {
+        return usesDynamicMembers;
+    }
+
+    /** The temporaries used so far: field name to Java type. */
+    Map<String, String> temporaries() {
+        return temporaries;
+    }
+
+    /** Takes the statements that must run before the statement just translated, in order. */
+    List<String> takeHoisted() {
+        List<String> taken = List.copyOf(hoisted);
+        hoisted.clear();
+        return taken;
+    }
+
     ImportedType selfType() {
         return selfType;
     }
@@ -74,6 +96,9 @@ final class ExpressionWriter {
     String condition(ExpressionContext expression) {
         if (usesAbsentMember(expression)) {
             return "false";
+        }
+        if (throwsChecked(expression)) {
+            return unsupported.report(expression, "a Java call that may throw a checked exception, in a condition,");
         }
         return truth(expression);
     }
@@ -144,6 +169,9 @@ final class ExpressionWriter {
         if (usesAbsentMember(initializer)) {
             return JavaTypes.defaultValue(target);
         }
+        if (throwsChecked(initializer)) {
+            return unsupported.report(initializer, "a Java call that may throw a checked exception, in an initialiser,");
+        }
         if (initializer.expression() != null) {
             return convertedBoxed(target, initializer.expression());
         }
@@ -210,6 +238,24 @@ final class ExpressionWriter {
         }
         for (int i = 0; i < tree.getChildCount(); i++) {
             if (mentions(tree.getChild(i), variable)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether {@code tree} calls Java code declaring checked exceptions (a primitive's are wrapped instead). */
+    boolean throwsChecked(org.antlr.v4.runtime.tree.ParseTree tree) {
+        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
+                && member.javaMember() != null) {
+            for (Class<?> exception : member.javaMember().getExceptionTypes()) {
+                if (!RuntimeException.class.isAssignableFrom(exception) && !Error.class.isAssignableFrom(exception)) {
+                    return true;
+                }
+            }
+        }
+        for (int i = 0; i < tree.getChildCount(); i++) {
+            if (throwsChecked(tree.getChild(i))) {
                 return true;
             }
         }
@@ -367,7 +413,7 @@ final class ExpressionWriter {
             case ATTRIBUTE -> isThis(access.expression()) ? "self." + name
                     : unsupported.report(access, "an attribute of another agent");
             case JAVA_FIELD -> receiver(access.expression()) + "." + name;
-            case DYNAMIC -> unsupported.report(access, "a field of an Object-typed value");
+            case DYNAMIC -> dynamicField(access.expression(), name);
             default -> unsupported.report(access, "this member access");
         };
     }
@@ -386,9 +432,19 @@ final class ExpressionWriter {
             case JAVA_METHOD -> receiver(call.expression()) + "." + name + "(" + String.join(", ", all(arguments))
                     + ")";
             case LABEL_MEMBER -> unsupported.report(call, "a label member");
-            case DYNAMIC -> unsupported.report(call, "a method call on an Object-typed value");
+            case DYNAMIC -> dynamicCall(call.expression(), name, arguments);
             default -> unsupported.report(call, "this call");
         };
+    }
+
+    private String dynamicField(ExpressionContext receiver, String name) {
+        usesDynamicMembers = true;
+        return DynamicMembers.field(expr(receiver), name);
+    }
+
+    private String dynamicCall(ExpressionContext receiver, String name, List<ExpressionContext> arguments) {
+        usesDynamicMembers = true;
+        return DynamicMembers.call(expr(receiver), name, all(arguments));
     }
 
     private String receiver(ExpressionContext expression) {
@@ -471,22 +527,47 @@ final class ExpressionWriter {
                 return Optional.of(shared + ".set(" + convertedBoxed(type, value) + ")");
             }
             String parameter = lambdaParameter(variable);
+            String binary = operator.substring(0, operator.length() - 1);
+            if (isStatement && !operator.equals("=") && !mentions(value, variable) && !isSimple(value)) {
+                // Only what reads the variable runs under its monitor (x += .sense() calls the primitive first).
+                String temporary = hoist(value);
+                return Optional.of(shared + ".update(" + parameter + " -> "
+                        + compound(type, parameter, binary, temporary, program.typeOf(value)) + ")");
+            }
             String function = inUpdate(variable, parameter, () -> operator.equals("=") ? convertedBoxed(type, value)
-                    : compound(type, parameter, operator.substring(0, operator.length() - 1), value));
+                    : compound(type, parameter, binary, expr(value), program.typeOf(value)));
             return Optional.of(shared + ".update(" + parameter + " -> " + function + ")");
         }
         if (target instanceof MASLParser.FieldAccessContext access && symbol instanceof Member member
                 && member.kind() == Member.Kind.ATTRIBUTE && !isThis(access.expression())) {
             return Optional.of(unsupported.report(target, "an attribute of another agent"));
         }
+        if (symbol instanceof Member member && member.kind() == Member.Kind.DYNAMIC) {
+            return Optional.of(unsupported.report(target, "an assignment to a field of an Object-typed value"));
+        }
         String left = expr(target);
         return Optional.of(left + " " + operator + " " + (operator.equals("=") ? converted(type, value) : expr(value)));
     }
 
-    private String compound(MaslType type, String parameter, String operator, ExpressionContext value) {
-        String java = parameter + " " + operator + " (" + expr(value) + ")";
+    /** Evaluates {@code value} into a new temporary, before the statement; returns the temporary. */
+    private String hoist(ExpressionContext value) {
+        String temporary = "tmp$" + (temporaries.size() + 1);
+        temporaries.put(temporary, JavaTypes.name(program.typeOf(value)));
+        hoisted.add(temporary + " = " + expr(value) + ";");
+        return temporary;
+    }
+
+    /** A literal or a name: nothing gained by evaluating it before an atomic update. */
+    private static boolean isSimple(ExpressionContext value) {
+        return value instanceof MASLParser.PrimaryExprContext primary
+                && (primary.primary() instanceof MASLParser.LiteralExprContext
+                || primary.primary() instanceof MASLParser.NameExprContext);
+    }
+
+    private String compound(MaslType type, String parameter, String operator, String value, MaslType valueType) {
+        String java = parameter + " " + operator + " (" + value + ")";
         Class<?> target = JavaTypes.unboxed(type);
-        Class<?> source = JavaTypes.unboxed(program.typeOf(value));
+        Class<?> source = JavaTypes.unboxed(valueType);
         if (target == null || target == boolean.class || operator.startsWith("<") || operator.startsWith(">")) {
             return needsCast(target) ? "(" + target.getName() + ") (" + java + ")" : java;
         }
@@ -513,6 +594,9 @@ final class ExpressionWriter {
                 return Optional.of("ctx.shared(" + structure.shared(variable) + ")."
                         + (prefix ? "update(" : "getAndUpdate(") + parameter + " -> " + function + ")");
             }
+        }
+        if (symbol instanceof Member member && member.kind() == Member.Kind.DYNAMIC) {
+            return Optional.of(unsupported.report(target, "an assignment to a field of an Object-typed value"));
         }
         String operand = expr(target);
         return Optional.of(prefix ? operator + operand : operand + operator);

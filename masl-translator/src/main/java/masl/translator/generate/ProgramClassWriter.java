@@ -61,6 +61,9 @@ final class ProgramClassWriter {
         for (Map.Entry<Variable, String> local : expressions.locals().entrySet()) {
             out.add("    private " + JavaTypes.name(local.getKey().type()) + " " + local.getValue() + ";");
         }
+        for (Map.Entry<String, String> temporary : expressions.temporaries().entrySet()) {
+            out.add("    private " + temporary.getValue() + " " + temporary.getKey() + ";");
+        }
         for (Block block : keptOnReelect) {
             if (block.variables().stream().anyMatch(v -> v.sharing() == Sharing.LOCAL)) {
                 out.add("    /** Set by a reelect of " + block.name() + ": its locals are kept if the agent enters again. */");
@@ -83,6 +86,10 @@ final class ProgramClassWriter {
         out.add("            }");
         out.add("        }");
         out.add("    }");
+        if (expressions.usesDynamicMembers()) {
+            out.add("");
+            out.addAll(DynamicMembers.helpers());
+        }
         for (Primitive primitive : expressions.throwingPrimitives().values()) {
             out.add("");
             out.addAll(wrapper(primitive));

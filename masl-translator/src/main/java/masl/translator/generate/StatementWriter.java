@@ -76,10 +76,11 @@ final class StatementWriter {
         if (root != null) {
             CaseWriter.Point end = cases.point();
             block(root, end);
-            cases.place(end, "after " + root.name());
+            cases.place(end, file + ":" + root.tree().getStop().getLine() + ": after " + root.name());
             cases.suspending("ctx.endOfSequence(" + structure.topSequence(root) + ")", cases.point());
+            cases.note(file + ":" + root.tree().getStop().getLine() + ": the end of the agent's program");
         } else {
-            cases.place(cases.point(), "a program without blocks only creates its agents");
+            cases.place(cases.point(), file + ":1: a program without blocks only creates its agents");
         }
         cases.line("ctx.finish();");
         cases.end("return;");
@@ -320,33 +321,19 @@ final class StatementWriter {
      * {@code uncaught_exception} (MASL 8); with no reaction to it, the occurrence is dropped.
      */
     private void writeGuarded(ExpressionContext expression, String java) {
-        if (!throwsChecked(expression)) {
+        List<String> before = expressions.takeHoisted();
+        if (!expressions.throwsChecked(expression)) {
+            before.forEach(cases::line);
             cases.line(java);
             return;
         }
         cases.open("try {");
+        before.forEach(cases::line);
         cases.line(java);
         cases.reopen("} catch (Exception uncaught) {");
         cases.line("// uncaught_exception (MASL 8): no reaction handles it, so the occurrence is dropped");
         cases.line("if (uncaught instanceof InterruptedException) Thread.currentThread().interrupt();");
         cases.close("}");
-    }
-
-    private boolean throwsChecked(org.antlr.v4.runtime.tree.ParseTree tree) {
-        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
-                && member.javaMember() != null) {
-            for (Class<?> exception : member.javaMember().getExceptionTypes()) {
-                if (!RuntimeException.class.isAssignableFrom(exception) && !Error.class.isAssignableFrom(exception)) {
-                    return true;
-                }
-            }
-        }
-        for (int i = 0; i < tree.getChildCount(); i++) {
-            if (throwsChecked(tree.getChild(i))) {
-                return true;
-            }
-        }
-        return false;
     }
 
     /** {@code .sleep(ms)} (when the type keeps Default's) and {@code Thread.sleep(ms)}: a timed suspension. */
@@ -407,7 +394,7 @@ final class StatementWriter {
         }
         if (statement instanceof MASLParser.ExpressionStmtContext expression) {
             return isZeroDuration(expression.expression()) && !expressions.usesAbsentMember(expression)
-                    && !throwsChecked(expression);
+                    && !expressions.throwsChecked(expression);
         }
         if (statement instanceof MASLParser.BlockStmtContext block) {
             return block.block().statement().stream().allMatch(this::isZeroDuration);
@@ -461,12 +448,7 @@ final class StatementWriter {
     private void forStatement(MASLParser.ForStmtContext loop) {
         cases.note(at(loop) + ": " + JavaText.header(loop));
         if (loop.init != null) {
-            for (ExpressionContext init : loop.init.expression()) {
-                String java = statementJava(init);
-                if (java != null) {
-                    cases.line(java + ";");
-                }
-            }
+            forExpressions(loop.init.expression());
         }
         CaseWriter.Point head = cases.point();
         CaseWriter.Point exit = cases.point();
@@ -476,15 +458,25 @@ final class StatementWriter {
         }
         body(loop.statement(), exit);
         if (loop.update != null) {
-            for (ExpressionContext update : loop.update.expression()) {
-                String java = statementJava(update);
-                if (java != null) {
-                    cases.line(java + ";");
-                }
-            }
+            forExpressions(loop.update.expression());
         }
         iteration(head, false);
         cases.place(exit, null);
+    }
+
+    /** The initialisation or update part of a {@code for}: part of the loop, with no step boundary of its own. */
+    private void forExpressions(List<ExpressionContext> parts) {
+        for (ExpressionContext part : parts) {
+            if (expressions.usesAbsentMember(part)) {
+                cases.comment("nothing for " + expressions.selfType().name() + ": its type lacks a member of "
+                        + JavaText.snippet(part) + " (MASL 4)");
+                continue;
+            }
+            String java = statementJava(part);
+            if (java != null) {
+                writeGuarded(part, java + ";");
+            }
+        }
     }
 
     private void doLoop(MASLParser.DoLoopStmtContext loop) {

@@ -52,8 +52,9 @@ class ConstructsTest {
 
     @Test
     void readModifyWritesOfSharedVariablesAreAtomic() {
-        assertJournal("16 160 abcd\n", FOUR + """
+        assertJournal("16 160 abcd 10\n", FOUR + """
                 synchronous entry main (true) {
+                  shared int ids = 0;
                   shared int n = 0;
                   shared long total = 10;
                   shared String letters = "";
@@ -61,10 +62,12 @@ class ConstructsTest {
                   n++;
                   ++n;
                   n += 3;
+                  ids += .getProxyID() + 1;
                   total = total * 2;
                   old = n--;
                   scalar entry letter (true) { letters = letters + "a"; }
-                  scalar entry report (true) { .logln(n + " " + total + " " + letters + "bcd"); }
+                  .nop();
+                  scalar entry report (true) { .logln(n + " " + total + " " + letters + "bcd " + ids); }
                 }
                 """);
     }
@@ -106,6 +109,24 @@ class ConstructsTest {
                   .logln(c);
                   .logln(Math.max(2, 7));
                   .logln(new java.util.Vector<Integer>().size());
+                }
+                """);
+    }
+
+    @Test
+    void membersOfObjectTypedValuesAreFoundAtRunTime() {
+        assertJournal("3\nbc\n3\ntrue\n", ONE + """
+                asynchronous entry main (true) {
+                  local java.util.Vector v = new java.util.Vector();
+                  local java.util.Vector w = new java.util.Vector();
+                  local int n = 0;
+                  v.add("abc");
+                  w.add(v.iterator());
+                  .logln(v.get(0).length());
+                  .logln(v.get(0).substring(1));
+                  n = v.get(0).length();
+                  .logln(n);
+                  .logln(w.get(0).hasNext());
                 }
                 """);
     }
