@@ -35,6 +35,8 @@ final class StatementWriter {
     private final AnalyzedProgram program;
     private final StaticStructure structure;
     private final ExpressionWriter expressions;
+    private final TreeQueries queries;
+    private final AssignmentWriter assignments;
     private final Unsupported unsupported;
     private final String file;
     private final CaseWriter cases = new CaseWriter();
@@ -53,6 +55,8 @@ final class StatementWriter {
         this.program = program;
         this.structure = structure;
         this.expressions = expressions;
+        this.queries = expressions.queries();
+        this.assignments = expressions.assignments();
         this.unsupported = unsupported;
         this.file = file;
         this.keptOnReelect = keptOnReelect;
@@ -283,12 +287,13 @@ final class StatementWriter {
     private void expressionStatement(MASLParser.ExpressionStmtContext statement) {
         ExpressionContext expression = statement.expression();
         cases.note(at(statement) + ": " + JavaText.snippet(statement));
-        if (expressions.usesAbsentMember(expression)) {
+        if (queries.usesAbsentMember(expression)) {
             cases.comment("a nop() for " + expressions.selfType().name()
                     + ": its type lacks a member this statement uses (MASL 4)");
         } else if (isSleep(expression)) {
             ExpressionContext duration = ExpressionWriter.arguments(sleepArguments(expression)).get(0);
             cases.suspending("ctx.sleep(" + expressions.expr(duration) + ")", cases.point());
+            cases.note(at(statement) + ": the step boundary after the sleep");
         } else {
             String java = statementJava(expression);
             if (java != null) {
@@ -304,14 +309,14 @@ final class StatementWriter {
 
     private String statementJava(ExpressionContext expression) {
         if (expression instanceof MASLParser.AssignExprContext assignment) {
-            return expressions.assignment(assignment, true).orElse(null);
+            return assignments.assignment(assignment, true).orElse(null);
         }
         if (expression instanceof MASLParser.PostfixExprContext postfix) {
-            return expressions.increment(postfix.expression(), postfix.op.getText(), false, true).orElse(null);
+            return assignments.increment(postfix.expression(), postfix.op.getText(), false, true).orElse(null);
         }
         if (expression instanceof MASLParser.PrefixExprContext prefix
                 && (prefix.op.getText().equals("++") || prefix.op.getText().equals("--"))) {
-            return expressions.increment(prefix.expression(), prefix.op.getText(), true, true).orElse(null);
+            return assignments.increment(prefix.expression(), prefix.op.getText(), true, true).orElse(null);
         }
         return expressions.expr(expression);
     }
@@ -321,8 +326,8 @@ final class StatementWriter {
      * {@code uncaught_exception} (MASL 8); with no reaction to it, the occurrence is dropped.
      */
     private void writeGuarded(ExpressionContext expression, String java) {
-        List<String> before = expressions.takeHoisted();
-        if (!expressions.throwsChecked(expression)) {
+        List<String> before = assignments.takeHoisted();
+        if (!queries.throwsChecked(expression)) {
             before.forEach(cases::line);
             cases.line(java);
             return;
@@ -393,8 +398,8 @@ final class StatementWriter {
             return true;
         }
         if (statement instanceof MASLParser.ExpressionStmtContext expression) {
-            return isZeroDuration(expression.expression()) && !expressions.usesAbsentMember(expression)
-                    && !expressions.throwsChecked(expression);
+            return isZeroDuration(expression.expression()) && !queries.usesAbsentMember(expression)
+                    && !queries.throwsChecked(expression);
         }
         if (statement instanceof MASLParser.BlockStmtContext block) {
             return block.block().statement().stream().allMatch(this::isZeroDuration);
@@ -467,7 +472,7 @@ final class StatementWriter {
     /** The initialisation or update part of a {@code for}: part of the loop, with no step boundary of its own. */
     private void forExpressions(List<ExpressionContext> parts) {
         for (ExpressionContext part : parts) {
-            if (expressions.usesAbsentMember(part)) {
+            if (queries.usesAbsentMember(part)) {
                 cases.comment("nothing for " + expressions.selfType().name() + ": its type lacks a member of "
                         + JavaText.snippet(part) + " (MASL 4)");
                 continue;
