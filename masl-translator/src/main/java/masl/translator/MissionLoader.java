@@ -47,6 +47,7 @@ public final class MissionLoader {
         for (Path entry : agentPath.entries()) {
             classPath.add(entry.toString());
         }
+        classPath.addAll(MaslClassPath.runtimeAndShippedAgents());
         List<InMemoryCompiler.Source> sources = new ArrayList<>();
         for (Map.Entry<String, String> source : translation.javaSources().entrySet()) {
             sources.add(new InMemoryCompiler.Source(source.getKey(), source.getValue()));
