@@ -1,122 +1,109 @@
 package masl.e2e;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.ArrayList;
-import java.util.Arrays;
-import java.util.Collections;
-import java.util.List;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
-import masl.e2e.Missions.Driver;
-import masl.translator.MissionLoader;
+import java.util.stream.Stream;
+import masl.testing.MaslMission;
+import masl.testing.MissionRun;
+import masl.testing.Schedule;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.EnumSource;
+import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * The worked examples of examples.md, translated from their MASL source: each run many times with
- * the pool scheduler and with a thread per agent, and over seeds of the deterministic scheduler,
- * gives the journal (or satisfies the journal constraints) examples.md states.
+ * The worked examples of examples.md, translated from their MASL source in
+ * {@code src/test/resources/examples}: each run 50 times with the pool scheduler and 50 times with a
+ * thread per agent, and under 10 seeds of the deterministic scheduler, gives the journal (or satisfies
+ * the journal constraints) examples.md states.
  */
 @Timeout(300)
 class ExamplesTest {
 
     private static final int RUNS = 50;
     private static final int SEEDS = 10;
+    private static final Path EXAMPLES = Path.of("src", "test", "resources", "examples");
+    private static final Map<String, MaslMission> MISSIONS = new ConcurrentHashMap<>();
 
-    @ParameterizedTest
-    @EnumSource(Driver.class)
-    void e1ScalarMainIsRunByOneAgent(Driver driver) {
-        repeat("e1_scalar_main.masl", driver, journal -> assertEquals("Hi team\n", journal));
-    }
-
-    @ParameterizedTest
-    @EnumSource(Driver.class)
-    void e2SharedAndLocalVariablesInLockStep(Driver driver) {
-        repeat("e2_shared_and_local.masl", driver, journal -> assertEquals("n=5\n" + "mine=1\n".repeat(5), journal));
-    }
-
-    @ParameterizedTest
-    @EnumSource(Driver.class)
-    void e3AsynchronousChildIsOneInstructionOfItsSynchronousParent(Driver driver) {
-        repeat("e3_asynchronous_child.masl", driver, journal -> assertEquals("xxxxxxyyyy\n", journal));
-    }
-
-    @ParameterizedTest
-    @EnumSource(Driver.class)
-    void e6LockedBlockAdmitsOneAgentPerWave(Driver driver) {
-        repeat("e6_one_at_a_time.masl", driver, journal -> assertEquals("in 1\n".repeat(3), journal));
-    }
-
-    @ParameterizedTest
-    @EnumSource(Driver.class)
-    void e7ReelectThinsTheWaveOut(Driver driver) {
-        repeat("e7_reelect.masl", driver, ExamplesTest::assertE7);
-    }
-
-    @ParameterizedTest
-    @EnumSource(Driver.class)
-    void e8BreakLeavesTwoBlocks(Driver driver) {
-        repeat("e8_break_out_of_two.masl", driver, ExamplesTest::assertE8);
-    }
-
-    @Test
-    void examplesHoldOverSeeds() {
-        for (long seed = 1; seed <= SEEDS; seed++) {
-            long s = seed;
-            assertEquals("Hi team\n", seeded("e1_scalar_main.masl", s));
-            assertEquals("n=5\n" + "mine=1\n".repeat(5), seeded("e2_shared_and_local.masl", s));
-            assertEquals("xxxxxxyyyy\n", seeded("e3_asynchronous_child.masl", s));
-            assertEquals("in 1\n".repeat(3), seeded("e6_one_at_a_time.masl", s));
-            assertE7(seeded("e7_reelect.masl", s));
-            assertE8(seeded("e8_break_out_of_two.masl", s));
-        }
-    }
-
-    @Test
-    void aSeedReplaysItsJournal() {
-        MissionLoader e8 = Missions.example("e8_break_out_of_two.masl");
-        for (long seed = 1; seed <= SEEDS; seed++) {
-            assertEquals(Missions.journalWithSeed(e8, seed), Missions.journalWithSeed(e8, seed), "seed " + seed);
-        }
-    }
-
-    private static String seeded(String example, long seed) {
-        return Missions.journalWithSeed(Missions.example(example), seed);
-    }
-
-    private static void repeat(String example, Driver driver, Consumer<String> assertion) {
-        MissionLoader loaded = Missions.example(example);
-        for (int run = 0; run < RUNS; run++) {
-            assertion.accept(Missions.journal(loaded, driver));
-        }
-    }
-
-    /** E7: {@code 0:1}, {@code 1:2}, {@code 2:3} in some order. */
-    private static void assertE7(String journal) {
-        assertEquals(List.of("0:1", "1:2", "2:3"), sortedLines(journal), journal);
-    }
-
-    /** E8: two {@code in}, two {@code out}, no {@code never}; each agent's {@code in} precedes its {@code out}. */
-    private static void assertE8(String journal) {
-        assertEquals(List.of("in", "in", "out", "out"), sortedLines(journal), journal);
+    private static final Consumer<MissionRun> E1 = run -> run.assertJournal("Hi team\n");
+    private static final Consumer<MissionRun> E2 = run -> run.assertJournal("n=5\n" + "mine=1\n".repeat(5));
+    private static final Consumer<MissionRun> E3 = run -> run.assertJournal("xxxxxxyyyy\n");
+    private static final Consumer<MissionRun> E6 = run -> run.assertJournal("in 1\n".repeat(3));
+    private static final Consumer<MissionRun> E7 = run -> run.assertLinesInAnyOrder("0:1", "1:2", "2:3");
+    /** Two {@code in}, two {@code out}, no {@code never}; each agent's {@code in} precedes its {@code out}. */
+    private static final Consumer<MissionRun> E8 = run -> {
+        run.assertLinesInAnyOrder("in", "in", "out", "out");
         int ins = 0;
         int outs = 0;
-        for (String line : journal.split("\n")) {
-            if (line.equals("in")) {
-                ins++;
-            } else {
-                outs++;
-            }
-            assertTrue(outs <= ins, "an out before its agent's in: " + journal);
+        for (String line : run.journalLines()) {
+            ins += line.equals("in") ? 1 : 0;
+            outs += line.equals("out") ? 1 : 0;
+            assertTrue(outs <= ins, "an out before its agent's in under " + run.schedule() + ":\n" + run.journal());
         }
+    };
+
+    static Stream<Schedule> schedulers() {
+        return Stream.of(Schedule.pool(), Schedule.threads());
     }
 
-    private static List<String> sortedLines(String journal) {
-        List<String> lines = new ArrayList<>(Arrays.asList(journal.split("\n")));
-        Collections.sort(lines);
-        return lines;
+    @ParameterizedTest
+    @MethodSource("schedulers")
+    void e1ScalarMainIsRunByOneAgent(Schedule schedule) {
+        repeat("e1_scalar_main.masl", schedule, E1);
+    }
+
+    @ParameterizedTest
+    @MethodSource("schedulers")
+    void e2SharedAndLocalVariablesInLockStep(Schedule schedule) {
+        repeat("e2_shared_and_local.masl", schedule, E2);
+    }
+
+    @ParameterizedTest
+    @MethodSource("schedulers")
+    void e3AsynchronousChildIsOneInstructionOfItsSynchronousParent(Schedule schedule) {
+        repeat("e3_asynchronous_child.masl", schedule, E3);
+    }
+
+    @ParameterizedTest
+    @MethodSource("schedulers")
+    void e6LockedBlockAdmitsOneAgentPerWave(Schedule schedule) {
+        repeat("e6_one_at_a_time.masl", schedule, E6);
+    }
+
+    @ParameterizedTest
+    @MethodSource("schedulers")
+    void e7ReelectThinsTheWaveOut(Schedule schedule) {
+        repeat("e7_reelect.masl", schedule, E7);
+    }
+
+    @ParameterizedTest
+    @MethodSource("schedulers")
+    void e8BreakLeavesTwoBlocks(Schedule schedule) {
+        repeat("e8_break_out_of_two.masl", schedule, E8);
+    }
+
+    @Test
+    void everyExampleHoldsUnderSeeds() {
+        example("e1_scalar_main.masl").explore(SEEDS).assertEveryRun(E1);
+        example("e2_shared_and_local.masl").explore(SEEDS).assertEveryRun(E2);
+        example("e3_asynchronous_child.masl").explore(SEEDS).assertEveryRun(E3);
+        example("e6_one_at_a_time.masl").explore(SEEDS).assertEveryRun(E6);
+        example("e7_reelect.masl").explore(SEEDS).assertEveryRun(E7);
+        example("e8_break_out_of_two.masl").explore(SEEDS).assertEveryRun(E8);
+    }
+
+    private static MaslMission example(String file) {
+        return MISSIONS.computeIfAbsent(file, name -> MaslMission.fromFile(EXAMPLES.resolve(name)));
+    }
+
+    private static void repeat(String file, Schedule schedule, Consumer<MissionRun> property) {
+        MaslMission mission = example(file);
+        for (int run = 0; run < RUNS; run++) {
+            property.accept(mission.runWith(schedule).assertCompleted());
+        }
     }
 }
