@@ -216,8 +216,9 @@ final class ExpressionWriter {
                     + expr(conditional.whenFalse);
         } else if (expression instanceof MASLParser.AssignExprContext assignment) {
             return assignments.assignment(assignment, false).orElse("null");
-        } else if (expression instanceof MASLParser.InstanceofExprContext) {
-            return unsupported.report(expression, "instanceof");
+        } else if (expression instanceof MASLParser.InstanceofExprContext test) {
+            // An agent type is its implementation class; type arguments are erased, as the analysis does.
+            return expr(test.expression()) + " instanceof " + JavaTypes.name(program.typeOf(test.javaType()));
         }
         return unsupported.report(expression, "this expression");
     }
