@@ -412,20 +412,16 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void emit(Event event, String message) {
-        Agent[] receivers;
-        if (event.isShared()) {
-            Entry block = mission.entry(event.block());
-            requireMember(event, block);
-            receivers = block.perceivers();
-        } else {
-            if (!event.isSystemEvent()) {
-                requireMember(event, mission.entry(event.block()));
-            }
-            receivers = new Agent[] {this};
+        if (event.isSystemEvent()) {
+            raise(event, message);
+            return;
         }
+        Entry block = mission.entry(event.block());
+        requireMember(event, block);
+        Agent[] receivers = event.isShared() ? block.perceivers() : new Agent[] {this};
         EventOccurrence occurrence = new EventOccurrence(event, message, id);
-        mission.trace().record(new TraceEvent.EventEmitted(System.nanoTime(), id, event.name(),
-                event.isSystemEvent() ? null : event.block().name(), message, receivers.length));
+        mission.trace().record(new TraceEvent.EventEmitted(System.nanoTime(), id, event.name(), block.name(), message,
+                receivers.length));
         for (Agent receiver : receivers) {
             receiver.perceive(occurrence);
         }
@@ -499,6 +495,19 @@ final class Agent implements AgentContext, AgentTask {
         invocations.add(invocation);
         serveIfPending();
         mission.changes().advance();
+    }
+
+    /**
+     * Makes this agent perceive a system event ({@code timeout}, {@code uncaught_exception},
+     * {@code forbidden_access}: local to it, §8). Safe from any thread, for instance from an agent
+     * serving an invocation that this agent made.
+     */
+    void raise(Event systemEvent, String message) {
+        if (!systemEvent.isSystemEvent()) {
+            throw new IllegalArgumentException(systemEvent + " is not a system event");
+        }
+        mission.trace().record(new TraceEvent.EventEmitted(System.nanoTime(), id, systemEvent.name(), null, message, 1));
+        perceive(new EventOccurrence(systemEvent, message, id));
     }
 
     /** Perceives an occurrence (§8): from any thread, never blocks; wakes a parked busy-wait (§5). */
