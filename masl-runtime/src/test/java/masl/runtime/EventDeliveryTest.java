@@ -12,6 +12,7 @@ import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.PhaseLog;
 import masl.runtime.testing.TestAgent;
+import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.MemoryTrace;
 import masl.runtime.trace.Trace;
 import masl.runtime.trace.TraceEvent;
@@ -618,6 +619,82 @@ class EventDeliveryTest {
             MemoryTrace trace = new MemoryTrace();
             Missions.run(driver, WakeUp.MAIN, 2, WakeUp::new, trace);
             assertEquals(List.of("go@listen"), ReactionRulesTest.reactions(trace));
+        }
+    }
+
+    /**
+     * A reaction's {@code break} out of a synchronous child: the leavers are no longer waited for.
+     * <pre>
+     * synchronous entry main (true) {
+     *   synchronous entry work (true) {
+     *     shared event stop;
+     *     .log("w1 ");
+     *     if (.getProxyID() == 0) emit(stop); else .nop();
+     *     .log("w3 ");
+     *     .log("w4 ");
+     *     react (stop) { break; }
+     *   }
+     *   .logln("after");
+     * }
+     * </pre>
+     * Every member reacts at the boundary of the emission or of {@code w3}: nobody logs {@code w4}.
+     */
+    static final class BreakInLockStep extends CompactProgram {
+        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
+        static final EntryDefinition WORK = MAIN.child("work", Mode.SYNCHRONOUS);
+        static final Event STOP = WORK.declareSharedEvent("stop");
+        static final Reaction WORK_STOP = WORK.react(STOP);
+
+        BreakInLockStep(TestAgent self) {
+            super(self);
+        }
+
+        @Override
+        protected int reactionPc(Reaction reaction) {
+            return 20;
+        }
+
+        @Override
+        protected void resume(AgentContext ctx) {
+            while (true) {
+                switch (pc) {
+                    case 0: if (!arrive(ctx, MAIN, true, 1, 10)) return; continue;
+                    case 1: if (!arrive(ctx, WORK, true, 2, 7)) return; continue;
+                    case 2: self.log("w1 "); if (!step(ctx, 3)) return; continue;
+                    case 3:
+                        if (self.getProxyID() == 0) {
+                            ctx.emit(STOP);
+                        } else {
+                            self.nop();
+                        }
+                        if (!step(ctx, 4)) return;
+                        continue;
+                    case 4: self.log("w3 "); if (!step(ctx, 5)) return; continue;
+                    case 5: self.log("w4 "); if (!step(ctx, 6)) return; continue;
+                    case 6: if (!leave(ctx, WORK, 7)) return; continue;
+                    case 7: if (!endOf(ctx, WORK.sequence(), 8)) return; continue;
+                    case 8: self.logln("after"); if (!step(ctx, 9)) return; continue;
+                    case 9: if (!leave(ctx, MAIN, 10)) return; continue;
+                    case 10: if (!endOf(ctx, MAIN.sequence(), 11)) return; continue;
+                    case 11: ctx.finish(); return;
+                    case 20: if (!breakAfterReaction(ctx, WORK, 7)) return; continue;
+                    default: throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void aReactionsBreakOutOfASynchronousBlockIsNotWaitedFor(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            MemoryTrace trace = new MemoryTrace();
+            String journal = Missions.run(driver, BreakInLockStep.MAIN, 3, BreakInLockStep::new, trace).journal();
+            assertEquals(3, journal.split("w1 ", -1).length - 1, journal);
+            assertEquals(3, journal.split("after\n", -1).length - 1, journal);
+            assertTrue(!journal.contains("w4"), journal);
+            assertEquals(3, trace.events(TraceEvent.Left.class).stream()
+                    .filter(e -> e.block().equals("work") && e.cause() == LeaveCause.BREAK).count());
         }
     }
 
