@@ -420,7 +420,7 @@ final class Agent implements AgentContext, AgentTask {
         requireMember(event, block);
         Agent[] receivers = event.isShared() ? block.perceivers() : new Agent[] {this};
         EventOccurrence occurrence = new EventOccurrence(event, message, id);
-        mission.trace().record(new TraceEvent.EventEmitted(System.nanoTime(), id, event.name(), block.name(), message,
+        mission.trace().record(new TraceEvent.EventEmitted(mission.scheduler().nanoTime(), id, event.name(), block.name(), message,
                 receivers.length));
         for (Agent receiver : receivers) {
             receiver.perceive(occurrence);
@@ -506,7 +506,7 @@ final class Agent implements AgentContext, AgentTask {
         if (!systemEvent.isSystemEvent()) {
             throw new IllegalArgumentException(systemEvent + " is not a system event");
         }
-        mission.trace().record(new TraceEvent.EventEmitted(System.nanoTime(), id, systemEvent.name(), null, message, 1));
+        mission.trace().record(new TraceEvent.EventEmitted(mission.scheduler().nanoTime(), id, systemEvent.name(), null, message, 1));
         perceive(new EventOccurrence(systemEvent, message, id));
     }
 
@@ -551,7 +551,7 @@ final class Agent implements AgentContext, AgentTask {
         ReactionPlan.Step step = reactionsToRun.poll();
         reactingTo = step.occurrence();
         Reaction reaction = step.reaction();
-        mission.trace().record(new TraceEvent.EventReacted(System.nanoTime(), id, reactingTo.event().name(),
+        mission.trace().record(new TraceEvent.EventReacted(mission.scheduler().nanoTime(), id, reactingTo.event().name(),
                 reaction.block().name(), reaction.isDefault()));
         program.jump(program.reactionPc(reaction));
         suspended = true;
@@ -559,7 +559,7 @@ final class Agent implements AgentContext, AgentTask {
     }
 
     private void traceDropped(EventOccurrence occurrence) {
-        mission.trace().record(new TraceEvent.EventDropped(System.nanoTime(), id, occurrence.event().name()));
+        mission.trace().record(new TraceEvent.EventDropped(mission.scheduler().nanoTime(), id, occurrence.event().name()));
     }
 
     private boolean isReacting() {

@@ -60,7 +60,7 @@ public final class Mission {
         scheduler = builder.scheduler != null ? builder.scheduler : new PoolScheduler();
         journal = new Journal(builder.journalSink);
         trace = builder.trace;
-        coordinator = new EntryCoordinator(trace, changes);
+        coordinator = new EntryCoordinator(trace, scheduler::nanoTime, changes);
         Map<EntryDefinition, Entry> blocks = new IdentityHashMap<>();
         if (builder.main != null) {
             addEntries(builder.main, null, blocks);
