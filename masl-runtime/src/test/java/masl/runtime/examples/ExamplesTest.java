@@ -3,6 +3,7 @@ package masl.runtime.examples;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.StringWriter;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
@@ -10,6 +11,7 @@ import java.util.List;
 import masl.runtime.SeededScheduler;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;
+import masl.runtime.trace.JsonLinesTrace;
 import masl.runtime.trace.Trace;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -60,6 +62,21 @@ class ExamplesTest {
         for (long seed = 1; seed <= 20; seed++) {
             assertE4Journal(Missions.run(new SeededScheduler(seed), E4Events.MAIN, 4, E4Events::new, Trace.NONE)
                     .journal());
+        }
+    }
+
+    @Test
+    void e4WithOneSeedGivesTheSameJournalAndTraceByteForByte() {
+        for (long seed = 1; seed <= 5; seed++) {
+            List<String> runs = new ArrayList<>();
+            for (int run = 0; run < 2; run++) {
+                StringWriter trace = new StringWriter();
+                String journal = Missions.run(new SeededScheduler(seed), E4Events.MAIN, 4, E4Events::new,
+                        new JsonLinesTrace(trace)).journal();
+                runs.add(journal + trace);
+            }
+            assertTrue(runs.get(0).contains("\"event\":\"event-reacted\""), runs.get(0));
+            assertEquals(runs.get(0), runs.get(1), "seed " + seed);
         }
     }
 
