@@ -90,10 +90,10 @@ class JadePlatformTest {
                 failure.getMessage());
     }
 
-    /** Threads alive now that were not alive before: what a platform left behind. */
+    /** Threads alive now that were not alive before, but JUnit's own: what a platform left behind. */
     static List<String> newThreads(Set<Thread> before) {
         return Thread.getAllStackTraces().keySet().stream()
-                .filter(thread -> thread.isAlive() && !before.contains(thread))
+                .filter(thread -> thread.isAlive() && !before.contains(thread) && !thread.getName().startsWith("junit-"))
                 .map(Thread::getName)
                 .toList();
     }

@@ -70,12 +70,14 @@ public final class JsonContent {
                 throw at(parser, "expected an object {\"" + PRIMITIVE + "\": name, \"" + ARGS + "\": [...]}");
             }
             String primitive = null;
+            JsonLocation primitiveStart = null;
             List<Argument> args = null;
             while (parser.nextToken() == JsonToken.FIELD_NAME) {
                 String field = parser.currentName();
                 JsonLocation fieldStart = parser.currentTokenLocation();
                 parser.nextToken();
                 if (PRIMITIVE.equals(field) && primitive == null) {
+                    primitiveStart = parser.currentTokenLocation();
                     primitive = primitiveName(parser);
                 } else if (ARGS.equals(field) && args == null) {
                     args = arguments(parser);
@@ -92,7 +94,8 @@ public final class JsonContent {
             if (parser.nextToken() != null) {
                 throw at(parser, "unexpected content after the request object");
             }
-            return new InvocationRequest(primitive, args == null ? List.of() : args);
+            return new InvocationRequest(primitive, primitiveStart.getLineNr(), primitiveStart.getColumnNr(),
+                    args == null ? List.of() : args);
         } catch (JsonProcessingException e) {
             JsonLocation location = e.getLocation();
             throw new ContentException("malformed JSON: " + firstLine(e.getOriginalMessage()),

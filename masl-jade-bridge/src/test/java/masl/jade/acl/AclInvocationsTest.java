@@ -11,12 +11,12 @@ import org.junit.jupiter.api.Test;
 /** The FIPA-ACL envelope of invocations: performatives, language, ontology, reply-with/in-reply-to. */
 class AclInvocationsTest {
 
-    private static final AID CALLEE = new AID("b", AID.ISLOCALNAME);
+    private static final AID CALLEE = new AID("b@test", AID.ISGUID);
 
     @Test
     void aRequestAndItsRepliesCarryTheConversation() throws Exception {
         ACLMessage request = AclInvocations.request(CALLEE, "log", List.of("hi"), "r-1");
-        request.setSender(new AID("caller", AID.ISLOCALNAME));
+        request.setSender(new AID("caller@test", AID.ISGUID));
         assertEquals(ACLMessage.REQUEST, request.getPerformative());
         assertEquals("json", request.getLanguage());
         assertEquals("masl", request.getOntology());
@@ -27,7 +27,7 @@ class AclInvocationsTest {
         ACLMessage inform = AclInvocations.reply(request, Reply.Kind.RESULT, JsonContent.result(null));
         assertEquals(ACLMessage.INFORM, inform.getPerformative());
         assertEquals("r-1", inform.getInReplyTo());
-        assertEquals(List.of(new AID("caller", AID.ISLOCALNAME)), receivers(inform));
+        assertEquals(List.of(new AID("caller@test", AID.ISGUID)), receivers(inform));
         assertEquals(Reply.Result.class, AclInvocations.readReply(inform).getClass());
 
         assertEquals(ACLMessage.REFUSE, AclInvocations.reply(request, Reply.Kind.REFUSED, "{}").getPerformative());
@@ -41,7 +41,7 @@ class AclInvocationsTest {
     void aPlainFipaRequestWithoutLanguageOrOntologyIsUnderstood() throws Exception {
         ACLMessage request = new ACLMessage(ACLMessage.REQUEST);
         request.setContent("{\"primitive\":\"nop\"}");
-        assertEquals(new InvocationRequest("nop", List.of()), AclInvocations.readRequest(request));
+        assertEquals(new InvocationRequest("nop", 1, 14, List.of()), AclInvocations.readRequest(request));
     }
 
     @Test

@@ -36,7 +36,7 @@ class JsonContentTest {
 
     @Test
     void argsMayBeLeftOutWhenThereAreNone() throws Exception {
-        assertEquals(new InvocationRequest("nop", List.of()), JsonContent.parseRequest("{\"primitive\":\"nop\"}"));
+        assertEquals(new InvocationRequest("nop", 1, 14, List.of()), JsonContent.parseRequest("{\"primitive\":\"nop\"}"));
     }
 
     @ParameterizedTest
