@@ -32,6 +32,7 @@ public final class LockStepScheduler implements Scheduler {
     private final List<AgentTask> runnable = new ArrayList<>();
     private int slicesSinceStep;
     private Thread worker;
+    private volatile boolean shutDown;
 
     /**
      * @param world         stepped by this scheduler only, never {@link PhysicsWorld#start() started}
@@ -58,7 +59,7 @@ public final class LockStepScheduler implements Scheduler {
 
     private void work() {
         try {
-            while (!Thread.currentThread().isInterrupted()) {
+            while (!shutDown) {
                 AgentTask next = next();
                 if (next != null) {
                     next.runSlice();
@@ -107,10 +108,31 @@ public final class LockStepScheduler implements Scheduler {
         return 1;
     }
 
+    /**
+     * Stops the worker and waits until it has ended, so that the world is no longer stepped when
+     * this returns and its owner may close it. Called by the mission from another thread.
+     */
     @Override
-    public synchronized void shutdown() {
-        if (worker != null) {
-            worker.interrupt();
+    public void shutdown() {
+        Thread running;
+        synchronized (this) {
+            shutDown = true;
+            running = worker;
+        }
+        if (running == null || running == Thread.currentThread()) {
+            return;
+        }
+        running.interrupt();
+        boolean interrupted = false;
+        while (running.isAlive()) {
+            try {
+                running.join();
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
         }
     }
 }

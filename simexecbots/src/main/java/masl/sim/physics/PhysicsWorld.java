@@ -377,6 +377,14 @@ public final class PhysicsWorld implements AutoCloseable {
         return joints.containsKey(jointName);
     }
 
+    /**
+     * The top-down outlines of the static boxes (walls, obstacles) of the world: each the four
+     * corners (x, y) of the box's face most nearly parallel to the ground, projected on it.
+     */
+    public List<double[][]> staticBoxOutlines() {
+        return withLock(() -> StaticOutlines.of(space));
+    }
+
     /** Adds a listener told after every later step (see {@link StepListener}). */
     public void addStepListener(StepListener listener) {
         listeners.add(listener);

@@ -41,8 +41,25 @@ public final class SimulatedAtom implements AtomHardware {
      * registered by the launcher once it knows their proxy ids.
      */
     public static final class Latches {
+        /** Told of every latch made or released, while the latches' lock is held. */
+        @FunctionalInterface
+        public interface Listener {
+            /** @param foot the leg body of the atom that acted, e.g. {@code a0.frontLeg} */
+            void changed(boolean attached, String foot, String otherFoot);
+        }
+
         private final Map<Integer, SimulatedAtom> atoms = new HashMap<>();
         private final Map<String, String> jointOfFoot = new HashMap<>();
+        private final Listener listener;
+
+        /** Latches nobody listens to. */
+        public Latches() {
+            this((attached, foot, otherFoot) -> { });
+        }
+
+        public Latches(Listener listener) {
+            this.listener = listener;
+        }
 
         /** Makes {@code atom} reachable as the neighbour with proxy id {@code proxyId}. */
         public synchronized void register(int proxyId, SimulatedAtom atom) {
@@ -70,7 +87,13 @@ public final class SimulatedAtom implements AtomHardware {
      */
     public static SimulatedAtom load(PhysicsWorld world, String prefix, double x, double y, double heading, Latches latches)
             throws XodeException {
-        world.load(BODY, prefix, Pose.axisAngle(0, 0, 1, heading).withTranslation(x, y, 0));
+        return load(world, BODY, prefix, x, y, heading, latches);
+    }
+
+    /** Like {@link #load(PhysicsWorld, String, double, double, double, Latches)} with another body, named alike. */
+    public static SimulatedAtom load(PhysicsWorld world, XodeSource body, String prefix, double x, double y, double heading,
+            Latches latches) throws XodeException {
+        world.load(body, prefix, Pose.axisAngle(0, 0, 1, heading).withTranslation(x, y, 0));
         SimulatedAtom atom = new SimulatedAtom(world, prefix, latches);
         for (int leg = 0; leg < MaamAtom.LEGS; leg++) {
             atom.setServoTarget(leg, MaamAtom.SWING, 0);
@@ -125,6 +148,7 @@ public final class SimulatedAtom implements AtomHardware {
             world.attachFixed(joint, mine, theirs);
             latches.jointOfFoot.put(mine, joint);
             latches.jointOfFoot.put(theirs, joint);
+            latches.listener.changed(true, mine, theirs);
             return true;
         }
     }
@@ -132,10 +156,16 @@ public final class SimulatedAtom implements AtomHardware {
     @Override
     public void detach(int leg) {
         synchronized (latches) {
-            String joint = latches.jointOfFoot.get(legBody(leg));
+            String mine = legBody(leg);
+            String joint = latches.jointOfFoot.get(mine);
             if (joint != null) {
                 world.detach(joint);
-                latches.jointOfFoot.values().removeIf(joint::equals);
+                String theirs = latches.jointOfFoot.entrySet().stream()
+                        .filter(e -> e.getValue().equals(joint) && !e.getKey().equals(mine))
+                        .map(Map.Entry::getKey).findFirst().orElseThrow();
+                latches.jointOfFoot.remove(mine);
+                latches.jointOfFoot.remove(theirs);
+                latches.listener.changed(false, mine, theirs);
             }
         }
     }

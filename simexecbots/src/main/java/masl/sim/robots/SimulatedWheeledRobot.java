@@ -77,7 +77,16 @@ public final class SimulatedWheeledRobot implements DifferentialDrive, PhysicsWo
      */
     public static SimulatedWheeledRobot load(PhysicsWorld world, String prefix, double x, double y, double heading)
             throws XodeException {
-        LoadedModel model = world.load(BODY, prefix, Pose.axisAngle(0, 0, 1, heading).withTranslation(x, y, 0));
+        return load(world, BODY, prefix, x, y, heading);
+    }
+
+    /**
+     * Like {@link #load(PhysicsWorld, String, double, double, double)} with another body, which
+     * must name its bodies, hull geom and motors as {@code wheeled-robot.xode} does.
+     */
+    public static SimulatedWheeledRobot load(PhysicsWorld world, XodeSource body, String prefix, double x, double y,
+            double heading) throws XodeException {
+        LoadedModel model = world.load(body, prefix, Pose.axisAngle(0, 0, 1, heading).withTranslation(x, y, 0));
         double[] hull = world.withLock(() -> {
             DVector3C offset = model.geom(prefix + "hull").getOffsetPosition();
             return new double[] {offset.get0(), offset.get1(), offset.get2()};
