@@ -109,6 +109,14 @@ public final class LockStepScheduler implements Scheduler {
     }
 
     /**
+     * Stops running slices and stepping the world after the current slice or step, without waiting:
+     * callable from the worker itself (a step listener ending the run at a simulated time).
+     */
+    public void halt() {
+        shutDown = true;
+    }
+
+    /**
      * Stops the worker and waits until it has ended, so that the world is no longer stepped when
      * this returns and its owner may close it. Called by the mission from another thread.
      */

@@ -35,6 +35,11 @@ public final class TrajectoryPicture {
 
     private final int size;
 
+    /** The colour of the {@code index}-th robot's path (robots in the order of their first sample). */
+    public static Color colour(int index) {
+        return PALETTE[index % PALETTE.length];
+    }
+
     /** @param size the picture's width and height in pixels, at least 200 */
     public TrajectoryPicture(int size) {
         if (size < 200) {

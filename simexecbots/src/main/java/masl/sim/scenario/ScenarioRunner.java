@@ -47,7 +47,8 @@ import masl.sim.xode.XodeSource;
  * <p>Agents are matched by name: a program agent the scenario places gets the scenario's model
  * and class; one it does not place is a software agent of its declared type. The run ends when the
  * mission ends, when the scenario's {@code duration} of simulated time has passed (outcome
- * {@code STOPPED}), or at the wall-clock timeout. A runner may run its scenario any number of times.
+ * {@code STOPPED}; in lock-step exactly then, with the physics thread a few steps later), or at
+ * the wall-clock timeout. A runner may run its scenario any number of times.
  */
 public final class ScenarioRunner {
 
@@ -126,12 +127,16 @@ public final class ScenarioRunner {
         program.configure(builder, spec -> implementations.get(spec.name()));
         Mission mission = builder.build();
 
-        world.addStepListener(new FaultInjector(simulation, recorder));
+        // The recorder first: events of a step's listeners are stamped with that step's time.
         world.addStepListener(recorder);
+        world.addStepListener(new FaultInjector(simulation, recorder));
         if (scenario.duration() > 0) {
             AtomicBoolean stopped = new AtomicBoolean();
             world.addStepListener(stepped -> {
                 if (stepped.simulatedTime() >= scenario.duration() - 1e-9 && stopped.compareAndSet(false, true)) {
+                    if (scheduler instanceof LockStepScheduler lockStep) {
+                        lockStep.halt();
+                    }
                     mission.stop();
                 }
             });
