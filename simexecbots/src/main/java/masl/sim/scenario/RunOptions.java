@@ -11,7 +11,8 @@ import masl.runtime.trace.Trace;
  *
  * @param timeout   wall-clock limit of the run (the scenario's {@code duration} limits simulated time)
  * @param journal   where the mission journal is written as it grows, or null for nowhere but the result
- * @param trace     the runtime's trace of memberships and barriers
+ * @param trace     the runtime's trace of memberships and barriers, as the runtime stamps it (wall-clock
+ *                  nanoseconds); {@code trace.jsonl} and {@link SimulationResult#trace()} carry simulated time
  * @param output    a folder to write {@code trajectories.csv}, {@code events.jsonl}, {@code trace.jsonl},
  *                  {@code journal.txt} and {@code trajectories.png} to, created if missing
  * @param classes   loads the implementation and initialisation classes the scenario names, or null

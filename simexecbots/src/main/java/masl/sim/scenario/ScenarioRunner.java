@@ -22,6 +22,7 @@ import masl.runtime.trace.Trace;
 import masl.sim.clock.LockStepScheduler;
 import masl.sim.clock.ThreadedSimulationScheduler;
 import masl.sim.output.RunRecorder;
+import masl.sim.output.SimulatedTimeTrace;
 import masl.sim.output.TrajectoryPicture;
 import masl.sim.physics.PhysicsWorld;
 import masl.sim.robots.SimulatedAtom;
@@ -113,8 +114,11 @@ public final class ScenarioRunner {
         RunRecorder recorder = simulation.recorder();
         StringBuilder traceText = new StringBuilder();
         JsonLinesTrace jsonTrace = new JsonLinesTrace(traceText);
+        // The file gets simulated time stamps, so that lock-step runs repeat byte for byte.
+        Trace fileTrace = new SimulatedTimeTrace(() -> world.stepCount() * Math.round(scenario.physics().stepSize() * 1e9),
+                jsonTrace);
         Trace trace = event -> {
-            jsonTrace.record(event);
+            fileTrace.record(event);
             options.trace().record(event);
         };
         Scheduler scheduler = scenario.mode() == Scenario.Mode.LOCK_STEP

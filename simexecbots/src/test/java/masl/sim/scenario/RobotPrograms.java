@@ -3,6 +3,9 @@ package masl.sim.scenario;
 import java.util.Locale;
 import masl.agents.WheeledRobot;
 import masl.runtime.AgentContext;
+import masl.runtime.Arrival;
+import masl.runtime.EntryDefinition;
+import masl.runtime.Mode;
 import masl.runtime.AgentImplementation;
 import masl.runtime.AgentProgram;
 
@@ -65,6 +68,65 @@ final class RobotPrograms {
                     pc = 0;
                     if (!ctx.sleep(50)) {
                         return;
+                    }
+                }
+            }
+        };
+    }
+
+    /** The top-level block of {@link #wanderInStep}: synchronous, so its members move in lock-step rounds. */
+    static final EntryDefinition TOGETHER = EntryDefinition.main("together", Mode.SYNCHRONOUS);
+
+    /**
+     * Like {@link #wander} inside the synchronous block {@link #TOGETHER}: every round ends at the
+     * block's barrier, so the runtime trace records memberships and barrier trips.
+     */
+    static AgentProgram wanderInStep(AgentImplementation implementation, int rounds) {
+        WheeledRobot robot = (WheeledRobot) implementation;
+        return new AgentProgram() {
+            private int round;
+
+            @Override
+            protected void resume(AgentContext ctx) {
+                while (true) {
+                    switch (pc) {
+                        case 0 -> {
+                            pc = 1;
+                            Arrival arrival = ctx.enter(TOGETHER, true);
+                            if (arrival == Arrival.WAITING) {
+                                return;
+                            }
+                        }
+                        case 1 -> {
+                            boolean blocked = Math.min(robot.getProximity(2), robot.getProximity(3)) < 0.06;
+                            robot.setSpeeds(blocked ? -3 : 5, blocked ? 3 : 5);
+                            if (round % 20 == 0) {
+                                robot.logln(String.format(Locale.ROOT, "%d r%d %.4f %.4f", robot.getProxyID(), round,
+                                        robot.getX(), robot.getY()));
+                            }
+                            round++;
+                            pc = 2;
+                            if (!ctx.sleep(50)) {
+                                return;
+                            }
+                        }
+                        case 2 -> {
+                            pc = round < rounds ? 1 : 3;
+                            if (!ctx.stepBoundary()) {
+                                return;
+                            }
+                        }
+                        case 3 -> {
+                            robot.stop();
+                            pc = 4;
+                            if (!ctx.leave(TOGETHER)) {
+                                return;
+                            }
+                        }
+                        default -> {
+                            ctx.finish();
+                            return;
+                        }
                     }
                 }
             }

@@ -74,9 +74,10 @@ class ScenarioRunnerTest {
                 <agent name="k2" model="wheeled"><pose x="0" y="0.45" heading="-60"/></agent>
                 <fault agent="k2" time="2.5"/>""");
         TestMission mission = new TestMission()
-                .agent("k0", WheeledRobot.class, impl -> RobotPrograms.wander(impl, 80))
-                .agent("k1", WheeledRobot.class, impl -> RobotPrograms.wander(impl, 80))
-                .agent("k2", WheeledRobot.class, impl -> RobotPrograms.wander(impl, 80));
+                .agent("k0", WheeledRobot.class, impl -> RobotPrograms.wanderInStep(impl, 80))
+                .agent("k1", WheeledRobot.class, impl -> RobotPrograms.wanderInStep(impl, 80))
+                .agent("k2", WheeledRobot.class, impl -> RobotPrograms.wanderInStep(impl, 80))
+                .main(RobotPrograms.TOGETHER);
         Path first = folder.resolve("first");
         Path second = folder.resolve("second");
         SimulationResult a = new ScenarioRunner(scenario).run(mission, quick().withOutput(first));
@@ -84,6 +85,8 @@ class ScenarioRunnerTest {
         assertEquals(MissionOutcome.Status.COMPLETED, a.outcome().status(), a.outcome()::toString);
         assertTrue(a.recorder().samples().size() > 100, "a trace worth comparing");
         assertTrue(a.eventsJsonLines().contains("\"agent\":\"k2\",\"event\":\"fault\""), a.eventsJsonLines());
+        assertTrue(a.trace().lines().filter(line -> line.contains("barrier-tripped")).count() >= 80, "rounds in step");
+        assertEquals(12, a.outcome().journal().lines().count(), a.outcome().journal());
         for (String file : List.of(ScenarioRunner.TRAJECTORIES, ScenarioRunner.EVENTS, ScenarioRunner.TRACE,
                 ScenarioRunner.JOURNAL, ScenarioRunner.PICTURE)) {
             assertEquals(-1L, Files.mismatch(first.resolve(file), second.resolve(file)), file + " differs");

@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.function.Function;
 import masl.runtime.AgentImplementation;
 import masl.runtime.AgentProgram;
+import masl.runtime.EntryDefinition;
 import masl.runtime.Mission;
 import masl.runtime.MissionProgram;
 
@@ -14,6 +15,13 @@ final class TestMission implements MissionProgram {
     private record Declared(AgentSpec spec, Function<AgentImplementation, AgentProgram> program) { }
 
     private final List<Declared> declared = new ArrayList<>();
+    private EntryDefinition main;
+
+    /** Sets the program's top-level block. */
+    TestMission main(EntryDefinition block) {
+        this.main = block;
+        return this;
+    }
 
     /** Declares the next agent: its name, type class and program. */
     TestMission agent(String name, Class<? extends AgentImplementation> type, Function<AgentImplementation, AgentProgram> program) {
@@ -37,6 +45,6 @@ final class TestMission implements MissionProgram {
             }
             builder.agent(agent.spec().name(), implementation, agent.program());
         }
-        return builder;
+        return main == null ? builder : builder.main(main);
     }
 }
