@@ -58,7 +58,7 @@ public final class Mission {
     private Mission(Builder builder) {
         scheduler = builder.scheduler != null ? builder.scheduler : new PoolScheduler();
         journal = new Journal(builder.journalSink);
-        coordinator = new EntryCoordinator(builder.trace, changes);
+        coordinator = new EntryCoordinator(builder.trace, scheduler::nanoTime, changes);
         Map<EntryDefinition, Entry> blocks = new IdentityHashMap<>();
         if (builder.main != null) {
             addEntries(builder.main, null, blocks);
