@@ -57,7 +57,7 @@ public final class SimulatedWheeledRobot implements DifferentialDrive, PhysicsWo
      *
      * @param hullCentre the hull's centre in the chassis body's frame (the body sits at its centre of mass)
      */
-    public SimulatedWheeledRobot(PhysicsWorld world, String prefix, double[] hullCentre, double x, double y, double heading) {
+    private SimulatedWheeledRobot(PhysicsWorld world, String prefix, double[] hullCentre, double x, double y, double heading) {
         this.world = world;
         this.chassis = prefix + "chassis";
         this.leftMotor = prefix + "leftMotor";
@@ -67,7 +67,6 @@ public final class SimulatedWheeledRobot implements DifferentialDrive, PhysicsWo
         this.x = x;
         this.y = y;
         this.heading = heading;
-        world.bodyPose(chassis);
         world.addStepListener(this);
     }
 

@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicBoolean;
 import masl.agents.MaamAtom;
@@ -202,8 +203,8 @@ public final class ScenarioRunner {
         written.add(Files.writeString(folder.resolve(TRACE), trace, StandardCharsets.UTF_8));
         written.add(Files.writeString(folder.resolve(JOURNAL), outcome.journal(), StandardCharsets.UTF_8));
         Path picture = folder.resolve(PICTURE);
-        String title = String.format(java.util.Locale.ROOT, "%s: %.1f s simulated, %s", scenario.name(), simulated,
-                outcome.status().name().toLowerCase(java.util.Locale.ROOT));
+        String title = String.format(Locale.ROOT, "%s: %.1f s simulated, %s", scenario.name(), simulated,
+                outcome.status().name().toLowerCase(Locale.ROOT));
         new TrajectoryPicture(800).write(picture, title, recorder.samples(), recorder.events(),
                 simulation.world().staticBoxOutlines());
         written.add(picture);

@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import masl.agents.MaamAtom;
-import masl.agents.WheeledRobot;
 import masl.sim.physics.BodyPose;
 import masl.sim.physics.PhysicsSettings;
 import masl.sim.physics.PhysicsWorld;
@@ -200,10 +199,5 @@ class RobotPhysicsTest {
             assertFalse(first.attach(MaamAtom.FRONT, 7, MaamAtom.BACK), "no atom 7");
             assertFalse(first.attached(MaamAtom.FRONT));
         }
-    }
-
-    @Test
-    void wheeledRobotSensorCountMatchesTheAgentType() {
-        assertEquals(WheeledRobot.SENSORS, 8);
     }
 }

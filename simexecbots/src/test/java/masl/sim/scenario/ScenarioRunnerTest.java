@@ -11,11 +11,15 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.stream.IntStream;
 import javax.imageio.ImageIO;
 import masl.agents.Default;
 import masl.agents.MaamAtom;
 import masl.agents.WheeledRobot;
+import masl.runtime.AgentContext;
+import masl.runtime.AgentProgram;
 import masl.runtime.MissionOutcome;
 import masl.sim.output.RunRecorder;
 import masl.sim.output.TrajectoryPicture;
@@ -94,7 +98,7 @@ class ScenarioRunnerTest {
     }
 
     @Test
-    void anotherSeedMayGiveAnotherRunButTheSameShape() throws Exception {
+    void aDifferentSeedRunsTheSameMissionToTheEnd() throws Exception {
         String agents = """
                 <agent name="k0" model="wheeled"><pose x="-0.4" y="-0.3" heading="30"/></agent>
                 <agent name="k1" model="wheeled"><pose x="0.3" y="0.1" heading="200"/></agent>""";
@@ -154,9 +158,9 @@ class ScenarioRunnerTest {
                 <agent name="k0" model="wheeled"/>
                 <initialisation class="%s"/>""".formatted(DrainBattery.class.getName()));
         AtomicReference<Double> seen = new AtomicReference<>();
-        TestMission mission = new TestMission().agent("k0", WheeledRobot.class, impl -> new masl.runtime.AgentProgram() {
+        TestMission mission = new TestMission().agent("k0", WheeledRobot.class, impl -> new AgentProgram() {
             @Override
-            protected void resume(masl.runtime.AgentContext ctx) {
+            protected void resume(AgentContext ctx) {
                 seen.set(((WheeledRobot) impl).getBattery());
                 ctx.finish();
             }
@@ -218,9 +222,9 @@ class ScenarioRunnerTest {
                 <agent name="a0" model="maam-atom"><pose x="0" y="0"/></agent>
                 <agent name="a1" model="maam-atom"><pose x="0.12" y="0"/></agent>""");
         TestMission mission = new TestMission()
-                .agent("a0", MaamAtom.class, impl -> new masl.runtime.AgentProgram() {
+                .agent("a0", MaamAtom.class, impl -> new AgentProgram() {
                     @Override
-                    protected void resume(masl.runtime.AgentContext ctx) {
+                    protected void resume(AgentContext ctx) {
                         MaamAtom atom = (MaamAtom) impl;
                         if (pc == 0) {
                             pc = 1;
@@ -246,7 +250,7 @@ class ScenarioRunnerTest {
         assertTrue(result.outcome().journal().endsWith("attached false\n"), result.outcome().journal());
         assertEquals(List.of("0.300 a0 attach a0.frontLeg a1.backLeg", "0.600 a0 detach a0.frontLeg a1.backLeg"),
                 result.recorder().events().stream()
-                        .map(e -> String.format(java.util.Locale.ROOT, "%.3f %s %s %s", e.time(), e.agent(), e.kind(), e.detail()))
+                        .map(e -> String.format(Locale.ROOT, "%.3f %s %s %s", e.time(), e.agent(), e.kind(), e.detail()))
                         .toList());
     }
 
@@ -268,7 +272,7 @@ class ScenarioRunnerTest {
         BufferedImage image = ImageIO.read(output.resolve(ScenarioRunner.PICTURE).toFile());
         for (int robot = 0; robot < 3; robot++) {
             Color colour = TrajectoryPicture.colour(robot);
-            long pixels = java.util.stream.IntStream.range(0, image.getWidth() * image.getHeight())
+            long pixels = IntStream.range(0, image.getWidth() * image.getHeight())
                     .filter(i -> (image.getRGB(i % image.getWidth(), i / image.getWidth()) & 0xffffff) == (colour.getRGB() & 0xffffff))
                     .count();
             assertTrue(pixels > 200, "robot " + robot + "'s path drawn: " + pixels + " pixels");
