@@ -620,7 +620,8 @@ final class Agent implements AgentContext, AgentTask {
     }
 
     String describe() {
-        return "agent " + name + " (" + id + ") at pc " + program.pc();
+        String source = program.sourceAt(program.pc());
+        return "agent " + name + " (" + id + ") at pc " + program.pc() + (source == null ? "" : " (" + source + ")");
     }
 
     @Override
