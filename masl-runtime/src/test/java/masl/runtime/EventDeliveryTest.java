@@ -529,7 +529,8 @@ class EventDeliveryTest {
             assertEquals(List.of(), instructions.lockStepViolations());
             for (int agent = 0; agent < 3; agent++) {
                 Map<String, Integer> mine = instructions.phases().get(agent);
-                assertEquals(List.of(0, 1, 2, 3), List.of(mine.get("i1"), mine.get("i2"), mine.get("i3"), mine.get("i4")));
+                assertEquals(List.of(0, 1, 2, 3),
+                        List.of(mine.get("i1"), mine.get("i2"), mine.get("i3"), mine.get("i4")));
                 int tick = ticks.phases().get(agent).get("tick");
                 assertTrue(tick == 1 || tick == 2, "agent " + agent + " reacted in phase " + tick);
             }

@@ -483,7 +483,8 @@ class ReactionRulesTest {
     void clearEventsDropsTheRestSoThatTheCurrentReactionDecides(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             MemoryTrace trace = new MemoryTrace();
-            assertEquals("x\na\ny\n", Missions.run(driver, Clear.MAIN, 1, self -> new Clear(self, true), trace).journal());
+            assertEquals("x\na\ny\n",
+                    Missions.run(driver, Clear.MAIN, 1, self -> new Clear(self, true), trace).journal());
             assertEquals(List.of("b", "c"), trace.events(TraceEvent.EventDropped.class).stream()
                     .map(TraceEvent.EventDropped::event).toList());
             // Without clearEvents, c runs last and its break leaves main before "y".
