@@ -1,122 +1,118 @@
 package masl.e2e;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertTrue;
-
-import java.util.ArrayList;
-import java.util.Arrays;
-import java.util.Collections;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.function.Consumer;
-import masl.e2e.Missions.Driver;
-import masl.translator.MissionLoader;
+import java.util.stream.LongStream;
+import masl.testing.MaslMission;
+import masl.testing.MissionRun;
+import masl.testing.Schedule;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.EnumSource;
+import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * The worked examples of examples.md, translated from their MASL source: each run many times with
- * the pool scheduler and with a thread per agent, and over seeds of the deterministic scheduler,
- * gives the journal (or satisfies the journal constraints) examples.md states.
+ * The worked examples of examples.md, translated from their MASL source (with masl-testing, as a
+ * user would test a mission): each run 50 times on the pool and 50 times with a thread per agent,
+ * and explored over 500 seeds of the deterministic scheduler, gives the journal (or satisfies the
+ * journal constraints) examples.md states. Exploration catches a property that holds by luck.
  */
 @Timeout(300)
 class ExamplesTest {
 
     private static final int RUNS = 50;
-    private static final int SEEDS = 10;
+    private static final int SEEDS = 500;
 
-    @ParameterizedTest
-    @EnumSource(Driver.class)
-    void e1ScalarMainIsRunByOneAgent(Driver driver) {
-        repeat("e1_scalar_main.masl", driver, journal -> assertEquals("Hi team\n", journal));
+    static List<Schedule> realSchedulers() {
+        return List.of(Schedule.pool(), Schedule.threads());
     }
 
     @ParameterizedTest
-    @EnumSource(Driver.class)
-    void e2SharedAndLocalVariablesInLockStep(Driver driver) {
-        repeat("e2_shared_and_local.masl", driver, journal -> assertEquals("n=5\n" + "mine=1\n".repeat(5), journal));
+    @MethodSource("realSchedulers")
+    void e1ScalarMainIsRunByOneAgent(Schedule schedule) {
+        repeat("e1_scalar_main.masl", schedule, run -> run.assertJournal("Hi team\n"));
     }
 
     @ParameterizedTest
-    @EnumSource(Driver.class)
-    void e3AsynchronousChildIsOneInstructionOfItsSynchronousParent(Driver driver) {
-        repeat("e3_asynchronous_child.masl", driver, journal -> assertEquals("xxxxxxyyyy\n", journal));
+    @MethodSource("realSchedulers")
+    void e2SharedAndLocalVariablesInLockStep(Schedule schedule) {
+        repeat("e2_shared_and_local.masl", schedule, ExamplesTest::assertE2);
     }
 
     @ParameterizedTest
-    @EnumSource(Driver.class)
-    void e6LockedBlockAdmitsOneAgentPerWave(Driver driver) {
-        repeat("e6_one_at_a_time.masl", driver, journal -> assertEquals("in 1\n".repeat(3), journal));
+    @MethodSource("realSchedulers")
+    void e3AsynchronousChildIsOneInstructionOfItsSynchronousParent(Schedule schedule) {
+        repeat("e3_asynchronous_child.masl", schedule, run -> run.assertJournal("xxxxxxyyyy\n"));
     }
 
     @ParameterizedTest
-    @EnumSource(Driver.class)
-    void e7ReelectThinsTheWaveOut(Driver driver) {
-        repeat("e7_reelect.masl", driver, ExamplesTest::assertE7);
+    @MethodSource("realSchedulers")
+    void e6LockedBlockAdmitsOneAgentPerWave(Schedule schedule) {
+        repeat("e6_one_at_a_time.masl", schedule, run -> run.assertJournal("in 1\n".repeat(3)));
     }
 
     @ParameterizedTest
-    @EnumSource(Driver.class)
-    void e8BreakLeavesTwoBlocks(Driver driver) {
-        repeat("e8_break_out_of_two.masl", driver, ExamplesTest::assertE8);
+    @MethodSource("realSchedulers")
+    void e7ReelectThinsTheWaveOut(Schedule schedule) {
+        repeat("e7_reelect.masl", schedule, ExamplesTest::assertE7);
+    }
+
+    @ParameterizedTest
+    @MethodSource("realSchedulers")
+    void e8BreakLeavesTwoBlocks(Schedule schedule) {
+        repeat("e8_break_out_of_two.masl", schedule, ExamplesTest::assertE8);
     }
 
     @Test
-    void examplesHoldOverSeeds() {
-        for (long seed = 1; seed <= SEEDS; seed++) {
-            long s = seed;
-            assertEquals("Hi team\n", seeded("e1_scalar_main.masl", s));
-            assertEquals("n=5\n" + "mine=1\n".repeat(5), seeded("e2_shared_and_local.masl", s));
-            assertEquals("xxxxxxyyyy\n", seeded("e3_asynchronous_child.masl", s));
-            assertEquals("in 1\n".repeat(3), seeded("e6_one_at_a_time.masl", s));
-            assertE7(seeded("e7_reelect.masl", s));
-            assertE8(seeded("e8_break_out_of_two.masl", s));
-        }
+    void examplesHoldOverFiveHundredSeeds() {
+        explore("e1_scalar_main.masl", run -> run.assertJournal("Hi team\n"));
+        explore("e2_shared_and_local.masl", ExamplesTest::assertE2);
+        explore("e3_asynchronous_child.masl", run -> run.assertJournal("xxxxxxyyyy\n"));
+        explore("e6_one_at_a_time.masl", run -> run.assertJournal("in 1\n".repeat(3)));
+        explore("e7_reelect.masl", ExamplesTest::assertE7);
+        explore("e8_break_out_of_two.masl", ExamplesTest::assertE8);
     }
 
-    @Test
-    void aSeedReplaysItsJournal() {
-        MissionLoader e8 = Missions.example("e8_break_out_of_two.masl");
-        for (long seed = 1; seed <= SEEDS; seed++) {
-            assertEquals(Missions.journalWithSeed(e8, seed), Missions.journalWithSeed(e8, seed), "seed " + seed);
-        }
+    private static MaslMission example(String name) {
+        return MaslMission.fromFile(Path.of("src/test/resources/examples", name));
     }
 
-    private static String seeded(String example, long seed) {
-        return Missions.journalWithSeed(Missions.example(example), seed);
-    }
-
-    private static void repeat(String example, Driver driver, Consumer<String> assertion) {
-        MissionLoader loaded = Missions.example(example);
+    private static void repeat(String name, Schedule schedule, Consumer<MissionRun> property) {
+        MaslMission mission = example(name);
         for (int run = 0; run < RUNS; run++) {
-            assertion.accept(Missions.journal(loaded, driver));
+            property.accept(mission.runWith(schedule));
         }
+    }
+
+    private static void explore(String name, Consumer<MissionRun> property) {
+        example(name).explore(LongStream.range(0, SEEDS), 0).assertEveryRun(property);
+    }
+
+    /** E2: {@code n=5} then five lines {@code mine=1}. */
+    private static void assertE2(MissionRun run) {
+        run.assertJournal("n=5\n" + "mine=1\n".repeat(5));
     }
 
     /** E7: {@code 0:1}, {@code 1:2}, {@code 2:3} in some order. */
-    private static void assertE7(String journal) {
-        assertEquals(List.of("0:1", "1:2", "2:3"), sortedLines(journal), journal);
+    private static void assertE7(MissionRun run) {
+        run.assertLinesInAnyOrder("0:1", "1:2", "2:3");
     }
 
     /** E8: two {@code in}, two {@code out}, no {@code never}; each agent's {@code in} precedes its {@code out}. */
-    private static void assertE8(String journal) {
-        assertEquals(List.of("in", "in", "out", "out"), sortedLines(journal), journal);
+    private static void assertE8(MissionRun run) {
+        run.assertLinesInAnyOrder("in", "in", "out", "out");
         int ins = 0;
         int outs = 0;
-        for (String line : journal.split("\n")) {
+        for (String line : run.journalLines()) {
             if (line.equals("in")) {
                 ins++;
             } else {
                 outs++;
             }
-            assertTrue(outs <= ins, "an out before its agent's in: " + journal);
+            if (outs > ins) {
+                throw new AssertionError(run + ": an out before its agent's in:\n" + run.journal());
+            }
         }
-    }
-
-    private static List<String> sortedLines(String journal) {
-        List<String> lines = new ArrayList<>(Arrays.asList(journal.split("\n")));
-        Collections.sort(lines);
-        return lines;
     }
 }

@@ -155,6 +155,20 @@ public final class Mission {
         return journal;
     }
 
+    /**
+     * Queues an invocation of one of agent {@code proxyId}'s primitives made from outside the
+     * mission's agents (the JADE bridge serves a FIPA agent's {@code REQUEST} so). It runs as MASL §5
+     * has external invocations run: at the agent's next step boundary or loop iteration, or at once
+     * on its behalf if the agent is blocked or has finished; a busy-waiting agent sees it as a
+     * change. {@code invocation} runs the primitive only, and must not block for long. Invocations
+     * queued after the mission has ended are never run.
+     *
+     * @throws IndexOutOfBoundsException if no agent has that proxy id
+     */
+    public void submitInvocation(int proxyId, Runnable invocation) {
+        agents.get(proxyId).submitInvocation(Objects.requireNonNull(invocation, "invocation"));
+    }
+
     /** The mission state of a block of this mission's program. */
     public Entry entry(EntryDefinition definition) {
         Entry entry = entries.get(definition);
