@@ -15,7 +15,8 @@ final class CaseWriter {
     static final class Point {
         private Case target;
 
-        private int number() {
+        /** The case number, once the cases are rendered. */
+        int number() {
             if (target == null) {
                 throw new IllegalStateException("a resumption point was used but never placed");
             }

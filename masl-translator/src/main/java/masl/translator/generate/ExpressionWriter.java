@@ -10,6 +10,7 @@ import masl.runtime.descriptor.Parameter;
 import masl.runtime.descriptor.Primitive;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.EntryRef;
+import masl.translator.analysis.EventDecl;
 import masl.translator.analysis.ImportedType;
 import masl.translator.analysis.MaslType;
 import masl.translator.analysis.Member;
@@ -269,8 +270,8 @@ final class ExpressionWriter {
             return unsupported.report(expression, "a label member");
         } else if (primary instanceof MASLParser.GetAcceptStateExprContext) {
             return unsupported.report(expression, "getAcceptState (permeability)");
-        } else if (primary instanceof MASLParser.GetMessageExprContext) {
-            return unsupported.report(expression, "getMessageFromEvent (events)");
+        } else if (primary instanceof MASLParser.GetMessageExprContext message) {
+            return "ctx.messageOf(" + event(message.event) + ")";
         }
         return unsupported.report(expression, "this expression");
     }
@@ -298,6 +299,14 @@ final class ExpressionWriter {
             updated = outer;
             updatedParameter = outerParameter;
         }
+    }
+
+    /** The expression of the event an identifier names (as the analysis bound it). */
+    String event(MASLParser.IdentifierContext name) {
+        if (program.symbolOf(name).orElse(null) instanceof EventDecl event) {
+            return structure.event(event);
+        }
+        return unsupported.report(name, "this event");
     }
 
     /** The value of a variable. */
@@ -422,7 +431,7 @@ final class ExpressionWriter {
         String joined = String.join(", ", java);
         if (!primitive.get().exceptions().isEmpty()) {
             throwingPrimitives.put(name, primitive.get());
-            return "primitive$" + name + "(" + joined + ")";
+            return "primitive$" + name + "(ctx" + (joined.isEmpty() ? "" : ", " + joined) + ")";
         }
         return "self." + name + "(" + joined + ")";
     }

@@ -6,6 +6,7 @@ import masl.grammar.MASLParser.ExpressionContext;
 import masl.grammar.MASLParser.StatementContext;
 import masl.runtime.descriptor.Primitive;
 import masl.translator.analysis.AnalyzedProgram;
+import masl.translator.analysis.MaslType;
 import masl.translator.analysis.Member;
 import masl.translator.analysis.TypeRef;
 import org.antlr.v4.runtime.ParserRuleContext;
@@ -33,6 +34,37 @@ final class InstructionWriter {
         this.file = file;
     }
 
+    /** Whether the statements being written are a reaction's: they run in one go, with no step boundary. */
+    private boolean inReaction;
+
+    void inReaction(boolean reaction) {
+        inReaction = reaction;
+    }
+
+    boolean isInReaction() {
+        return inReaction;
+    }
+
+    /** {@code emit e;} or {@code emitWithMessage(e, message);}: an instruction (MASL 8). */
+    void emit(ParserRuleContext statement, MASLParser.IdentifierContext event, ExpressionContext message) {
+        cases.note(at(statement) + ": " + JavaText.snippet(statement));
+        String constant = expressions.event(event);
+        if (message == null) {
+            cases.line("ctx.emit(" + constant + ");");
+        } else {
+            writeGuarded(message, "ctx.emit(" + constant + ", " + expressions.converted(MaslType.STRING, message)
+                    + ");");
+        }
+        stepBoundary();
+    }
+
+    /** The step boundary after an instruction (MASL 5); none inside a reaction (MASL 8). */
+    private void stepBoundary() {
+        if (!inReaction) {
+            cases.suspending("ctx.stepBoundary()", cases.point());
+        }
+    }
+
     private String at(ParserRuleContext tree) {
         return file + ":" + tree.getStart().getLine();
     }
@@ -47,7 +79,9 @@ final class InstructionWriter {
         } else if (isSleep(expression)) {
             ExpressionContext duration = ExpressionWriter.arguments(sleepArguments(expression)).get(0);
             cases.suspending("ctx.sleep(" + expressions.expr(duration) + ")", cases.point());
-            cases.note(at(statement) + ": the step boundary after the sleep");
+            if (!inReaction) {
+                cases.note(at(statement) + ": the step boundary after the sleep");
+            }
         } else {
             String java = statementJava(expression);
             if (java != null) {
@@ -57,7 +91,7 @@ final class InstructionWriter {
             }
         }
         if (!isZeroDuration(expression)) {
-            cases.suspending("ctx.stepBoundary()", cases.point());
+            stepBoundary();
         }
     }
 
@@ -81,7 +115,7 @@ final class InstructionWriter {
      */
     private void writeGuarded(ExpressionContext expression, String java) {
         List<String> before = assignments.takeHoisted();
-        if (!queries.throwsChecked(expression)) {
+        if (!queries.mayThrow(expression)) {
             before.forEach(cases::line);
             cases.line(java);
             return;
@@ -89,9 +123,8 @@ final class InstructionWriter {
         cases.open("try {");
         before.forEach(cases::line);
         cases.line(java);
-        cases.reopen("} catch (Exception uncaught) {");
-        cases.line("// uncaught_exception (MASL 8): no reaction handles it, so the occurrence is dropped");
-        cases.line("if (uncaught instanceof InterruptedException) Thread.currentThread().interrupt();");
+        cases.reopen("} catch (Exception thrown) {");
+        cases.line("ctx.uncaughtException(thrown); // the statement's call threw: uncaught_exception (MASL 8)");
         cases.close("}");
     }
 
@@ -154,7 +187,7 @@ final class InstructionWriter {
         }
         if (statement instanceof MASLParser.ExpressionStmtContext expression) {
             return isZeroDuration(expression.expression()) && !queries.usesAbsentMember(expression)
-                    && !queries.throwsChecked(expression);
+                    && !queries.mayThrow(expression);
         }
         if (statement instanceof MASLParser.BlockStmtContext block) {
             return block.block().statement().stream().allMatch(this::isZeroDuration);

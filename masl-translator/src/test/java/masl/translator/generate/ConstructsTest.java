@@ -133,6 +133,51 @@ class ConstructsTest {
     }
 
     @Test
+    void aReactionThatRestartsItsBlock() {
+        assertJournal("ping 1\nping 2\nafter 3\ndone 3\n", ONE + """
+                asynchronous entry main (true) {
+                  local event ping;
+                  local int tries = 0;
+                  asynchronous entry work (true) {
+                    tries++;
+                    if (tries < 3) emit ping;
+                    .logln("after " + tries);
+                    react (ping) { .logln("ping " + tries); restart; }
+                  }
+                  .logln("done " + tries);
+                }
+                """);
+    }
+
+    @Test
+    void aCallThatThrowsRaisesUncaughtExceptionAndAReactionWithoutEndingLeavesItsBlock() {
+        assertJournal("before\ncaught java.lang.ArrayIndexOutOfBoundsException\nafter\n", ONE + """
+                asynchronous entry main (true) {
+                  local java.util.Vector v = new java.util.Vector();
+                  asynchronous entry risky (true) {
+                    .logln("before");
+                    v.get(3);
+                    .logln("never");
+                    react (uncaught_exception) { .logln("caught " + getMessageFromEvent(uncaught_exception)); }
+                  }
+                  .logln("after");
+                }
+                """);
+    }
+
+    @Test
+    void aDefaultReactionResumesWhereTheAgentWas() {
+        assertJournal("default 42\nresumed\n", ONE + """
+                asynchronous entry main (true) {
+                  local event e;
+                  emitWithMessage(e, 42);
+                  .logln("resumed");
+                  react (default) { .logln("default " + getMessageFromEvent(e)); resume; }
+                }
+                """);
+    }
+
+    @Test
     void sleepSuspendsOnTheMissionClock() {
         assertJournal("slept\n", ONE + """
                 asynchronous entry main (true) {

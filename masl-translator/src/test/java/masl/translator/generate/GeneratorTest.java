@@ -127,8 +127,8 @@ class GeneratorTest {
 
     @Test
     void unsupportedConstructsArePositionedErrors() throws IOException {
-        Translation translation = Programs.translate("e4.masl", Files.readString(CORPUS.resolve(
-                "e4-events-lookup-in-the-parent-resume.masl")));
+        Translation translation = Programs.translate("e5.masl", Files.readString(CORPUS.resolve(
+                "e5-permeability-a-denied-invocation-becomes-timeout.masl")));
         assertFalse(translation.succeeded());
         assertNull(translation.missionClassName());
         assertTrue(translation.javaSources().isEmpty());
@@ -138,8 +138,8 @@ class GeneratorTest {
             assertTrue(error.message().endsWith(" is not supported yet by the translator"), error.headline());
             assertTrue(error.line() > 0 && error.column() > 0, error.headline());
         }
-        assertTrue(errors.stream().anyMatch(error -> error.headline().startsWith("e4.masl:")
-                && error.message().startsWith("emitWithMessage")), errors.toString());
+        assertTrue(errors.stream().anyMatch(error -> error.headline().startsWith("e5.masl:")
+                && error.message().startsWith("setAcceptState")), errors.toString());
     }
 
     static Stream<Path> corpus() throws IOException {
