@@ -65,6 +65,11 @@ final class CaseWriter {
         terminated = false;
     }
 
+    /** Whether the code written last jumped away or returned: what follows it is never reached. */
+    boolean isTerminated() {
+        return terminated;
+    }
+
     /** A line of code in the current case, starting an (unreachable) case if the previous code jumped away. */
     void line(String code) {
         startIfTerminated();

@@ -118,10 +118,12 @@ final class StatementWriter {
         loopStack = new ArrayDeque<>();
         instructions.inReaction(true);
         statements(tree.statement());
-        cases.note(file + ":" + tree.getStop().getLine() + ": the end of the reaction leaves " + current.name());
-        endReaction();
-        cases.line("ctx.breakOut(" + structure.block(current) + ");");
-        cases.jump(afters.get(current));
+        if (!cases.isTerminated()) {
+            cases.note(file + ":" + tree.getStop().getLine() + ": the end of the reaction leaves " + current.name());
+            endReaction();
+            cases.line("ctx.breakOut(" + structure.block(current) + ");");
+            cases.jump(afters.get(current));
+        }
         instructions.inReaction(false);
         current = null;
     }
