@@ -196,11 +196,11 @@ final class ExpressionWriter {
         } else if (expression instanceof MASLParser.ArrayAccessContext access) {
             return expr(access.expression(0)) + "[" + expr(access.index) + "]";
         } else if (expression instanceof MASLParser.PostfixExprContext postfix) {
-            return assignments.increment(postfix.expression(), postfix.op.getText(), false, false).orElse("null");
+            return assignments.increment(postfix.expression(), postfix.op.getText(), false, false);
         } else if (expression instanceof MASLParser.PrefixExprContext prefix) {
             String operator = prefix.op.getText();
             if (operator.equals("++") || operator.equals("--")) {
-                return assignments.increment(prefix.expression(), operator, true, false).orElse("null");
+                return assignments.increment(prefix.expression(), operator, true, false);
             }
             return unary(operator, expr(prefix.expression()));
         } else if (expression instanceof MASLParser.NotExprContext not) {
@@ -216,7 +216,7 @@ final class ExpressionWriter {
             return truth(conditional.condition) + " ? " + expr(conditional.whenTrue) + " : "
                     + expr(conditional.whenFalse);
         } else if (expression instanceof MASLParser.AssignExprContext assignment) {
-            return assignments.assignment(assignment, false).orElse("null");
+            return assignments.assignment(assignment, false);
         } else if (expression instanceof MASLParser.InstanceofExprContext test) {
             // An agent type is its implementation class; type arguments are erased, as the analysis does.
             return expr(test.expression()) + " instanceof " + JavaTypes.name(program.typeOf(test.javaType()));

@@ -83,12 +83,7 @@ final class InstructionWriter {
                 cases.note(at(statement) + ": the step boundary after the sleep");
             }
         } else {
-            String java = statementJava(expression);
-            if (java != null) {
-                writeGuarded(expression, java + ";");
-            } else {
-                cases.comment("the write is ignored: the variable is limited to another type (MASL 7)");
-            }
+            writeGuarded(expression, statementJava(expression) + ";");
         }
         if (!isZeroDuration(expression)) {
             stepBoundary();
@@ -97,21 +92,21 @@ final class InstructionWriter {
 
     private String statementJava(ExpressionContext expression) {
         if (expression instanceof MASLParser.AssignExprContext assignment) {
-            return assignments.assignment(assignment, true).orElse(null);
+            return assignments.assignment(assignment, true);
         }
         if (expression instanceof MASLParser.PostfixExprContext postfix) {
-            return assignments.increment(postfix.expression(), postfix.op.getText(), false, true).orElse(null);
+            return assignments.increment(postfix.expression(), postfix.op.getText(), false, true);
         }
         if (expression instanceof MASLParser.PrefixExprContext prefix
                 && (prefix.op.getText().equals("++") || prefix.op.getText().equals("--"))) {
-            return assignments.increment(prefix.expression(), prefix.op.getText(), true, true).orElse(null);
+            return assignments.increment(prefix.expression(), prefix.op.getText(), true, true);
         }
         return expressions.expr(expression);
     }
 
     /**
-     * A statement calling Java code that declares checked exceptions: the exception would raise
-     * {@code uncaught_exception} (MASL 8); with no reaction to it, the occurrence is dropped.
+     * A statement, preceded by the values hoisted out of it; wrapped in {@code try} when it calls
+     * code that may throw: the exception raises {@code uncaught_exception} (MASL 8, 9).
      */
     private void writeGuarded(ExpressionContext expression, String java) {
         List<String> before = assignments.takeHoisted();
@@ -206,10 +201,7 @@ final class InstructionWriter {
                         + JavaText.snippet(part) + " (MASL 4)");
                 continue;
             }
-            String java = statementJava(part);
-            if (java != null) {
-                writeGuarded(part, java + ";");
-            }
+            writeGuarded(part, statementJava(part) + ";");
         }
     }
 }

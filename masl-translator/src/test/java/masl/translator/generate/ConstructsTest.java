@@ -207,6 +207,22 @@ class ConstructsTest {
     }
 
     @Test
+    void aWriteToALimitedVariableByAnotherTypeIsIgnoredAndRaisesForbiddenAccess() {
+        assertJournal("forbidden owned\nowned 1\n", """
+                import Default.xml;
+                import robots/Khepera.xml;
+                Default d = newAgent(Default);
+                Khepera k = newAgent(Khepera);
+                synchronous entry main (true) {
+                  shared int owned limited(Khepera) = 0;
+                  owned = owned + 1;
+                  scalar entry report (true) { .logln("owned " + owned); }
+                  react (forbidden_access) { .logln("forbidden " + getMessageFromEvent(forbidden_access)); resume; }
+                }
+                """);
+    }
+
+    @Test
     void aBusyWaitOnASharedVariableEndsWhenAnotherAgentWritesIt() {
         assertJournal("go\n", "import Default.xml;\nDefault a, b = newAgent(Default);\n" + """
                 asynchronous entry main (true) {
