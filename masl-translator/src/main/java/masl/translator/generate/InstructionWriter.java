@@ -24,6 +24,8 @@ final class InstructionWriter {
     private final TreeQueries queries;
     private final AssignmentWriter assignments;
     private final String file;
+    /** Whether the statements being written are a reaction's: they run in one go, with no step boundary. */
+    private boolean inReaction;
 
     InstructionWriter(AnalyzedProgram program, CaseWriter cases, ExpressionWriter expressions, String file) {
         this.program = program;
@@ -33,9 +35,6 @@ final class InstructionWriter {
         this.assignments = expressions.assignments();
         this.file = file;
     }
-
-    /** Whether the statements being written are a reaction's: they run in one go, with no step boundary. */
-    private boolean inReaction;
 
     void inReaction(boolean reaction) {
         inReaction = reaction;
@@ -49,7 +48,10 @@ final class InstructionWriter {
     void emit(ParserRuleContext statement, MASLParser.IdentifierContext event, ExpressionContext message) {
         cases.note(at(statement) + ": " + JavaText.snippet(statement));
         String constant = expressions.event(event);
-        if (message == null) {
+        if (message != null && queries.usesAbsentMember(message)) {
+            cases.comment("a nop() for " + expressions.selfType().name()
+                    + ": its type lacks a member this statement uses (MASL 4)");
+        } else if (message == null) {
             cases.line("ctx.emit(" + constant + ");");
         } else {
             writeGuarded(message, "ctx.emit(" + constant + ", " + expressions.converted(MaslType.STRING, message)
