@@ -73,6 +73,29 @@ class ConstructsTest {
     }
 
     @Test
+    void siblingSynchronousChildrenKeepLockStepWithEachOther() {
+        String program = "import Default.xml;\nDefault a, b, c = newAgent(Default);\n" + """
+                synchronous entry main (true) {
+                  synchronous entry right (.getProxyID() != 0) { .log("R"); .log("R"); }
+                  synchronous entry left (.getProxyID() == 0) { .log("L"); .log("L"); }
+                  scalar entry end (true) { .logln(""); }
+                }
+                """;
+        for (String journal : Programs.journals(program, RUNS)) {
+            assertEquals(7, journal.length(), journal);
+            assertEquals("LRR", sorted(journal.substring(0, 3)), journal);
+            assertEquals("LRR", sorted(journal.substring(3, 6)), journal);
+            assertEquals("\n", journal.substring(6), journal);
+        }
+    }
+
+    private static String sorted(String text) {
+        char[] characters = text.toCharArray();
+        java.util.Arrays.sort(characters);
+        return new String(characters);
+    }
+
+    @Test
     void restartBreakNAndReelectKeepingLocals() {
         assertJournal("tries=4\ntries=4\n", "import Default.xml;\nDefault a, b = newAgent(Default);\n" + """
                 asynchronous entry main (true) {
