@@ -69,6 +69,20 @@ class JadePlatformTest {
     }
 
     @Test
+    void theHttpTransportStartsOnlyWhenAskedAndOnLoopback() throws Exception {
+        Set<Thread> before = new HashSet<>(Thread.getAllStackTraces().keySet());
+        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer().withHttpTransport(true))) {
+            String description = Files.readString(platform.fileDir().resolve("APDescription.txt"));
+            assertTrue(description.contains("http://127.0.0.1:"), description);
+        }
+        assertEquals(List.of(), newThreads(before));
+        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
+            String description = Files.readString(platform.fileDir().resolve("APDescription.txt"));
+            assertFalse(description.contains("http://"), description);
+        }
+    }
+
+    @Test
     void aTakenPortIsReportedNotRetried() throws IOException {
         try (ServerSocket taken = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
             JadeException failure = assertThrows(JadeException.class,
