@@ -6,6 +6,7 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.LongSupplier;
 import java.util.function.Supplier;
 import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.Trace;
@@ -36,6 +37,8 @@ final class EntryCoordinator {
 
     private final ReentrantLock lock = new ReentrantLock();
     private final Trace trace;
+    /** The scheduler's clock: virtual under a seeded scheduler, so a seed reproduces timestamps. */
+    private final LongSupplier clock;
     private final ChangeEpoch changes;
     /** The parent wave of {@code main}: every agent of the mission, active unless held. */
     private final Wave missionWave = new Wave(null, 1, new SharedVariable<?>[0]);
@@ -46,8 +49,9 @@ final class EntryCoordinator {
     private final List<Wake> wakes = new ArrayList<>();
     private boolean changed;
 
-    EntryCoordinator(Trace trace, ChangeEpoch changes) {
+    EntryCoordinator(Trace trace, LongSupplier clock, ChangeEpoch changes) {
         this.trace = trace;
+        this.clock = clock;
         this.changes = changes;
     }
 
@@ -110,7 +114,7 @@ final class EntryCoordinator {
             }
             membership.status = Membership.Status.WAITING_OUT;
             membership.wave.waitingOut.add(agent);
-            trace.record(new TraceEvent.WaitingOut(System.nanoTime(), agent.id(), entry.name()));
+            trace.record(new TraceEvent.WaitingOut(clock.getAsLong(), agent.id(), entry.name()));
             reconcile(agent);
             settle();
             if (agent.memberships.contains(membership)) {
@@ -220,8 +224,9 @@ final class EntryCoordinator {
     private void join(Agent agent, Entry entry) {
         Wave wave = entry.currentWave != null ? entry.currentWave : startWave(entry);
         wave.members.add(agent);
+        entry.membersChanged();
         agent.memberships.add(new Membership(entry, wave, Membership.Status.ACTIVE));
-        trace.record(new TraceEvent.Entered(System.nanoTime(), agent.id(), entry.name()));
+        trace.record(new TraceEvent.Entered(clock.getAsLong(), agent.id(), entry.name()));
         reconcile(agent);
         changed = true;
     }
@@ -229,7 +234,8 @@ final class EntryCoordinator {
     private void holdAtEntry(Agent agent, Entry entry) {
         agent.memberships.add(new Membership(entry, null, Membership.Status.WAITING_IN));
         entry.waitingIn.add(agent);
-        trace.record(new TraceEvent.WaitingIn(System.nanoTime(), agent.id(), entry.name()));
+        entry.membersChanged();
+        trace.record(new TraceEvent.WaitingIn(clock.getAsLong(), agent.id(), entry.name()));
         reconcile(agent);
         if (entry.policy == LockPolicy.FREE) {
             awaitingFirstRelease.add(entry);
@@ -258,7 +264,7 @@ final class EntryCoordinator {
         membership.wave = wave;
         membership.status = Membership.Status.ACTIVE;
         wave.members.add(agent);
-        trace.record(new TraceEvent.Released(System.nanoTime(), agent.id(), entry.name(), wave.number));
+        trace.record(new TraceEvent.Released(clock.getAsLong(), agent.id(), entry.name(), wave.number));
         reconcile(agent);
         wake(agent);
     }
@@ -271,18 +277,19 @@ final class EntryCoordinator {
         if (membership.entry.mode() == Mode.SYNCHRONOUS) {
             agent.lastLeftSynchronous = membership.entry.definition();
         }
-        trace.record(new TraceEvent.Left(System.nanoTime(), agent.id(), membership.entry.name(), cause));
+        trace.record(new TraceEvent.Left(clock.getAsLong(), agent.id(), membership.entry.name(), cause));
         reconcile(agent);
         if (wave.members.isEmpty() && wave.entry.currentWave == wave) {
             wave.entry.currentWave = null;
-            trace.record(new TraceEvent.WaveEnded(System.nanoTime(), wave.entry.name(), wave.number));
+            trace.record(new TraceEvent.WaveEnded(clock.getAsLong(), wave.entry.name(), wave.number));
         }
+        membership.entry.membersChanged();
     }
 
     private Wave startWave(Entry entry) {
         Wave wave = new Wave(entry, ++entry.wavesStarted, entry.newSharedVariables(changes));
         entry.currentWave = wave;
-        trace.record(new TraceEvent.WaveStarted(System.nanoTime(), entry.name(), wave.number));
+        trace.record(new TraceEvent.WaveStarted(clock.getAsLong(), entry.name(), wave.number));
         return wave;
     }
 
@@ -370,7 +377,7 @@ final class EntryCoordinator {
     }
 
     private void trip(SynchronisationBarrier barrier, int arrivingNow) {
-        trace.record(new TraceEvent.BarrierTripped(System.nanoTime(), barrier.domain.name(),
+        trace.record(new TraceEvent.BarrierTripped(clock.getAsLong(), barrier.domain.name(),
                 barrier.arrived.size() + arrivingNow));
         for (Agent agent : barrier.arrived) {
             wake(agent);

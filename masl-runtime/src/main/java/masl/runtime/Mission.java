@@ -44,6 +44,7 @@ public final class Mission {
     private final Scheduler scheduler;
     private final Journal journal;
     private final ChangeEpoch changes = new ChangeEpoch();
+    private final Trace trace;
     private final EntryCoordinator coordinator;
     private final AtomicBoolean started = new AtomicBoolean();
     private final AtomicInteger running;
@@ -58,7 +59,8 @@ public final class Mission {
     private Mission(Builder builder) {
         scheduler = builder.scheduler != null ? builder.scheduler : new PoolScheduler();
         journal = new Journal(builder.journalSink);
-        coordinator = new EntryCoordinator(builder.trace, changes);
+        trace = builder.trace;
+        coordinator = new EntryCoordinator(trace, scheduler::nanoTime, changes);
         Map<EntryDefinition, Entry> blocks = new IdentityHashMap<>();
         if (builder.main != null) {
             addEntries(builder.main, null, blocks);
@@ -178,6 +180,10 @@ public final class Mission {
 
     Scheduler scheduler() {
         return scheduler;
+    }
+
+    Trace trace() {
+        return trace;
     }
 
     ChangeEpoch changes() {

@@ -25,6 +25,14 @@ public interface Scheduler {
      */
     void start(List<? extends AgentTask> agents);
 
+    /**
+     * The mission clock in nanoseconds, as trace timestamps read it: {@link System#nanoTime()}
+     * unless the scheduler keeps a virtual time. Called under the runtime's locks: must not block.
+     */
+    default long nanoTime() {
+        return System.nanoTime();
+    }
+
     /** Makes the agent runnable: its {@code runSlice} is to be called once, soon. */
     void schedule(AgentTask agent);
 

@@ -28,7 +28,8 @@ public final class SeededScheduler implements Scheduler {
     private final List<AgentTask> runnable = new ArrayList<>();
     private final PriorityQueue<Timed> timers = new PriorityQueue<>((a, b) -> a.at() != b.at()
             ? Long.compare(a.at(), b.at()) : Long.compare(a.sequence(), b.sequence()));
-    private long now;
+    /** Virtual milliseconds; volatile so that {@link #nanoTime()} reads it without the lock. */
+    private volatile long now;
     private long timerSequence;
     private Thread worker;
 
@@ -83,6 +84,12 @@ public final class SeededScheduler implements Scheduler {
     public synchronized void scheduleAfter(long delayMillis, Runnable action) {
         timers.add(new Timed(now + delayMillis, timerSequence++, action));
         notifyAll();
+    }
+
+    /** Virtual time: so a seed reproduces the trace's timestamps too. */
+    @Override
+    public long nanoTime() {
+        return now * 1_000_000L;
     }
 
     @Override

@@ -193,7 +193,9 @@ final class DescriptorReader {
             throw new IllegalStateException("resource " + SCHEMA_RESOURCE + " is missing from masl-runtime");
         }
         try {
-            SchemaFactory factory = SchemaFactory.newInstance(XMLConstants.W3C_XML_SCHEMA_NS_URI);
+            // The JDK's own factory, not whichever one the class path provides: an old Xerces (Gradle's
+            // own jars, in the plug-in's tests and builds) rejects the secure-processing properties.
+            SchemaFactory factory = SchemaFactory.newDefaultInstance();
             factory.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
             factory.setProperty(XMLConstants.ACCESS_EXTERNAL_DTD, "");
             factory.setProperty(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "");

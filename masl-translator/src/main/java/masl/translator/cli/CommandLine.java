@@ -2,6 +2,8 @@ package masl.translator.cli;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
 
 /**
  * The words of a {@code masl} invocation: a command, its operands and its options
@@ -9,9 +11,23 @@ import java.util.List;
  */
 final class CommandLine {
 
+    /** The options each command accepts; those in {@link #FLAGS} take no value. */
+    private static final Map<String, Set<String>> OPTIONS = Map.of(
+            "check", Set.of("--agent-path"),
+            "compile", Set.of("--agent-path", "-d"),
+            "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--trace"),
+            "timeline", Set.of("-o"));
+    private static final Set<String> FLAGS = Set.of("--threads");
+
     final String command;
     final List<String> operands = new ArrayList<>();
     String agentPath = "";
+    String outputFolder;
+    String outputFile;
+    boolean threads;
+    Long seed;
+    Long timeoutSeconds;
+    String traceFile;
 
     private CommandLine(String command) {
         this.command = command;
@@ -22,22 +38,60 @@ final class CommandLine {
             throw new UsageException("no command given");
         }
         CommandLine line = new CommandLine(args[0]);
+        Set<String> known = OPTIONS.getOrDefault(line.command, Set.of());
         for (int i = 1; i < args.length; i++) {
             String arg = args[i];
-            if (arg.equals("--agent-path")) {
-                if (i + 1 == args.length) {
-                    throw new UsageException("--agent-path needs a value: folders and jars separated by ':'");
-                }
-                line.agentPath = args[++i];
-            } else if (arg.startsWith("--agent-path=")) {
-                line.agentPath = arg.substring("--agent-path=".length());
-            } else if (arg.startsWith("-") && arg.length() > 1) {
-                throw new UsageException("unknown option " + arg);
-            } else {
+            if (!arg.startsWith("-") || arg.equals("-")) {
                 line.operands.add(arg);
+                continue;
             }
+            String name = arg.contains("=") ? arg.substring(0, arg.indexOf('=')) : arg;
+            if (!known.contains(name)) {
+                throw new UsageException("unknown option " + name + (OPTIONS.containsKey(line.command)
+                        ? " for masl " + line.command : ""));
+            }
+            if (FLAGS.contains(name)) {
+                if (arg.contains("=")) {
+                    throw new UsageException(name + " takes no value");
+                }
+                line.threads = true;
+                continue;
+            }
+            String value;
+            if (arg.contains("=")) {
+                value = arg.substring(arg.indexOf('=') + 1);
+            } else if (i + 1 < args.length) {
+                value = args[++i];
+            } else {
+                throw new UsageException(name + " needs a value");
+            }
+            line.set(name, value);
         }
         return line;
+    }
+
+    private void set(String option, String value) throws UsageException {
+        switch (option) {
+            case "--agent-path" -> agentPath = value;
+            case "-d" -> outputFolder = value;
+            case "-o" -> outputFile = value;
+            case "--trace" -> traceFile = value;
+            case "--seed" -> seed = number(option, value, Long.MIN_VALUE);
+            case "--timeout" -> timeoutSeconds = number(option, value, 1);
+            default -> throw new UsageException("unknown option " + option);
+        }
+    }
+
+    private static long number(String option, String value, long minimum) throws UsageException {
+        try {
+            long number = Long.parseLong(value);
+            if (number < minimum) {
+                throw new UsageException(option + " must be at least " + minimum + ", got " + value);
+            }
+            return number;
+        } catch (NumberFormatException notANumber) {
+            throw new UsageException(option + " needs a whole number, got '" + value + "'");
+        }
     }
 
     String singleFile() throws UsageException {

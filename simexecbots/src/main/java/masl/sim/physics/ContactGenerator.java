@@ -1,5 +1,7 @@
 package masl.sim.physics;
 
+import java.util.HashSet;
+import java.util.Set;
 import org.ode4j.ode.DBody;
 import org.ode4j.ode.DContact;
 import org.ode4j.ode.DContactBuffer;
@@ -30,6 +32,8 @@ final class ContactGenerator {
     private final DContactBuffer buffer;
     private final int maxContacts;
     private final DGeom.DNearCallback near = this::near;
+    /** Bodies that touched a static geom (the ground, a wall) in the latest {@link #collide}. */
+    private final Set<DBody> touchingEnvironment = new HashSet<>();
 
     ContactGenerator(DWorld world, DJointGroup contacts, double friction, int maxContacts) {
         this.world = world;
@@ -45,12 +49,22 @@ final class ContactGenerator {
      * which a plain callback would miss for a child space that overlaps nothing.
      */
     void collide(DSpace space) {
+        touchingEnvironment.clear();
+        collideTree(space);
+    }
+
+    private void collideTree(DSpace space) {
         space.collide(null, near);
         for (DGeom member : space.getGeoms()) {
             if (member instanceof DSpace child) {
-                collide(child);
+                collideTree(child);
             }
         }
+    }
+
+    /** The bodies that touched a static geom during the latest {@link #collide}. */
+    Set<DBody> touchingEnvironment() {
+        return touchingEnvironment;
     }
 
     private void near(Object data, DGeom first, DGeom second) {
@@ -67,6 +81,9 @@ final class ContactGenerator {
             return;
         }
         int count = OdeHelper.collide(first, second, maxContacts, buffer.getGeomBuffer());
+        if (count > 0 && (a == null || b == null)) {
+            touchingEnvironment.add(a == null ? b : a);
+        }
         for (int i = 0; i < count; i++) {
             DContact contact = buffer.get(i);
             contact.surface.mode = OdeConstants.dContactApprox1 | OdeConstants.dContactSoftCFM;

@@ -1,11 +1,14 @@
 package masl.sim.physics;
 
 import java.time.Duration;
+import java.util.HashMap;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Map;
 import java.util.NoSuchElementException;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.LockSupport;
@@ -19,8 +22,11 @@ import masl.sim.xode.XodeException;
 import masl.sim.xode.XodeLoader;
 import masl.sim.xode.XodeSource;
 import org.ode4j.math.DQuaternionC;
+import org.ode4j.math.DVector3;
 import org.ode4j.math.DVector3C;
 import org.ode4j.ode.DBody;
+import org.ode4j.ode.DFixedJoint;
+import org.ode4j.ode.DHingeJoint;
 import org.ode4j.ode.DHashSpace;
 import org.ode4j.ode.DJoint;
 import org.ode4j.ode.DJointGroup;
@@ -46,6 +52,13 @@ import org.ode4j.ode.OdeHelper;
  */
 public final class PhysicsWorld implements AutoCloseable {
 
+    /** Told after every step, on the stepping thread, while the step's lock is still held. */
+    @FunctionalInterface
+    public interface StepListener {
+        /** Must be quick and must not wait for another thread that needs the world. */
+        void afterStep(PhysicsWorld world);
+    }
+
     /** Guards ode4j's global random generator (see class comment). */
     private static final Object ODE_GLOBAL_STATE = new Object();
 
@@ -58,10 +71,16 @@ public final class PhysicsWorld implements AutoCloseable {
     private final ContactGenerator contacts;
     private final JointMotors motors = new JointMotors();
     private final XodeLoader loader;
+    private final RayCaster rays = new RayCaster();
+    private final List<StepListener> listeners = new CopyOnWriteArrayList<>();
+    /** The step number (1-based) at which each body last touched a static geom. */
+    private final Map<DBody, Long> lastEnvironmentContact = new HashMap<>();
     /** Concurrent so that commands can find their joint without waiting for a step to end. */
     private final Map<String, DBody> bodies = new ConcurrentHashMap<>();
     private final Map<String, DJoint> joints = new ConcurrentHashMap<>();
     private final Set<String> names = new HashSet<>();
+    /** Joints made by attachFixed, the only ones detach destroys. */
+    private final Set<String> latches = new HashSet<>();
     private volatile long steps;
     private volatile boolean running;
     private volatile Throwable failure;
@@ -265,6 +284,112 @@ public final class PhysicsWorld implements AutoCloseable {
         return withLock(() -> JointMotors.position(lookup(joints, jointName, "joint")));
     }
 
+    /** A hinge's angular velocity (rad/s) between steps: what a wheel encoder measures. */
+    public double jointRate(String jointName) {
+        return withLock(() -> {
+            DJoint joint = lookup(joints, jointName, "joint");
+            if (!(joint instanceof DHingeJoint hinge)) {
+                throw new IllegalArgumentException("joint '" + jointName + "' is not a hinge");
+            }
+            return hinge.getAngleRate();
+        });
+    }
+
+    /**
+     * Whether the body touched something static (ground, wall) during one of the latest
+     * {@code steps} steps: a debounced contact switch, as resting contacts come and go between steps.
+     */
+    public boolean touchesEnvironment(String bodyName, int steps) {
+        return withLock(() -> {
+            Long last = lastEnvironmentContact.get(lookup(bodies, bodyName, "body"));
+            return last != null && this.steps - last < steps;
+        });
+    }
+
+    /** Adds a force (N, world coordinates) at the body's centre of mass for the next step only. */
+    public void addForce(String bodyName, double fx, double fy, double fz) {
+        withLock(() -> {
+            lookup(bodies, bodyName, "body").addForce(fx, fy, fz);
+            return null;
+        });
+    }
+
+    /**
+     * The distance from {@code origin} along {@code direction} (world coordinates, normalised here)
+     * to the nearest geom within {@code length}, ignoring geoms of {@code ignoredBodies};
+     * {@link Double#POSITIVE_INFINITY} when nothing is that close.
+     */
+    public double castRay(double[] origin, double[] direction, double length, Set<String> ignoredBodies) {
+        DVector3 unit = new DVector3(direction[0], direction[1], direction[2]);
+        if (!(unit.length() > 0)) {
+            throw new IllegalArgumentException("ray direction is zero");
+        }
+        unit.normalize();
+        return withLock(() -> {
+            Set<DBody> ignored = new HashSet<>();
+            ignoredBodies.forEach(name -> ignored.add(lookup(bodies, name, "body")));
+            return rays.cast(space, new DVector3(origin[0], origin[1], origin[2]), unit, length, ignored);
+        });
+    }
+
+    /**
+     * Joins two bodies rigidly where they are now, with a fixed joint named {@code jointName}
+     * (a latch); until {@link #detach} the bodies move as one and do not collide.
+     *
+     * @throws IllegalArgumentException when a joint or object of that name exists, or the bodies are one
+     */
+    public void attachFixed(String jointName, String body1, String body2) {
+        withLock(() -> {
+            checkOpen();
+            if (names.contains(jointName)) {
+                throw new IllegalArgumentException("a joint or object named '" + jointName + "' exists already");
+            }
+            DBody first = lookup(bodies, body1, "body");
+            DBody second = lookup(bodies, body2, "body");
+            if (first == second) {
+                throw new IllegalArgumentException("cannot attach body '" + body1 + "' to itself");
+            }
+            DFixedJoint joint = OdeHelper.createFixedJoint(world);
+            joint.attach(first, second);
+            joint.setFixed();
+            joint.setData(jointName);
+            joints.put(jointName, joint);
+            names.add(jointName);
+            latches.add(jointName);
+            return null;
+        });
+    }
+
+    /** Destroys a joint made by {@link #attachFixed}; false when there is no joint of that name. */
+    public boolean detach(String jointName) {
+        return withLock(() -> {
+            if (!latches.remove(jointName)) {
+                return false;
+            }
+            names.remove(jointName);
+            joints.remove(jointName).destroy();
+            return true;
+        });
+    }
+
+    /** Whether a joint of that name exists (loaded or attached). */
+    public boolean hasJoint(String jointName) {
+        return joints.containsKey(jointName);
+    }
+
+    /**
+     * The top-down outlines of the static boxes (walls, obstacles) of the world: each the four
+     * corners (x, y) of the box's face most nearly parallel to the ground, projected on it.
+     */
+    public List<double[][]> staticBoxOutlines() {
+        return withLock(() -> StaticOutlines.of(space));
+    }
+
+    /** Adds a listener told after every later step (see {@link StepListener}). */
+    public void addStepListener(StepListener listener) {
+        listeners.add(listener);
+    }
+
     /** Runs {@code action} between two steps with exclusive access to the ode4j objects. */
     public <T> T withLock(Supplier<T> action) {
         lock.lock();
@@ -339,7 +464,13 @@ public final class PhysicsWorld implements AutoCloseable {
         }
         contactJoints.empty();
         steps++;
+        for (DBody body : contacts.touchingEnvironment()) {
+            lastEnvironmentContact.put(body, steps);
+        }
         stepped.signalAll();
+        for (StepListener listener : listeners) {
+            listener.afterStep(this);
+        }
     }
 
     /** A different reordering per step, fixed by seed and step number; ODE's generator keeps 32 bits. */

@@ -19,14 +19,14 @@ import javax.xml.stream.XMLStreamReader;
  * <p>The JDK's own StAX implementation is used on purpose (not whatever the class path offers),
  * so security settings and reported columns do not change when another parser is on the path.
  */
-final class SecureXmlReader {
+public final class SecureXmlReader {
 
     private final String fileName;
     private final String text;
     private final int[] lineStarts;
 
     /** @param fileName name used in locations; @param text the whole document */
-    SecureXmlReader(String fileName, String text) {
+    public SecureXmlReader(String fileName, String text) {
         this.fileName = fileName;
         this.text = text;
         this.lineStarts = lineStarts(text);
@@ -38,7 +38,7 @@ final class SecureXmlReader {
      * @return the root element
      * @throws XodeException when the text is not well-formed XML, with the parser's position
      */
-    XodeElement read() throws XodeException {
+    public XodeElement read() throws XodeException {
         XMLStreamReader reader = null;
         try {
             reader = secureFactory().createXMLStreamReader(new StringReader(text));

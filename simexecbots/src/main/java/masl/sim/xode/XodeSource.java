@@ -32,7 +32,7 @@ public final class XodeSource {
         return new XodeSource(path.toString(), () -> Files.readAllBytes(path));
     }
 
-    /** A class-path resource such as {@code masl/sim/robots/khepera.xode}. */
+    /** A class-path resource such as {@code masl/agents/robots/wheeled-robot.xode}. */
     public static XodeSource resource(String resourcePath) {
         return new XodeSource(resourcePath, () -> {
             try (InputStream in = XodeSource.class.getClassLoader().getResourceAsStream(resourcePath)) {

@@ -219,7 +219,7 @@ class PhysicsWorldTest {
             world.load(Scenes.KHEPERA, "a.", Pose.translation(0, 1, 0));
             assertEquals(1.0, world.bodyPose("a.chassis").y(), 1e-9);
             XodeException clash = assertThrows(XodeException.class, () -> world.load(Scenes.KHEPERA, "a."));
-            assertTrue(clash.getMessage().startsWith("masl/sim/robots/khepera.xode:"), clash::getMessage);
+            assertTrue(clash.getMessage().startsWith("masl/agents/robots/wheeled-robot.xode:"), clash::getMessage);
             assertTrue(clash.getMessage().contains(": error: <body>: the name 'a.chassis' is already used in the target world"),
                     clash::getMessage);
             assertEquals(java.util.Set.of("a.chassis", "a.leftWheel", "a.rightWheel", "a.caster"), world.bodyNames());

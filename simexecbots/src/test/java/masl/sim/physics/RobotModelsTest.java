@@ -84,16 +84,17 @@ class RobotModelsTest {
         try (PhysicsWorld world = worldWithGround()) {
             world.load(Scenes.MAAM_ATOM, "atom0.");
             for (String leg : new String[] {"front", "back", "left", "right"}) {
-                world.command("atom0." + leg + "Servo", new MotorCommand.Servo(0, 10, 3, 2));
+                world.command("atom0." + leg + "Swing", new MotorCommand.Servo(0, 10, 3, 2));
+                world.command("atom0." + leg + "Lift", new MotorCommand.Servo(0, 10, 3, 2));
             }
             world.step(100);
             BodyPose standing = world.bodyPose("atom0.atom");
             assertTrue(standing.z() > 0.07, "stands on its legs, body at " + standing.z());
             assertTrue(upright(standing) > 0.99);
-            world.command("atom0.frontServo", new MotorCommand.Servo(0.5, 10, 3, 2));
+            world.command("atom0.frontSwing", new MotorCommand.Servo(0.5, 10, 3, 2));
             world.step(100);
-            assertEquals(0.5, world.jointPosition("atom0.frontServo"), 0.05);
-            assertEquals(0, world.jointPosition("atom0.backServo"), 0.05);
+            assertEquals(0.5, world.jointPosition("atom0.frontSwing"), 0.05);
+            assertEquals(0, world.jointPosition("atom0.backSwing"), 0.05);
         }
     }
 }

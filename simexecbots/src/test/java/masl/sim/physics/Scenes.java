@@ -10,8 +10,8 @@ final class Scenes {
             "<xode version=\"1.0r23\"><world><space><geom name=\"floor\"><plane a=\"0\" b=\"0\" c=\"1\" d=\"0\"/></geom>"
             + "</space></world></xode>");
 
-    static final XodeSource KHEPERA = XodeSource.resource("masl/sim/robots/khepera.xode");
-    static final XodeSource MAAM_ATOM = XodeSource.resource("masl/sim/robots/maam-atom.xode");
+    static final XodeSource KHEPERA = XodeSource.resource("masl/agents/robots/wheeled-robot.xode");
+    static final XodeSource MAAM_ATOM = XodeSource.resource("masl/agents/robots/maam-atom.xode");
 
     /** The pendulum of xode.md §2, Y up. */
     static final XodeSource PENDULUM = XodeSource.text("pendulum.xode", """

@@ -320,7 +320,7 @@ class XodeElementsTest {
     @Test
     void prefixesMakeNamesDistinctAndLinksFollowThem() throws XodeException {
         XodeLoader loader = new XodeLoader();
-        XodeSource robot = XodeSource.resource("masl/sim/robots/khepera.xode");
+        XodeSource robot = XodeSource.resource("masl/agents/robots/wheeled-robot.xode");
         LoadedModel first = loader.load(robot, "khepera0.", LoadTarget.newWorlds());
         LoadedModel second = loader.load(robot, "khepera1.", LoadTarget.newWorlds());
         assertTrue(first.bodies().containsKey("khepera0.chassis"));

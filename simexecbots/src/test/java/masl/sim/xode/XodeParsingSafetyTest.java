@@ -42,7 +42,7 @@ class XodeParsingSafetyTest {
 
     @Test
     void everyTruncationOfARobotFileGivesAnXodeExceptionOrAModel() throws IOException {
-        byte[] robot = resource("masl/sim/robots/khepera.xode");
+        byte[] robot = resource("masl/agents/robots/wheeled-robot.xode");
         for (int length = 0; length < robot.length; length += 7) {
             expectOnlyXodeException(java.util.Arrays.copyOf(robot, length), "truncated at " + length);
         }
@@ -50,7 +50,7 @@ class XodeParsingSafetyTest {
 
     @Test
     void mutatedRobotFilesOnlyEverGiveXodeExceptions() throws IOException {
-        byte[] robot = resource("masl/sim/robots/maam-atom.xode");
+        byte[] robot = resource("masl/agents/robots/maam-atom.xode");
         Random random = new Random(7);
         byte[] alphabet = "<>/=\"' -.0123456789eEaxyz&;!?".getBytes(java.nio.charset.StandardCharsets.US_ASCII);
         for (int i = 0; i < 300; i++) {

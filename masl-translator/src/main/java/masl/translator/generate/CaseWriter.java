@@ -1,0 +1,167 @@
+package masl.translator.generate;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Writes the body of a generated {@code resume} method: a {@code switch (pc)} of cases, one per
+ * resumption point. Code refers to resumption points through {@link Point}s, created before their
+ * place is known (a jump forward) and placed later; cases are numbered in the order they are placed,
+ * so the numbers follow the program. Several points placed with no code between them share one case.
+ */
+final class CaseWriter {
+
+    /** A resumption point: a case of the switch once placed. */
+    static final class Point {
+        private Case target;
+
+        private int number() {
+            if (target == null) {
+                throw new IllegalStateException("a resumption point was used but never placed");
+            }
+            return target.number;
+        }
+    }
+
+    private static final class Case {
+        int number;
+        String comment;
+        final List<Object> lines = new ArrayList<>();
+
+        Case(String comment) {
+            this.comment = comment;
+        }
+    }
+
+    /** A line whose text names a resumption point, resolved when the cases are numbered. */
+    private record Jump(String indent, String before, Point point, String after) {
+    }
+
+    private final List<Case> cases = new ArrayList<>();
+    private Case current;
+    private boolean terminated = true;
+    private int indent;
+
+    Point point() {
+        return new Point();
+    }
+
+    /**
+     * Makes {@code point} the code that follows. Starts a new case, unless the current one has no
+     * code yet, in which case the point shares it.
+     */
+    void place(Point point, String comment) {
+        if (indent > 0) {
+            throw new IllegalStateException("a resumption point cannot stand inside a Java block");
+        }
+        if (current == null || !current.lines.isEmpty() || terminated) {
+            current = new Case(comment);
+            cases.add(current);
+        } else if (current.comment == null) {
+            current.comment = comment;
+        }
+        point.target = current;
+        terminated = false;
+    }
+
+    /** A line of code in the current case, starting an (unreachable) case if the previous code jumped away. */
+    void line(String code) {
+        startIfTerminated();
+        current.lines.add("    ".repeat(indent) + code);
+    }
+
+    /** Names the code that follows: the comment of the current case if it has none and no code yet, else a line. */
+    void note(String text) {
+        if (!terminated && current != null && current.lines.isEmpty() && current.comment == null) {
+            current.comment = text;
+        } else {
+            comment(text);
+        }
+    }
+
+    /** {@code } else {}: closes a Java block and opens the next one. */
+    void reopen(String code) {
+        indent--;
+        line(code);
+        indent++;
+    }
+
+    /** A comment line in the current case. */
+    void comment(String text) {
+        line("// " + text);
+    }
+
+    void open(String code) {
+        line(code);
+        indent++;
+    }
+
+    void close(String code) {
+        indent--;
+        line(code);
+    }
+
+    /** {@code pc = point;} */
+    void setPc(Point point) {
+        startIfTerminated();
+        current.lines.add(new Jump("    ".repeat(indent), "pc = ", point, ";"));
+    }
+
+    /** {@code pc = point; continue;}: the rest of the case is never reached. */
+    void jump(Point point) {
+        setPc(point);
+        line("continue;");
+        if (indent == 0) {
+            terminated = true;
+        }
+    }
+
+    /** A line that ends the case ({@code return;}). */
+    void end(String code) {
+        line(code);
+        terminated = true;
+    }
+
+    /** The text of a jump to {@code point} inside a line: {@code prefix + "pc = N; continue;" + suffix}. */
+    void jumpLine(String prefix, Point point, String suffix) {
+        startIfTerminated();
+        current.lines.add(new Jump("    ".repeat(indent) + prefix, "pc = ", point, "; continue;" + suffix));
+    }
+
+    /**
+     * A runtime call that may suspend: {@code pc = next; if (!call) return;} then {@code next} is
+     * placed right after, where the call's "go on" falls through.
+     */
+    void suspending(String call, Point next) {
+        setPc(next);
+        line("if (!" + call + ") return;");
+        place(next, null);
+    }
+
+    private void startIfTerminated() {
+        if (terminated || current == null) {
+            current = new Case(null);
+            cases.add(current);
+            terminated = false;
+        }
+    }
+
+    /** The cases, each line indented by {@code margin}. */
+    List<String> render(String margin) {
+        for (int i = 0; i < cases.size(); i++) {
+            cases.get(i).number = i;
+        }
+        List<String> out = new ArrayList<>();
+        for (Case c : cases) {
+            out.add(margin + "case " + c.number + ":" + (c.comment == null ? "" : " // " + c.comment));
+            for (Object line : c.lines) {
+                if (line instanceof Jump jump) {
+                    out.add(margin + "    " + jump.indent() + jump.before() + jump.point().number() + jump.after());
+                } else {
+                    out.add(margin + "    " + line);
+                }
+            }
+        }
+        return out;
+    }
+}

@@ -1,0 +1,363 @@
+package masl.translator.generate;
+
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.stream.Collectors;
+import masl.grammar.MASLParser;
+import masl.grammar.MASLParser.StatementContext;
+import masl.translator.analysis.AnalyzedProgram;
+import masl.translator.analysis.Block;
+import masl.translator.analysis.ESequence;
+import masl.translator.analysis.EntryRef;
+import masl.translator.analysis.Sharing;
+import masl.translator.analysis.Variable;
+import org.antlr.v4.runtime.ParserRuleContext;
+
+/**
+ * Translates a program's blocks and statements into the cases of one agent type's resumable state
+ * machine, following masl-runtime/docs/generated-code-contract.md: every runtime call that may
+ * suspend is a resumption point, each case is commented with its MASL line.
+ */
+final class StatementWriter {
+
+    /** A loop being translated: where {@code exit} goes. */
+    private record Loop(CaseWriter.Point exit) {
+    }
+
+    private final AnalyzedProgram program;
+    private final StaticStructure structure;
+    private final ExpressionWriter expressions;
+    private final Unsupported unsupported;
+    private final String file;
+    private final CaseWriter cases = new CaseWriter();
+    private final Map<MASLParser.EntryBlockContext, Block> blocksByTree = new IdentityHashMap<>();
+    private final Map<Block, ESequence> sequenceStartingWith = new IdentityHashMap<>();
+    private final Map<Block, CaseWriter.Point> tests = new IdentityHashMap<>();
+    private final Map<Block, CaseWriter.Point> afters = new IdentityHashMap<>();
+    private final Map<Block, CaseWriter.Point> firsts = new IdentityHashMap<>();
+    private final Set<Block> keptOnReelect;
+    private final LoopClassifier loops;
+    private final InstructionWriter instructions;
+    private Deque<Loop> loopStack = new ArrayDeque<>();
+    private Block current;
+
+    StatementWriter(AnalyzedProgram program, StaticStructure structure, ExpressionWriter expressions,
+            Unsupported unsupported, String file, Set<Block> keptOnReelect) {
+        this.program = program;
+        this.structure = structure;
+        this.expressions = expressions;
+        this.unsupported = unsupported;
+        this.file = file;
+        this.keptOnReelect = keptOnReelect;
+        this.loops = new LoopClassifier(program);
+        this.instructions = new InstructionWriter(program, cases, expressions, file);
+        if (program.root() != null) {
+            index(program.root());
+        }
+    }
+
+    private void index(Block block) {
+        blocksByTree.put(block.tree(), block);
+        for (ESequence sequence : block.sequences()) {
+            sequenceStartingWith.put(sequence.blocks().get(0), sequence);
+            sequence.blocks().forEach(this::index);
+        }
+    }
+
+    /** The whole program of an agent: its arrival at {@code main}, then the end of its mission. */
+    CaseWriter program() {
+        Block root = program.root();
+        if (root != null) {
+            CaseWriter.Point end = cases.point();
+            block(root, end);
+            cases.place(end, file + ":" + root.tree().getStop().getLine() + ": after " + root.name());
+            cases.suspending("ctx.endOfSequence(" + structure.topSequence(root) + ")", cases.point());
+            cases.note(file + ":" + root.tree().getStop().getLine() + ": the end of the agent's program");
+        } else {
+            cases.place(cases.point(), file + ":1: a program without blocks only creates its agents");
+        }
+        cases.line("ctx.finish();");
+        cases.end("return;");
+        return cases;
+    }
+
+    private String at(ParserRuleContext tree) {
+        return file + ":" + tree.getStart().getLine();
+    }
+
+    private CaseWriter.Point test(Block block) {
+        return tests.computeIfAbsent(block, b -> cases.point());
+    }
+
+    // ------------------------------------------------------------------ blocks (§6)
+
+    private void sequence(ESequence sequence) {
+        List<Block> blocks = sequence.blocks();
+        CaseWriter.Point end = cases.point();
+        for (int i = 0; i < blocks.size(); i++) {
+            block(blocks.get(i), i + 1 < blocks.size() ? test(blocks.get(i + 1)) : end);
+        }
+        Block last = blocks.get(blocks.size() - 1);
+        cases.place(end, file + ":" + last.tree().getStop().getLine() + ": end of the e-sequence "
+                + blocks.stream().map(Block::name).collect(Collectors.joining(", ", "{", "}")));
+        cases.suspending("ctx.endOfSequence(" + structure.sequence(sequence) + ")", cases.point());
+    }
+
+    private void block(Block block, CaseWriter.Point after) {
+        afters.put(block, after);
+        MASLParser.EntryBlockContext tree = block.tree();
+        String definition = structure.block(block);
+        boolean keeps = keptOnReelect.contains(block) && hasLocals(block);
+        cases.place(test(block), at(tree) + ": " + JavaText.header(tree));
+        CaseWriter.Point body = cases.point();
+        cases.setPc(body);
+        cases.open("switch (ctx.enter(" + definition + ", " + expressions.condition(tree.test) + ")) {");
+        cases.jumpLine("case SKIPPED -> { " + (keeps ? "keep$" + block.name() + " = false; " : ""), after, " }");
+        cases.line("case WAITING -> { return; }");
+        cases.line("case ENTERED -> { }");
+        cases.close("}");
+        cases.place(body, null);
+
+        Block outerBlock = current;
+        Deque<Loop> outerLoops = loopStack;
+        current = block;
+        loopStack = new ArrayDeque<>();
+        declarations(block, keeps);
+        CaseWriter.Point first = cases.point();
+        firsts.put(block, first);
+        cases.place(first, null);
+        for (MASLParser.BlockItemContext item : tree.blockItem()) {
+            if (item.reaction() != null) {
+                unsupported.report(item.reaction(), "a reaction (react, events)");
+            } else if (item.statement() != null) {
+                statementInList(item.statement());
+            }
+        }
+        current = outerBlock;
+        loopStack = outerLoops;
+
+        cases.place(cases.point(), file + ":" + tree.getStop().getLine() + ": end of " + block.name());
+        cases.setPc(after);
+        cases.line("if (!ctx.leave(" + definition + ")) return;");
+    }
+
+    private static boolean hasLocals(Block block) {
+        return block.variables().stream().anyMatch(v -> v.sharing() == Sharing.LOCAL);
+    }
+
+    private void declarations(Block block, boolean keeps) {
+        for (MASLParser.BlockItemContext item : block.tree().blockItem()) {
+            if (item.declaration() instanceof MASLParser.EventDeclContext event) {
+                unsupported.report(event, "an event declaration");
+            } else if (item.declaration() instanceof MASLParser.LabelDeclContext label) {
+                unsupported.report(label, "a label declaration");
+            }
+        }
+        List<Variable> variables = block.variables();
+        if (variables.isEmpty()) {
+            return;
+        }
+        cases.note(at(variables.get(0).initializer() != null ? variables.get(0).initializer()
+                : block.tree()) + ": declarations of " + block.name());
+        for (Variable variable : variables) {
+            if (variable.sharing() == Sharing.SHARED && variable.initializer() != null) {
+                cases.line("ctx.shared(" + structure.shared(variable) + ").initialise(() -> "
+                        + expressions.initializer(variable.type(), variable.initializer()) + ");");
+            }
+        }
+        if (keeps) {
+            cases.open("if (!keep$" + block.name() + ") {");
+        }
+        for (Variable variable : variables) {
+            if (variable.sharing() == Sharing.LOCAL) {
+                String value = variable.initializer() == null ? JavaTypes.defaultValue(variable.type())
+                        : expressions.initializer(variable.type(), variable.initializer());
+                cases.line(expressions.local(variable) + " = " + value + ";");
+            }
+        }
+        if (keeps) {
+            cases.close("}");
+            cases.line("keep$" + block.name() + " = false;");
+        }
+    }
+
+    // ------------------------------------------------------------------ statements
+
+    private void statements(List<StatementContext> statements) {
+        for (StatementContext statement : statements) {
+            statementInList(statement);
+        }
+    }
+
+    /** A statement of a list: a block starting an e-sequence brings the whole e-sequence. */
+    private void statementInList(StatementContext statement) {
+        if (statement instanceof MASLParser.EntryStmtContext entry) {
+            ESequence sequence = sequenceStartingWith.get(blocksByTree.get(entry.entryBlock()));
+            if (sequence != null) {
+                sequence(sequence);
+            }
+            return;
+        }
+        statement(statement);
+    }
+
+    private void statement(StatementContext statement) {
+        if (statement instanceof MASLParser.EntryStmtContext) {
+            statementInList(statement);
+        } else if (statement instanceof MASLParser.BlockStmtContext block) {
+            statements(block.block().statement());
+        } else if (statement instanceof MASLParser.EmptyStmtContext) {
+            return;
+        } else if (statement instanceof MASLParser.ExpressionStmtContext expression) {
+            instructions.write(expression);
+        } else if (statement instanceof MASLParser.IfStmtContext ifStmt) {
+            ifStatement(ifStmt);
+        } else if (statement instanceof MASLParser.WhileStmtContext whileStmt) {
+            whileStatement(whileStmt);
+        } else if (statement instanceof MASLParser.ForStmtContext forStmt) {
+            forStatement(forStmt);
+        } else if (statement instanceof MASLParser.DoLoopStmtContext loop) {
+            doLoop(loop);
+        } else if (statement instanceof MASLParser.ExitStmtContext exit) {
+            int levels = exit.levels == null ? 1 : Integer.parseInt(exit.levels.getText());
+            cases.note(at(exit) + ": " + JavaText.snippet(exit));
+            cases.jump(loopStack.stream().skip(levels - 1).findFirst().orElseThrow().exit());
+        } else if (statement instanceof MASLParser.BreakStmtContext breakStmt) {
+            Block target = jumpTarget(breakStmt.jumpTarget());
+            cases.note(at(breakStmt) + ": " + JavaText.snippet(breakStmt));
+            cases.line("ctx.breakOut(" + structure.block(target) + ");");
+            cases.jump(afters.get(target));
+        } else if (statement instanceof MASLParser.ReelectStmtContext reelect) {
+            Block target = jumpTarget(reelect.jumpTarget());
+            cases.note(at(reelect) + ": " + JavaText.snippet(reelect));
+            cases.line("ctx.reelect(" + structure.block(target) + ");");
+            if (keptOnReelect.contains(target) && hasLocals(target)) {
+                cases.line("keep$" + target.name() + " = true;");
+            }
+            cases.jump(test(target));
+        } else if (statement instanceof MASLParser.RestartStmtContext restart) {
+            cases.note(at(restart) + ": restart;");
+            cases.line("ctx.restart(" + structure.block(current) + ");");
+            cases.jump(firsts.get(current));
+        } else if (statement instanceof MASLParser.ResumeStmtContext
+                || statement instanceof MASLParser.ClearEventsStmtContext
+                || statement instanceof MASLParser.EmitStmtContext
+                || statement instanceof MASLParser.EmitWithMessageStmtContext) {
+            unsupported.report(statement, statement.getStart().getText() + " (events)");
+        } else if (statement instanceof MASLParser.SetAcceptStateStmtContext
+                || statement instanceof MASLParser.WaitStmtContext) {
+            unsupported.report(statement, statement.getStart().getText() + " (permeability)");
+        } else {
+            unsupported.report(statement, "this statement");
+        }
+    }
+
+    /** The block a {@code break}/{@code reelect} names: n-th outwards (1 = current), or by name. */
+    private Block jumpTarget(MASLParser.JumpTargetContext target) {
+        if (target != null && target.identifier() != null) {
+            if (program.symbolOf(target.identifier()).orElse(null) instanceof EntryRef entry && entry.block() != null) {
+                return entry.block();
+            }
+            String name = target.identifier().getText();
+            for (Block block = current; block != null; block = block.parent()) {
+                if (block.name().equals(name) || block.parent() == null && name.equals("main")) {
+                    return block;
+                }
+            }
+            throw new IllegalStateException("the analysis let through break or reelect to " + name);
+        }
+        int levels = target == null ? 1 : Integer.parseInt(target.IntegerLiteral().getText());
+        Block block = current;
+        for (int i = 1; i < levels; i++) {
+            block = block.parent();
+        }
+        return block;
+    }
+
+    // ------------------------------------------------------------------ control (MASL 12)
+
+    private void ifStatement(MASLParser.IfStmtContext ifStmt) {
+        cases.note(at(ifStmt) + ": " + JavaText.header(ifStmt));
+        String condition = expressions.condition(ifStmt.expression());
+        if (instructions.isZeroDuration(ifStmt)) {
+            // Nothing in it can suspend: a plain Java if.
+            cases.open("if (" + condition + ") {");
+            statement(ifStmt.thenStmt);
+            if (ifStmt.elseStmt != null) {
+                cases.reopen("} else {");
+                statement(ifStmt.elseStmt);
+            }
+            cases.close("}");
+            return;
+        }
+        CaseWriter.Point otherwise = cases.point();
+        cases.jumpLine("if (!(" + condition + ")) { ", otherwise, " }");
+        statement(ifStmt.thenStmt);
+        if (ifStmt.elseStmt == null) {
+            cases.place(otherwise, null);
+            return;
+        }
+        CaseWriter.Point end = cases.point();
+        cases.jump(end);
+        cases.place(otherwise, at(ifStmt.elseStmt) + ": else");
+        statement(ifStmt.elseStmt);
+        cases.place(end, null);
+    }
+
+    private void whileStatement(MASLParser.WhileStmtContext loop) {
+        CaseWriter.Point head = cases.point();
+        CaseWriter.Point exit = cases.point();
+        cases.place(head, at(loop) + ": " + JavaText.header(loop));
+        cases.jumpLine("if (!(" + expressions.condition(loop.expression()) + ")) { ", exit, " }");
+        body(loop.statement(), exit);
+        iteration(head, loops.isBusyWait(loop.expression(), loop.statement()));
+        cases.place(exit, null);
+    }
+
+    private void forStatement(MASLParser.ForStmtContext loop) {
+        cases.note(at(loop) + ": " + JavaText.header(loop));
+        if (loop.init != null) {
+            instructions.writeParts(loop.init.expression());
+        }
+        CaseWriter.Point head = cases.point();
+        CaseWriter.Point exit = cases.point();
+        cases.place(head, at(loop) + ": the test of " + JavaText.header(loop));
+        if (loop.condition != null) {
+            cases.jumpLine("if (!(" + expressions.condition(loop.condition) + ")) { ", exit, " }");
+        }
+        body(loop.statement(), exit);
+        if (loop.update != null) {
+            instructions.writeParts(loop.update.expression());
+        }
+        iteration(head, false);
+        cases.place(exit, null);
+    }
+
+    private void doLoop(MASLParser.DoLoopStmtContext loop) {
+        CaseWriter.Point head = cases.point();
+        CaseWriter.Point exit = cases.point();
+        cases.place(head, at(loop) + ": do { ... } loop");
+        loopStack.push(new Loop(exit));
+        statements(loop.block().statement());
+        loopStack.pop();
+        iteration(head, loops.isBusyWait(null, loop.block()));
+        cases.place(exit, null);
+    }
+
+    private void body(StatementContext body, CaseWriter.Point exit) {
+        loopStack.push(new Loop(exit));
+        statement(body);
+        loopStack.pop();
+    }
+
+    /** The end of an iteration (MASL 5): events and invocations, and parking if it is a busy-wait. */
+    private void iteration(CaseWriter.Point head, boolean busyWait) {
+        cases.setPc(head);
+        cases.line("if (!ctx." + (busyWait ? "busyWaitIteration" : "loopIteration") + "()) return;");
+        cases.end("continue;");
+    }
+}

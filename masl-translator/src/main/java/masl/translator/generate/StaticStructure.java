@@ -1,0 +1,110 @@
+package masl.translator.generate;
+
+import java.util.ArrayList;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
+import masl.translator.analysis.Block;
+import masl.translator.analysis.ESequence;
+import masl.translator.analysis.Sharing;
+import masl.translator.analysis.Variable;
+
+/**
+ * The static structure of a program (generated-code contract §1.1): one {@code EntryDefinition}
+ * constant per block, one {@code ESequence} per e-sequence of several blocks, one
+ * {@code SharedDeclaration} per shared variable, built in program order in the mission class.
+ */
+final class StaticStructure {
+
+    private final String sourceName;
+    private final JavaNames.Unique names = new JavaNames.Unique("AGENTS");
+    private final Map<Block, String> blocks = new IdentityHashMap<>();
+    private final Map<ESequence, String> sequences = new IdentityHashMap<>();
+    private final Map<Variable, String> shared = new IdentityHashMap<>();
+    private final List<String> declarations = new ArrayList<>();
+
+    StaticStructure(Block root, String sourceName) {
+        this.sourceName = sourceName;
+        if (root != null) {
+            String name = names.take(JavaNames.constant(root.name()));
+            blocks.put(root, name);
+            declarations.add("// " + sourceName + ":" + line(root) + ": " + root);
+            declarations.add("static final EntryDefinition " + name + " = EntryDefinition.main("
+                    + JavaText.quote(root.name()) + ", " + mode(root) + ");");
+            declareContents(root);
+        }
+    }
+
+    /** The constant of a block's definition. */
+    String block(Block block) {
+        return blocks.get(block);
+    }
+
+    /** The expression of an e-sequence: its constant, or {@code BLOCK.sequence()} for a block standing alone. */
+    String sequence(ESequence sequence) {
+        String name = sequences.get(sequence);
+        return name != null ? name : block(sequence.blocks().get(0)) + ".sequence()";
+    }
+
+    /** The constant of the top-level e-sequence. */
+    String topSequence(Block root) {
+        return block(root) + ".sequence()";
+    }
+
+    /** The constant of a shared variable's declaration. */
+    String shared(Variable variable) {
+        return shared.get(variable);
+    }
+
+    /** The field declarations, in program order. */
+    List<String> declarations() {
+        return declarations;
+    }
+
+    private void declareContents(Block block) {
+        String owner = blocks.get(block);
+        for (Variable variable : block.variables()) {
+            if (variable.sharing() == Sharing.SHARED) {
+                String name = names.take(owner + "_" + JavaNames.constant(variable.name()));
+                shared.put(variable, name);
+                declarations.add("static final SharedDeclaration<" + JavaTypes.boxed(variable.type()) + "> " + name
+                        + " = " + owner + ".declareShared(" + JavaText.quote(variable.name()) + ", "
+                        + JavaTypes.defaultValue(variable.type()) + ");");
+            }
+        }
+        for (ESequence sequence : block.sequences()) {
+            List<Block> members = sequence.blocks();
+            if (members.size() == 1) {
+                Block child = members.get(0);
+                declareBlock(child, owner + ".child(");
+            } else {
+                String name = names.take(String.join("_", members.stream().map(b -> JavaNames.constant(b.name()))
+                        .toList()) + "_SEQUENCE");
+                sequences.put(sequence, name);
+                declarations.add("// " + sourceName + ":" + line(members.get(0)) + ": the e-sequence "
+                        + members.stream().map(Block::name).toList());
+                declarations.add("static final ESequence " + name + " = " + owner + ".newSequence();");
+                for (Block child : members) {
+                    declareBlock(child, name + ".block(");
+                }
+            }
+        }
+    }
+
+    private void declareBlock(Block child, String factory) {
+        String name = names.take(JavaNames.constant(child.name()));
+        blocks.put(child, name);
+        declarations.add("// " + sourceName + ":" + line(child) + ": " + child);
+        declarations.add("static final EntryDefinition " + name + " = " + factory + JavaText.quote(child.name())
+                + ", " + mode(child) + ");");
+        declareContents(child);
+    }
+
+    private static String mode(Block block) {
+        return "Mode." + block.mode().name();
+    }
+
+    private static int line(Block block) {
+        return block.tree().getStart().getLine();
+    }
+}

@@ -1,0 +1,177 @@
+package masl.translator.generate;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * MASL constructs translated and run: each program's journal is asserted on the pool scheduler and
+ * on seeds of the deterministic scheduler.
+ */
+@Timeout(120)
+class ConstructsTest {
+
+    private static final int RUNS = 10;
+    private static final String ONE = "import Default.xml;\nDefault a = newAgent(Default);\n";
+    private static final String FOUR = "import Default.xml;\nDefault a, b, c, d = newAgent(Default);\n";
+
+    private static void assertJournal(String expected, String program) {
+        for (String journal : Programs.journals(program, RUNS)) {
+            assertEquals(expected, journal);
+        }
+    }
+
+    @Test
+    void ifElseWithNumericConditionsAndDiamond() {
+        assertJournal("abe\n", ONE + """
+                asynchronous entry main (true) {
+                  local int n = 2;
+                  if (n) { .log("a"); .log("b"); } else .log("c");
+                  if (n - 2) .log("d"); else { .log("e"); }
+                  if (n <> 2) .log("f");
+                  .logln("");
+                }
+                """);
+    }
+
+    @Test
+    void whileForAndDoLoopWithExitAndExitN() {
+        assertJournal("012wwwd1 5\n", ONE + """
+                asynchronous entry main (true) {
+                  local int i = 0;
+                  for (i = 0; i < 3; i++) { .log(i); }
+                  while (i > 0) { i--; .log("w"); }
+                  do { i++; if (i == 2) exit; .log("d" + i); } loop
+                  do { do { i++; if (i > 4) exit(2); } loop } loop
+                  .logln(" " + i);
+                }
+                """);
+    }
+
+    @Test
+    void readModifyWritesOfSharedVariablesAreAtomic() {
+        assertJournal("16 160 abcd 10\n", FOUR + """
+                synchronous entry main (true) {
+                  shared int ids = 0;
+                  shared int n = 0;
+                  shared long total = 10;
+                  shared String letters = "";
+                  local int old = 0;
+                  n++;
+                  ++n;
+                  n += 3;
+                  ids += .getProxyID() + 1;
+                  total = total * 2;
+                  old = n--;
+                  scalar entry letter (true) { letters = letters + "a"; }
+                  .nop();
+                  scalar entry report (true) { .logln(n + " " + total + " " + letters + "bcd " + ids); }
+                }
+                """);
+    }
+
+    @Test
+    void restartBreakNAndReelectKeepingLocals() {
+        assertJournal("tries=4\ntries=4\n", "import Default.xml;\nDefault a, b = newAgent(Default);\n" + """
+                asynchronous entry main (true) {
+                  local int tries = 0;
+                  asynchronous entry outer (true) {
+                    local int visits = 0;
+                    visits++;
+                    asynchronous entry inner (true) {
+                      tries++;
+                      if (tries < 3) restart;
+                      if (visits < 2) reelect(outer);
+                      break(2);
+                    }
+                    .logln("never");
+                  }
+                  .logln("tries=" + tries);
+                }
+                """);
+    }
+
+    @Test
+    void relaxedTypingFinalAndValueEquality() {
+        assertJournal("equal\ndifferent\n4\ny\n7\n0\n", ONE + """
+                scalar entry main (true) {
+                  local final String word = "ab";
+                  local String built = "a";
+                  local short small = 3;
+                  local char c = 'x';
+                  built = built + "b";
+                  if (built == word) .logln("equal");
+                  if (built != "ba") .logln("different");
+                  .logln(small + 1);
+                  c++;
+                  .logln(c);
+                  .logln(Math.max(2, 7));
+                  .logln(new java.util.Vector<Integer>().size());
+                }
+                """);
+    }
+
+    @Test
+    void membersOfObjectTypedValuesAreFoundAtRunTime() {
+        assertJournal("3\nbc\n3\ntrue\ntrue false\n", ONE + """
+                asynchronous entry main (true) {
+                  local java.util.Vector v = new java.util.Vector();
+                  local java.util.Vector w = new java.util.Vector();
+                  local int n = 0;
+                  v.add("abc");
+                  w.add(v.iterator());
+                  .logln(v.get(0).length());
+                  .logln(v.get(0).substring(1));
+                  n = v.get(0).length();
+                  .logln(n);
+                  .logln(w.get(0).hasNext());
+                  .logln((v.get(0) instanceof String) + " " + (this instanceof Default && v instanceof java.util.Map));
+                }
+                """);
+    }
+
+    @Test
+    void sleepSuspendsOnTheMissionClock() {
+        assertJournal("slept\n", ONE + """
+                asynchronous entry main (true) {
+                  .sleep(5);
+                  Thread.sleep(5);
+                  .logln("slept");
+                }
+                """);
+    }
+
+    @Test
+    void absentMembersMakeStatementsNopsAndTestsFalse() {
+        String program = """
+                import Default.xml;
+                import robots/Khepera.xml;
+                Default d = newAgent(Default);
+                Khepera k = newAgent(Khepera);
+                synchronous entry main (true) {
+                  .startGripper();
+                  if (.getProximity(3) == 3) .logln("near " + .getProxyID()); else .logln("far " + .getProxyID());
+                  scalar entry charged (.battery == 0) { .logln("battery"); }
+                }
+                """;
+        for (String journal : Programs.journals(program, RUNS)) {
+            assertEquals(List.of("battery", "far 0", "near 1"), Programs.sortedLines(journal), journal);
+        }
+    }
+
+    @Test
+    void aBusyWaitOnASharedVariableEndsWhenAnotherAgentWritesIt() {
+        assertJournal("go\n", "import Default.xml;\nDefault a, b = newAgent(Default);\n" + """
+                asynchronous entry main (true) {
+                  shared int flag = 0;
+                  asynchronous entry waiter (.getProxyID() == 0) {
+                    while (flag != 1) {}
+                    .logln("go");
+                  }
+                  asynchronous entry setter (.getProxyID() == 1) { .sleep(10); flag = 1; }
+                }
+                """);
+    }
+}

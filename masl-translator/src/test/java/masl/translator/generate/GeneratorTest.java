@@ -1,0 +1,187 @@
+package masl.translator.generate;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import masl.runtime.descriptor.AgentPath;
+import masl.translator.MissionLoader;
+import masl.translator.Translation;
+import masl.translator.compile.GeneratedCodeException;
+import masl.translator.diagnostics.Diagnostic;
+import masl.translator.diagnostics.Diagnostics;
+import masl.translator.source.SourceFile;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/** The generated Java: names, structure, comments, and the constructs refused with a positioned error. */
+class GeneratorTest {
+
+    private static final Path CORPUS = Path.of("..", "masl-grammar", "src", "test", "resources", "corpus");
+
+    private static final String E2 = """
+            import Default.xml as Default;
+            Default a, b, c, d, e = newAgent(Default);
+            synchronous entry main (true) {
+              shared int n = 0;
+              local int mine = 0;
+              n++;
+              mine++;
+              scalar entry report (true) { .logln("n=" + n); }
+              .logln("mine=" + mine);
+            }
+            """;
+
+    @Test
+    void packageAndClassNamesComeFromTheFileName() {
+        Translation hello = Programs.translate("missions/hello.masl", E2);
+        assertEquals("masl.generated.hello.HelloMission", hello.missionClassName());
+        assertEquals(List.of("masl.generated.hello.HelloMission", "masl.generated.hello.DefaultProgram"),
+                List.copyOf(hello.javaSources().keySet()));
+        assertEquals("masl.generated.my_run_2.MyRun2Mission",
+                Programs.translate("My-Run 2.masl", E2).missionClassName());
+        assertEquals("masl.generated._1st.M1stMission", Programs.translate("1st.masl", E2).missionClassName());
+    }
+
+    @Test
+    void everyResumptionPointIsCommentedWithItsMaslLine() {
+        String program = Programs.translate("e2.masl", E2).javaSources().get("masl.generated.e2.DefaultProgram");
+        Matcher cases = Pattern.compile("(?m)^ *case \\d+:(.*)$").matcher(program);
+        int count = 0;
+        while (cases.find()) {
+            count++;
+            assertTrue(cases.group(1).matches(" // e2\\.masl:\\d+: .+"), "uncommented case: " + cases.group());
+        }
+        assertEquals(12, count, program);
+        assertTrue(program.contains("case 0: // e2.masl:3: synchronous entry main (true)"), program);
+        assertTrue(program.contains("// e2.masl:6: n++;\n"), program);
+        assertTrue(program.contains("ctx.shared(MAIN_N).getAndUpdate(n -> n + 1);"), program);
+        assertTrue(program.contains("self.logln(\"n=\" + ctx.shared(MAIN_N).get());"), program);
+    }
+
+    @Test
+    void theMissionClassBuildsTheBlocksInProgramOrderAndDeclaresTheAgents() {
+        String mission = Programs.translate("e2.masl", E2).javaSources().get("masl.generated.e2.E2Mission");
+        int main = mission.indexOf("static final EntryDefinition MAIN = EntryDefinition.main(\"main\", Mode.SYNCHRONOUS);");
+        int shared = mission.indexOf("static final SharedDeclaration<Integer> MAIN_N = MAIN.declareShared(\"n\", 0);");
+        int report = mission.indexOf("static final EntryDefinition REPORT = MAIN.child(\"report\", Mode.SCALAR);");
+        assertTrue(main >= 0 && main < shared && shared < report, mission);
+        assertTrue(mission.contains("new AgentSpec(\"e\", \"masl.agents.Default\"));"), mission);
+        assertTrue(mission.contains("builder.agent(\"a\", (masl.agents.Default) create(implementations, AGENTS.get(0)),"
+                + " DefaultProgram::new);"), mission);
+    }
+
+    @Test
+    void busyWaitsParkAndOtherLoopsOnlyYield() {
+        String program = program("""
+                shared int flag = 0;
+                local int i = 0;
+                while (flag != 1) {}
+                while (i < 10) { i++; }
+                while (System.currentTimeMillis() < 0) {}
+                """);
+        assertEquals(1, occurrences(program, "ctx.busyWaitIteration()"), program);
+        assertEquals(2, occurrences(program, "ctx.loopIteration()"), program);
+    }
+
+    @Test
+    void zeroDurationStatementsHaveNoStepBoundary() {
+        String program = program("""
+                .getProxyID();
+                main.release();
+                .nop();
+                """);
+        assertEquals(1, occurrences(program, "ctx.stepBoundary()"), program);
+    }
+
+    @Test
+    void aCompoundAssignmentOfASharedVariableEvaluatesItsValueBeforeTakingTheLock() {
+        String program = program("""
+                shared int n = 0;
+                n += .getProxyID() * 2;
+                n = n * 2 + .getProxyID();
+                """);
+        assertTrue(program.contains("tmp$1 = self.getProxyID() * 2;\n"), program);
+        assertTrue(program.contains("ctx.shared(MAIN_N).update(n -> n + tmp$1);"), program);
+        assertTrue(program.contains("ctx.shared(MAIN_N).update(n -> n * 2 + self.getProxyID());"), program);
+        assertTrue(program.contains("private int tmp$1;"), program);
+    }
+
+    @Test
+    void anIfWhoseBranchesCannotSuspendIsAPlainJavaIf() {
+        String program = program("if (main.count > 1) main.lock(); else main.release(2);");
+        assertTrue(program.contains("if (ctx.entry(MAIN).count() > 1) {"), program);
+        assertTrue(program.contains("} else {"), program);
+    }
+
+    @Test
+    void unsupportedConstructsArePositionedErrors() throws IOException {
+        Translation translation = Programs.translate("e4.masl", Files.readString(CORPUS.resolve(
+                "e4-events-lookup-in-the-parent-resume.masl")));
+        assertFalse(translation.succeeded());
+        assertNull(translation.missionClassName());
+        assertTrue(translation.javaSources().isEmpty());
+        List<Diagnostic> errors = translation.diagnostics().sorted();
+        assertFalse(errors.isEmpty());
+        for (Diagnostic error : errors) {
+            assertTrue(error.message().endsWith(" is not supported yet by the translator"), error.headline());
+            assertTrue(error.line() > 0 && error.column() > 0, error.headline());
+        }
+        assertTrue(errors.stream().anyMatch(error -> error.headline().startsWith("e4.masl:")
+                && error.message().startsWith("emitWithMessage")), errors.toString());
+    }
+
+    static Stream<Path> corpus() throws IOException {
+        try (Stream<Path> files = Files.list(CORPUS)) {
+            return files.filter(file -> file.toString().endsWith(".masl")).sorted().toList().stream();
+        }
+    }
+
+    /** Whatever the program, the translator compiles it or says what it cannot translate yet; it never crashes. */
+    @ParameterizedTest
+    @MethodSource("corpus")
+    void everyCorpusProgramCompilesOrIsRefusedWithErrors(Path file) throws IOException {
+        Translation translation = Programs.translate(file.getFileName().toString(), Files.readString(file));
+        if (translation.succeeded()) {
+            MissionLoader.load(translation, AgentPath.parse("")).program();
+        } else {
+            for (Diagnostic error : translation.diagnostics().sorted()) {
+                assertTrue(error.message().endsWith(" is not supported yet by the translator"), error.headline());
+            }
+        }
+    }
+
+    @Test
+    void javaThatDoesNotCompileIsAnInternalErrorNotTheUsersProblem() {
+        Translation broken = new Translation(SourceFile.of("x.masl", ""), new Diagnostics(),
+                "masl.generated.x.XMission", Map.of("masl.generated.x.XMission", "package masl.generated.x; class {"));
+        assertThrows(GeneratedCodeException.class, () -> MissionLoader.load(broken, AgentPath.parse("")));
+    }
+
+    private static String program(String body) {
+        Translation translation = Programs.translate("t.masl", "import Default.xml;\nDefault a = newAgent(Default);\n"
+                + "synchronous entry main (true) {\n" + body + "\n}\n");
+        assertTrue(translation.succeeded(), () -> translation.diagnostics().sorted().toString());
+        MissionLoader.load(translation, AgentPath.parse(""));
+        return translation.javaSources().get("masl.generated.t.DefaultProgram");
+    }
+
+    private static int occurrences(String text, String part) {
+        int count = 0;
+        for (int at = text.indexOf(part); at >= 0; at = text.indexOf(part, at + 1)) {
+            count++;
+        }
+        return count;
+    }
+}

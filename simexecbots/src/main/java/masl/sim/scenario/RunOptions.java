@@ -1,0 +1,53 @@
+package masl.sim.scenario;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.Objects;
+import java.util.Optional;
+import masl.runtime.trace.Trace;
+
+/**
+ * How {@link ScenarioRunner} runs a scenario, besides what the scenario itself says.
+ *
+ * @param timeout   wall-clock limit of the run (the scenario's {@code duration} limits simulated time)
+ * @param journal   where the mission journal is written as it grows, or null for nowhere but the result
+ * @param trace     the runtime's trace of memberships and barriers, as the runtime stamps it (wall-clock
+ *                  nanoseconds); {@code trace.jsonl} and {@link SimulationResult#trace()} carry simulated time
+ * @param output    a folder to write {@code trajectories.csv}, {@code events.jsonl}, {@code trace.jsonl},
+ *                  {@code journal.txt} and {@code trajectories.png} to, created if missing
+ * @param classes   loads the implementation and initialisation classes the scenario names, or null
+ *                  for the mission program's own class loader
+ */
+public record RunOptions(Duration timeout, Appendable journal, Trace trace, Optional<Path> output, ClassLoader classes) {
+
+    public RunOptions {
+        Objects.requireNonNull(timeout, "timeout");
+        Objects.requireNonNull(trace, "trace");
+        Objects.requireNonNull(output, "output");
+    }
+
+    /** Ten minutes, no journal sink, no trace, no output files, the program's class loader. */
+    public static RunOptions defaults() {
+        return new RunOptions(Duration.ofMinutes(10), null, Trace.NONE, Optional.empty(), null);
+    }
+
+    public RunOptions withTimeout(Duration newTimeout) {
+        return new RunOptions(newTimeout, journal, trace, output, classes);
+    }
+
+    public RunOptions withJournal(Appendable sink) {
+        return new RunOptions(timeout, sink, trace, output, classes);
+    }
+
+    public RunOptions withTrace(Trace newTrace) {
+        return new RunOptions(timeout, journal, newTrace, output, classes);
+    }
+
+    public RunOptions withOutput(Path folder) {
+        return new RunOptions(timeout, journal, trace, Optional.of(folder), classes);
+    }
+
+    public RunOptions withClasses(ClassLoader loader) {
+        return new RunOptions(timeout, journal, trace, output, loader);
+    }
+}

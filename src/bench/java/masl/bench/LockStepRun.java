@@ -1,0 +1,15 @@
+package masl.bench;
+
+import java.util.concurrent.Callable;
+
+/** One way of running N agents through a number of lock-step steps. */
+interface LockStepRun {
+
+    String name();
+
+    /**
+     * Everything that is not the run itself (translating, compiling, allocating), done before the
+     * clock starts; the returned call runs the agents and returns the number of steps made.
+     */
+    Callable<Long> prepare(int agents, int steps) throws Exception;
+}

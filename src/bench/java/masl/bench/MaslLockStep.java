@@ -1,0 +1,70 @@
+package masl.bench;
+
+import java.time.Duration;
+import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.stream.Collectors;
+import java.util.stream.IntStream;
+import masl.runtime.Mission;
+import masl.runtime.PoolScheduler;
+import masl.runtime.descriptor.AgentPath;
+import masl.runtime.trace.TraceEvent;
+import masl.translator.MissionLoader;
+import masl.translator.Translation;
+import masl.translator.Translator;
+import masl.translator.source.SourceFile;
+
+/**
+ * MASL itself: a program of N agents in one synchronous block looping over a trivial instruction,
+ * translated and compiled as {@code masl run} does, run on the default pool (one worker per core).
+ * Steps are counted as barrier trips in the mission's trace.
+ */
+final class MaslLockStep implements LockStepRun {
+
+    @Override
+    public String name() {
+        return "MASL";
+    }
+
+    @Override
+    public Callable<Long> prepare(int agents, int steps) throws Exception {
+        MissionLoader program = compile(source(agents, steps));
+        AtomicLong trips = new AtomicLong();
+        Mission mission = program.newMission()
+                .scheduler(new PoolScheduler())
+                .journal(new StringBuilder())
+                .trace(event -> {
+                    if (event instanceof TraceEvent.BarrierTripped) {
+                        trips.incrementAndGet();
+                    }
+                })
+                .build();
+        return () -> {
+            mission.run(Duration.ofMinutes(10)).requireCompleted();
+            return trips.get();
+        };
+    }
+
+    static String source(int agents, int steps) {
+        String names = IntStream.range(0, agents).mapToObj(i -> "a" + i).collect(Collectors.joining(", "));
+        return """
+                import Default.xml as Default;
+                Default %s = newAgent(Default);
+                synchronous entry main (true) {
+                  local int i = 0;
+                  while (i < %d) {
+                    i++;
+                  }
+                }
+                """.formatted(names, steps);
+    }
+
+    private static MissionLoader compile(String source) {
+        AgentPath shippedAgentsOnly = AgentPath.parse("");
+        Translation translation = new Translator(shippedAgentsOnly).translate(SourceFile.of("lockstep.masl", source));
+        if (!translation.succeeded()) {
+            throw new IllegalStateException("the benchmark's program does not translate: " + translation.diagnostics().sorted());
+        }
+        return MissionLoader.load(translation, shippedAgentsOnly);
+    }
+}

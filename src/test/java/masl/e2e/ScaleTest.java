@@ -1,0 +1,49 @@
+package masl.e2e;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.stream.Collectors;
+import java.util.stream.IntStream;
+import masl.translator.cli.Masl;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/** A synchronous block of 1,000 agents runs 1,000 lock-step steps through {@code masl run}: it must simply complete. */
+class ScaleTest {
+
+    @TempDir
+    Path folder;
+
+    @Test
+    @Timeout(300)
+    void aThousandAgentsTakeAThousandLockStepSteps() throws IOException {
+        String agents = IntStream.range(0, 1000).mapToObj(i -> "a" + i).collect(Collectors.joining(", "));
+        Path program = folder.resolve("thousand.masl");
+        Files.writeString(program, "import Default.xml as Default;\n"
+                + "Default " + agents + " = newAgent(Default);\n"
+                + """
+                synchronous entry main (true) {
+                  shared int steps = 0;
+                  local int i = 0;
+                  while (i < 1000) {
+                    i++;
+                  }
+                  scalar entry count (true) { steps = i; }
+                  scalar entry report (main.count == 1000) { .logln("steps " + steps); }
+                }
+                """);
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int status = new Masl(new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8)).run("run", program.toString());
+        assertEquals(0, status, err.toString(StandardCharsets.UTF_8));
+        assertEquals("steps 1000\n", out.toString(StandardCharsets.UTF_8));
+    }
+}
