@@ -9,8 +9,10 @@ import java.time.Duration;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import masl.runtime.AgentContext;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
+import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.TestAgent;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -26,9 +28,9 @@ class JadeLauncherTest {
     void aMissionOnItsOwnPlatformLeavesNoThreadBehind() throws Exception {
         Set<Thread> before = new HashSet<>(Thread.getAllStackTraces().keySet());
         StringWriter journal = new StringWriter();
-        MissionProgram program = TestPrograms.of(null, 2, self -> new masl.runtime.testing.CompactProgram(self) {
+        MissionProgram program = TestPrograms.of(null, 2, self -> new CompactProgram(self) {
             @Override
-            protected void resume(masl.runtime.AgentContext ctx) {
+            protected void resume(AgentContext ctx) {
                 self.logln("agent " + self.getProxyID());
                 ctx.finish();
             }

@@ -64,8 +64,9 @@ public final class AclPingPong {
                 for (int run = 0; run < runs; run++) {
                     Result result = measure(platform, pairs, warmUp, window);
                     rates[run] = result.roundTripsPerSecond();
-                    System.out.printf(Locale.ROOT, "pairs=%-3d run=%d  %,10.0f round trips/s  %7.1f us per round trip%n",
-                            pairs, run + 1, result.roundTripsPerSecond(), result.microsPerRoundTrip());
+                    System.out.printf(Locale.ROOT,
+                            "pairs=%-3d run=%d  %,10.0f round trips/s  %7.1f us per round trip%n", pairs, run + 1,
+                            result.roundTripsPerSecond(), result.microsPerRoundTrip());
                 }
                 Arrays.sort(rates);
                 double median = rates[runs / 2];
