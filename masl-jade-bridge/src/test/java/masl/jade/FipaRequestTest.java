@@ -76,12 +76,15 @@ class FipaRequestTest {
     }
 
     @Test
-    void aPrimitiveThatThrowsAnswersFailure() throws Exception {
+    void aPrimitiveThatThrowsOrAResultThatCannotBeWrittenAnswersFailure() throws Exception {
         runWhile(() -> {
             ACLMessage failed = invoke("divide", List.of(1, 0));
             assertEquals(ACLMessage.FAILURE, failed.getPerformative());
             assertEquals(new Reply.Failed("java.lang.ArithmeticException", "/ by zero"),
                     AclInvocations.readReply(failed));
+            assertEquals(new Reply.Failed("java.lang.IllegalStateException", "no text for this"),
+                    AclInvocations.readReply(invoke("unwritable", List.of())));
+            assertEquals(ACLMessage.INFORM, invoke("nop", List.of()).getPerformative(), "the agent still serves");
         });
     }
 
@@ -107,7 +110,7 @@ class FipaRequestTest {
                     + "was expecting double-quote to start field name",
                     raw(ACLMessage.REQUEST, "{\"primitive\":\"log\",}"));
             assertNotUnderstood("content:1:14: error: unknown primitive \"fly\": ServiceAgent has getProxyID, nop, "
-                    + "log, logln, add, divide, release", raw(ACLMessage.REQUEST, "{\"primitive\":\"fly\"}"));
+                    + "log, logln, add, divide, unwritable, release", raw(ACLMessage.REQUEST, "{\"primitive\":\"fly\"}"));
             assertNotUnderstood("content:1:14: error: int add(int, int) takes 2 arguments, got 1",
                     raw(ACLMessage.REQUEST, "{\"primitive\":\"add\",\"args\":[1]}"));
             assertNotUnderstood("content:1:30: error: argument 2 of add: expected an int, got \"two\"",
