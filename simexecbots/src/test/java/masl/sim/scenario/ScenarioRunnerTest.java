@@ -255,6 +255,24 @@ class ScenarioRunnerTest {
     }
 
     @Test
+    void aScenarioFileWithItsWorldNextToItRunsFromItsPath() throws Exception {
+        Path file = Path.of(getClass().getResource("/scenarios/two-wheeled.scenario.xml").toURI());
+        Scenario scenario = new ScenarioLoader().load(file);
+        assertEquals("two wheeled robots", scenario.name());
+        assertEquals(file.resolveSibling("wander.masl"), scenario.mission().orElseThrow(), "resolved next to the scenario");
+        TestMission mission = new TestMission()
+                .agent("k0", WheeledRobot.class, impl -> RobotPrograms.wander(impl, 1000))
+                .agent("k1", WheeledRobot.class, impl -> RobotPrograms.wander(impl, 1000));
+        Path output = Path.of("build", "pictures", "two-wheeled");
+        SimulationResult result = new ScenarioRunner(scenario).run(mission, quick().withOutput(output));
+        assertEquals(MissionOutcome.Status.STOPPED, result.outcome().status(), "ended by the scenario's duration");
+        assertEquals(10.0, result.simulatedSeconds(), 1e-9);
+        for (RunRecorder.Sample s : result.recorder().samples()) {
+            assertTrue(Math.abs(s.x()) < 0.6 && Math.abs(s.y()) < 0.6, "stayed inside the walls: " + s);
+        }
+    }
+
+    @Test
     void aSmallScenarioWritesAPictureWithEveryRobotsPath() throws Exception {
         Scenario scenario = scenario("""
                 <physics seed="3" duration="6"/>
