@@ -1,5 +1,6 @@
 package masl.runtime;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Queue;
@@ -9,6 +10,7 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import masl.runtime.trace.LeaveCause;
+import masl.runtime.trace.TraceEvent;
 
 /**
  * A MASL agent at run time: an active object with its own program counter (in its
@@ -30,6 +32,15 @@ import masl.runtime.trace.LeaveCause;
  * unpark that comes meanwhile turns {@code SERVING → SERVING_WOKEN}, and the serving slice then
  * schedules the program. So an agent is never run by two threads at once, its program and the
  * invocations it serves never overlap, and no wake-up or invocation is lost.
+ *
+ * <p><b>Events</b> (MASL §8). Emitters push occurrences onto the agent's lock-free
+ * {@link EventQueue}, and unpark it if it is parked in a busy-wait (§5). At a step boundary or
+ * loop iteration the agent takes the whole queue and plans the reactions ({@link ReactionPlan}).
+ * If there are any, it <em>redirects</em> its program: it saves {@code pc} (where the interrupted
+ * boundary continues), sets {@code pc} to the first reaction's code, and the boundary call returns
+ * {@code false}; the slice then calls {@code resume} again at once. Each reaction ends with
+ * {@link #endReaction()}, which redirects to the next one, or lets the last one apply its ending
+ * (§8: the last reaction decides): {@link #resumeInterrupted()}, or a break, restart or reelect.
  */
 final class Agent implements AgentContext, AgentTask {
 
@@ -49,7 +60,9 @@ final class Agent implements AgentContext, AgentTask {
     private final AtomicInteger state = new AtomicInteger(SCHEDULED);
     /** The ticket of the pending park, 0 if none. */
     private final AtomicLong wakeTicket = new AtomicLong();
-    private final Queue<EventOccurrence> events = new ConcurrentLinkedQueue<>();
+    private final EventQueue events = new EventQueue();
+    /** The ticket of the agent's latest busy-wait park: an event perceived then wakes it (§5). */
+    private volatile long busyWaitTicket;
     private final Queue<Runnable> invocations = new ConcurrentLinkedQueue<>();
     private volatile boolean finished;
 
@@ -61,6 +74,17 @@ final class Agent implements AgentContext, AgentTask {
     private long progress;
     private long busyWaitEpoch = -1;
     private long busyWaitProgress = -1;
+    /** The program's pc was set to other code: resume it at once, in this slice. */
+    private boolean redirected;
+    /** The reactions still to run in the current event processing; null when not processing. */
+    private ArrayDeque<ReactionPlan.Step> reactionsToRun;
+    /** The occurrence the running reaction handles; null outside reactions. */
+    private EventOccurrence reactingTo;
+    /** The last reaction has ended: the program is applying its ending (resume, break, …). */
+    private boolean endingDue;
+    /** Where the interrupted boundary continues, and whether it still owes the barrier (§5 step 3). */
+    private int interruptedPc;
+    private boolean barrierAfterReactions;
 
     // Guarded by the EntryCoordinator's lock (see its invariant for the agent's own reads).
     final List<Membership> memberships = new ArrayList<>();
@@ -96,10 +120,13 @@ final class Agent implements AgentContext, AgentTask {
             mission.agentFailed(this, new IllegalStateException(describe() + " scheduled in state " + current));
             return;
         }
-        suspended = false;
         stepsThisSlice = 0;
         try {
-            program.resume(this);
+            do {
+                suspended = false;
+                redirected = false;
+                program.resume(this);
+            } while (redirected && !finished);
         } catch (Throwable failure) {
             end();
             mission.agentFailed(this, failure);
@@ -227,11 +254,20 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean stepBoundary() {
+        requireOutsideReaction("a step boundary");
         progress++;
-        serveInvocations();
         boolean synchronous = isInnermostSynchronous();
         lastLeftSynchronous = null;
-        if (synchronous && !mission.coordinator().arriveAtBarrier(this)) {
+        if (startReactions(synchronous)) {
+            return false;
+        }
+        return completeBoundary(synchronous);
+    }
+
+    /** Steps 2 and 3 of a step boundary (§5): pending invocations, then the barrier if one is due. */
+    private boolean completeBoundary(boolean barrier) {
+        serveInvocations();
+        if (barrier && !mission.coordinator().arriveAtBarrier(this)) {
             return false;
         }
         return yieldIfSliceUsed();
@@ -243,30 +279,46 @@ final class Agent implements AgentContext, AgentTask {
         if (innermost != sequence.parent()) {
             throw new IllegalStateException(describe() + " ends " + sequence + " inside " + innermost);
         }
+        requireOutsideReaction("the end of an e-sequence");
         progress++;
-        serveInvocations();
         boolean ranSynchronousBlock = lastLeftSynchronous != null && lastLeftSynchronous.sequence() == sequence;
-        boolean synchronous = isInnermostSynchronous();
+        boolean barrier = isInnermostSynchronous() && !ranSynchronousBlock;
         lastLeftSynchronous = null;
-        if (synchronous && !ranSynchronousBlock && !mission.coordinator().arriveAtBarrier(this)) {
+        if (startReactions(barrier)) {
             return false;
         }
-        return yieldIfSliceUsed();
+        return completeBoundary(barrier);
     }
 
     @Override
     public boolean loopIteration() {
         progress++;
-        serveInvocations();
-        return yieldIfSliceUsed();
+        if (isReacting()) {
+            return yieldIfSliceUsed();
+        }
+        if (startReactions(false)) {
+            return false;
+        }
+        return completeBoundary(false);
     }
 
     @Override
     public boolean busyWaitIteration() {
-        serveInvocations();
+        if (!isReacting()) {
+            // Reactions assign locals: running them is progress, so the next iteration does not park.
+            if (startReactions(false)) {
+                return false;
+            }
+            serveInvocations();
+        }
         long epoch = mission.changes().current();
         if (epoch == busyWaitEpoch && progress == busyWaitProgress) {
-            mission.changes().parkUntilChanged(this, epoch);
+            long ticket = mission.changes().parkUntilChanged(this, epoch);
+            busyWaitTicket = ticket;
+            // An emitter that pushed before the ticket was published has not woken us: wake ourselves.
+            if (!isReacting() && !events.isEmpty()) {
+                unpark(ticket);
+            }
             return false;
         }
         busyWaitEpoch = epoch;
@@ -276,26 +328,34 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public Arrival enter(EntryDefinition block, boolean test) {
+        requireOutsideReaction("arriving at " + block);
         return mission.coordinator().enter(this, mission.entry(block), test);
     }
 
     @Override
     public boolean leave(EntryDefinition block) {
+        requireOutsideReaction("leaving " + block);
         return mission.coordinator().leaveAtEnd(this, mission.entry(block));
     }
 
     @Override
     public void breakOut(EntryDefinition outermost) {
+        requireNoReactionRunning("break");
+        endingDue = false;
         mission.coordinator().leaveUpTo(this, mission.entry(outermost), LeaveCause.BREAK);
     }
 
     @Override
     public void reelect(EntryDefinition block) {
+        requireNoReactionRunning("reelect");
+        endingDue = false;
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.REELECT);
     }
 
     @Override
     public void restart(EntryDefinition block) {
+        requireNoReactionRunning("restart");
+        endingDue = false;
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.RESTART);
     }
 
@@ -346,8 +406,72 @@ final class Agent implements AgentContext, AgentTask {
     }
 
     @Override
-    public Queue<EventOccurrence> events() {
-        return events;
+    public void emit(Event event) {
+        emit(event, "");
+    }
+
+    @Override
+    public void emit(Event event, String message) {
+        if (event.isSystemEvent()) {
+            raise(event, message);
+            return;
+        }
+        Entry block = mission.entry(event.block());
+        requireMember(event, block);
+        Agent[] receivers = event.isShared() ? block.perceivers() : new Agent[] {this};
+        EventOccurrence occurrence = new EventOccurrence(event, message, id);
+        mission.trace().record(new TraceEvent.EventEmitted(mission.scheduler().nanoTime(), id, event.name(), block.name(), message,
+                receivers.length));
+        for (Agent receiver : receivers) {
+            receiver.perceive(occurrence);
+        }
+    }
+
+    @Override
+    public void uncaughtException(Throwable thrown) {
+        emit(Event.UNCAUGHT_EXCEPTION, thrown.getClass().getName());
+    }
+
+    @Override
+    public String messageOf(Event event) {
+        return reactingTo != null && reactingTo.event() == event ? reactingTo.message() : null;
+    }
+
+    @Override
+    public boolean endReaction() {
+        if (reactingTo == null) {
+            throw new IllegalStateException(describe() + ": endReaction outside a reaction");
+        }
+        if (!reactionsToRun.isEmpty()) {
+            redirectToNextReaction();
+            return false;
+        }
+        reactingTo = null;
+        reactionsToRun = null;
+        endingDue = true;
+        return true;
+    }
+
+    @Override
+    public boolean resumeInterrupted() {
+        if (!endingDue) {
+            throw new IllegalStateException(describe() + ": resume without a reaction that just ended");
+        }
+        endingDue = false;
+        program.jump(interruptedPc);
+        return completeBoundary(barrierAfterReactions);
+    }
+
+    @Override
+    public void clearEvents() {
+        if (reactingTo == null) {
+            throw new IllegalStateException(describe() + ": clearEvents outside a reaction");
+        }
+        for (ReactionPlan.Step step : reactionsToRun) {
+            traceDropped(step.occurrence());
+        }
+        reactionsToRun.clear();
+        events.takeAll().forEach(this::traceDropped);
     }
 
     @Override
@@ -371,6 +495,100 @@ final class Agent implements AgentContext, AgentTask {
         invocations.add(invocation);
         serveIfPending();
         mission.changes().advance();
+    }
+
+    /**
+     * Makes this agent perceive a system event ({@code timeout}, {@code uncaught_exception},
+     * {@code forbidden_access}: local to it, §8). Safe from any thread, for instance from an agent
+     * serving an invocation that this agent made.
+     */
+    void raise(Event systemEvent, String message) {
+        if (!systemEvent.isSystemEvent()) {
+            throw new IllegalArgumentException(systemEvent + " is not a system event");
+        }
+        mission.trace().record(new TraceEvent.EventEmitted(mission.scheduler().nanoTime(), id, systemEvent.name(), null, message, 1));
+        perceive(new EventOccurrence(systemEvent, message, id));
+    }
+
+    /** Perceives an occurrence (§8): from any thread, never blocks; wakes a parked busy-wait (§5). */
+    void perceive(EventOccurrence occurrence) {
+        events.offer(occurrence);
+        // A stale ticket (the agent has woken since, or parks elsewhere) is ignored by unpark.
+        long ticket = busyWaitTicket;
+        if (ticket != 0) {
+            unpark(ticket);
+        }
+    }
+
+    /**
+     * Step 1 of a boundary (§5, §8): takes every occurrence perceived so far and, if any has a
+     * reaction, saves where the boundary continues and redirects the program to the first
+     * reaction. Returns whether it did; the boundary call then returns {@code false}.
+     */
+    private boolean startReactions(boolean barrierDue) {
+        if (events.isEmpty()) {
+            return false;
+        }
+        List<EventOccurrence> perceived = events.takeAll();
+        List<EntryDefinition> chain = new ArrayList<>(memberships.size());
+        for (int i = memberships.size() - 1; i >= 0; i--) {
+            chain.add(memberships.get(i).entry.definition());
+        }
+        ReactionPlan plan = ReactionPlan.of(perceived, chain);
+        plan.dropped().forEach(this::traceDropped);
+        if (plan.steps().isEmpty()) {
+            return false;
+        }
+        progress++;
+        interruptedPc = program.pc();
+        barrierAfterReactions = barrierDue;
+        reactionsToRun = new ArrayDeque<>(plan.steps());
+        redirectToNextReaction();
+        return true;
+    }
+
+    private void redirectToNextReaction() {
+        ReactionPlan.Step step = reactionsToRun.poll();
+        reactingTo = step.occurrence();
+        Reaction reaction = step.reaction();
+        mission.trace().record(new TraceEvent.EventReacted(mission.scheduler().nanoTime(), id, reactingTo.event().name(),
+                reaction.block().name(), reaction.isDefault()));
+        program.jump(program.reactionPc(reaction));
+        suspended = true;
+        redirected = true;
+    }
+
+    private void traceDropped(EventOccurrence occurrence) {
+        mission.trace().record(new TraceEvent.EventDropped(mission.scheduler().nanoTime(), id, occurrence.event().name()));
+    }
+
+    private boolean isReacting() {
+        return reactingTo != null;
+    }
+
+    /** A reaction runs in one go (§8): between its start and {@link #endReaction()}, no block operation or boundary. */
+    private void requireNoReactionRunning(String what) {
+        if (reactingTo != null) {
+            throw new IllegalStateException(describe() + ": " + what + " inside a reaction");
+        }
+    }
+
+    /** Neither in a reaction, nor between the last one's end and its ending (resume, break, …). */
+    private void requireOutsideReaction(String what) {
+        requireNoReactionRunning(what);
+        if (endingDue) {
+            throw new IllegalStateException(describe() + ": " + what
+                    + " after endReaction(): a reaction ends with resumeInterrupted, break, restart or reelect");
+        }
+    }
+
+    private void requireMember(Event event, Entry block) {
+        for (Membership membership : memberships) {
+            if (membership.entry == block) {
+                return;
+            }
+        }
+        throw new IllegalStateException(describe() + " emits " + event + " outside that block");
     }
 
     private void serveInvocations() {

@@ -1,6 +1,5 @@
 package masl.runtime;
 
-import java.util.Queue;
 import java.util.concurrent.CompletionStage;
 
 /**
@@ -26,7 +25,9 @@ public interface AgentContext {
     /**
      * The step boundary after an instruction of non-zero duration (MASL §5): (1) events, (2)
      * pending external invocations, (3) the synchronisation barrier if the innermost block is
-     * synchronous. May also return {@code false} merely to let other agents run (a yield).
+     * synchronous. May also return {@code false} merely to let other agents run (a yield), or
+     * because the runtime redirected the program to a reaction (§8): the program returns either way.
+     * Every boundary below processes events the same way.
      */
     boolean stepBoundary();
 
@@ -112,10 +113,61 @@ public interface AgentContext {
     boolean await(CompletionStage<?> result);
 
     /**
-     * The queue of event occurrences perceived by this agent and not yet reacted to (§8): the hook
-     * where events arrive. Reacting is generated code and belongs to the events issue.
+     * {@code emit(e)} / {@code emit e} (MASL §8): as {@link #emit(Event, String)} with the message
+     * {@code ""}.
      */
-    Queue<EventOccurrence> events();
+    void emit(Event event);
+
+    /**
+     * {@code emitWithMessage(e, text)} (MASL §8): every member of {@code event}'s block perceives
+     * an occurrence at once (the emitter too) if the event is shared; only the emitter if it is
+     * local or a system event. Never blocks: the receivers react at their next step boundary or
+     * loop iteration; a receiver parked in a busy-wait is woken. Costs one push per receiver.
+     *
+     * @throws IllegalStateException if the agent is not a member of the event's block (a
+     *     translator bug: emitting from outside the block is a compile error)
+     */
+    void emit(Event event, String message);
+
+    /**
+     * A primitive or Java call threw {@code thrown} (MASL §8, §9): the agent perceives
+     * {@code uncaught_exception} with the exception's class name as message. The program then goes
+     * on with the call's value being the type's default.
+     */
+    void uncaughtException(Throwable thrown);
+
+    /**
+     * {@code getMessageFromEvent(e)} in a reaction: the message of the occurrence being reacted to
+     * if it is an occurrence of {@code event}; {@code null} otherwise (no occurrence of it is being
+     * handled). Zero duration.
+     */
+    String messageOf(Event event);
+
+    /**
+     * The end of a reaction's statements (MASL §8), reached by its ending statement ({@code resume},
+     * {@code break…}, {@code restart}, {@code reelect…}) or by the end of its body. {@code false}:
+     * more reactions follow; the runtime has set {@code pc} to the next one's code, and the program
+     * returns at once. {@code true}: this was the last reaction, which decides: the program applies
+     * its ending now, with {@link #resumeInterrupted()}, {@link #breakOut}, {@link #restart} or
+     * {@link #reelect}, exactly as the same statement in the body of the reaction's block (a
+     * reaction that ends without one leaves its block: {@code breakOut} of that block).
+     */
+    boolean endReaction();
+
+    /**
+     * {@code resume} as the ending of the last reaction: sets {@code pc} to where the interrupted
+     * step boundary or loop iteration was to continue, and completes that boundary (pending
+     * invocations, then the barrier if it was a step boundary in a synchronous block). The program
+     * then {@code continue}s its dispatch loop on {@code true} and returns on {@code false}, as for
+     * any suspension.
+     */
+    boolean resumeInterrupted();
+
+    /**
+     * {@code clearEvents} in a reaction (MASL §8): drops the occurrences not yet reacted to, those
+     * of this processing and those perceived since, so that the current reaction decides.
+     */
+    void clearEvents();
 
     /**
      * The agent's program is over: it has left {@code main}, or skipped it, or the program has no

@@ -18,6 +18,22 @@ public abstract class AgentProgram {
     /** Runs the program from {@link #pc} until it must wait or has finished. */
     protected abstract void resume(AgentContext ctx);
 
+    /**
+     * Where the code of {@code reaction} starts: the {@code case} the runtime sets {@code pc} to when
+     * the agent is to run that reaction (docs/generated-code-contract.md, "Events and reactions").
+     * A program whose blocks have reactions overrides this; the default says there are none.
+     *
+     * @throws IllegalArgumentException if this program has no code for {@code reaction}
+     */
+    protected int reactionPc(Reaction reaction) {
+        throw new IllegalArgumentException(getClass().getName() + " has no code for " + reaction);
+    }
+
+    /** Sets the resumption point from the runtime's side: event processing redirects the program. */
+    final void jump(int resumptionPoint) {
+        pc = resumptionPoint;
+    }
+
     /** The current resumption point, for diagnostics. */
     public final int pc() {
         return pc;

@@ -45,9 +45,10 @@ final class ChangeEpoch {
 
     /**
      * Parks {@code agent} (which is running and calls this itself) until the epoch differs from
-     * {@code seen}; if it already does, the agent is made runnable again at once.
+     * {@code seen}; if it already does, the agent is made runnable again at once. Returns the
+     * park's ticket, with which others may end it earlier.
      */
-    void parkUntilChanged(Agent agent, long seen) {
+    long parkUntilChanged(Agent agent, long seen) {
         long ticket = agent.prepareToPark();
         ConcurrentLinkedQueue<Waiter> queue = waiters.get();
         queue.add(new Waiter(agent, ticket));
@@ -55,5 +56,6 @@ final class ChangeEpoch {
         if (waiters.get() != queue || epoch.get() != seen) {
             agent.unpark(ticket);
         }
+        return ticket;
     }
 }

@@ -27,6 +27,11 @@ public final class Entry {
     /** Agents held by the entry barrier, in arrival order (synchronous blocks only). */
     final ArrayDeque<Agent> waitingIn = new ArrayDeque<>();
     LockPolicy policy;
+    /**
+     * The members (held by the entry barrier, or in the current wave), republished after each
+     * change so that emitting a shared event reads them without the lock (§8).
+     */
+    private volatile Agent[] perceivers = new Agent[0];
 
     Entry(EntryDefinition definition, Entry parent, EntryCoordinator coordinator) {
         this.definition = definition;
@@ -117,6 +122,26 @@ public final class Entry {
      */
     public void release(int n) {
         coordinator.release(this, n);
+    }
+
+    /** The members as of the last change: the receivers of a shared event of this block (§8). */
+    Agent[] perceivers() {
+        return perceivers;
+    }
+
+    /** Republishes the members; called under the coordinator's lock after each change of them. */
+    void membersChanged() {
+        Agent[] members = new Agent[waitingIn.size() + (currentWave == null ? 0 : currentWave.members.size())];
+        int i = 0;
+        for (Agent agent : waitingIn) {
+            members[i++] = agent;
+        }
+        if (currentWave != null) {
+            for (Agent agent : currentWave.members) {
+                members[i++] = agent;
+            }
+        }
+        perceivers = members;
     }
 
     SharedVariable<?>[] newSharedVariables(ChangeEpoch changes) {

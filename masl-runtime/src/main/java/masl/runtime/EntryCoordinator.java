@@ -224,6 +224,7 @@ final class EntryCoordinator {
     private void join(Agent agent, Entry entry) {
         Wave wave = entry.currentWave != null ? entry.currentWave : startWave(entry);
         wave.members.add(agent);
+        entry.membersChanged();
         agent.memberships.add(new Membership(entry, wave, Membership.Status.ACTIVE));
         trace.record(new TraceEvent.Entered(clock.getAsLong(), agent.id(), entry.name()));
         reconcile(agent);
@@ -233,6 +234,7 @@ final class EntryCoordinator {
     private void holdAtEntry(Agent agent, Entry entry) {
         agent.memberships.add(new Membership(entry, null, Membership.Status.WAITING_IN));
         entry.waitingIn.add(agent);
+        entry.membersChanged();
         trace.record(new TraceEvent.WaitingIn(clock.getAsLong(), agent.id(), entry.name()));
         reconcile(agent);
         if (entry.policy == LockPolicy.FREE) {
@@ -281,6 +283,7 @@ final class EntryCoordinator {
             wave.entry.currentWave = null;
             trace.record(new TraceEvent.WaveEnded(clock.getAsLong(), wave.entry.name(), wave.number));
         }
+        membership.entry.membersChanged();
     }
 
     private Wave startWave(Entry entry) {

@@ -7,7 +7,7 @@ import java.util.Objects;
 
 /**
  * The static description of an e-block (MASL §3, §6): its name, mode, parent block, the e-sequence
- * it belongs to, its shared variable declarations and its children. Generated programs hold one
+ * it belongs to, its shared variable and event declarations, its reactions and its children. Generated programs hold one
  * definition per block in {@code static final} fields, built in program order before any mission
  * runs; the per-mission state of the block is an {@link Entry}.
  */
@@ -19,6 +19,9 @@ public final class EntryDefinition {
     private final ESequence sequence;
     private final List<EntryDefinition> children = new ArrayList<>();
     private final List<SharedDeclaration<?>> sharedDeclarations = new ArrayList<>();
+    private final List<Event> events = new ArrayList<>();
+    /** In the order written: their priority (§8). Copied on write: read at every event processing. */
+    private volatile List<Reaction> reactions = List.of();
 
     EntryDefinition(String name, Mode mode, EntryDefinition parent, ESequence sequence) {
         if (Objects.requireNonNull(name, "name").isEmpty()) {
@@ -59,6 +62,90 @@ public final class EntryDefinition {
             sharedDeclarations.add(declaration);
             return declaration;
         }
+    }
+
+    /** Declares {@code local event name;} (MASL §8): perceived only by the agent that emits it. */
+    public Event declareLocalEvent(String name) {
+        return declareEvent(name, false);
+    }
+
+    /** Declares {@code shared event name;} (MASL §8): perceived by every member of this block at emission. */
+    public Event declareSharedEvent(String name) {
+        return declareEvent(name, true);
+    }
+
+    private Event declareEvent(String eventName, boolean shared) {
+        synchronized (events) {
+            if (events.stream().anyMatch(event -> event.name().equals(eventName))) {
+                throw new IllegalArgumentException("block " + name + " already declares event " + eventName);
+            }
+            Event event = new Event(eventName, shared, this);
+            events.add(event);
+            return event;
+        }
+    }
+
+    /**
+     * Declares this block's next reaction, {@code react (event) { … }}; declare a block's reactions
+     * in the order they are written.
+     *
+     * @throws IllegalArgumentException if {@code event} is neither a system event nor declared by
+     *     this block or an enclosing one, or if this block already reacts to it
+     */
+    public Reaction react(Event event) {
+        if (!event.isSystemEvent() && !isWithin(event.block())) {
+            throw new IllegalArgumentException(event + " is not visible in block " + name);
+        }
+        return addReaction(event);
+    }
+
+    /** Declares this block's next reaction, {@code react (default) { … }}. */
+    public Reaction reactToDefault() {
+        return addReaction(null);
+    }
+
+    private synchronized Reaction addReaction(Event event) {
+        if (reactions.stream().anyMatch(reaction -> reaction.event() == event)) {
+            throw new IllegalArgumentException("block " + name + " already reacts to "
+                    + (event == null ? "default" : event.name()));
+        }
+        Reaction reaction = new Reaction(this, event, reactions.size());
+        List<Reaction> more = new ArrayList<>(reactions);
+        more.add(reaction);
+        reactions = List.copyOf(more);
+        return reaction;
+    }
+
+    /** This block's reactions in the order written. */
+    public List<Reaction> reactions() {
+        return reactions;
+    }
+
+    /**
+     * The reaction of this block to an occurrence of {@code event} (§8): its {@code react(event)},
+     * else its {@code react(default)}, else {@code null} (look in the parent).
+     */
+    public Reaction reactionTo(Event event) {
+        Reaction fallback = null;
+        for (Reaction reaction : reactions) {
+            if (reaction.event() == event) {
+                return reaction;
+            }
+            if (reaction.isDefault()) {
+                fallback = reaction;
+            }
+        }
+        return fallback;
+    }
+
+    /** Whether this block is {@code block} or nested in it. */
+    boolean isWithin(EntryDefinition block) {
+        for (EntryDefinition b = this; b != null; b = b.parent) {
+            if (b == block) {
+                return true;
+            }
+        }
+        return false;
     }
 
     public String name() {

@@ -1,5 +1,18 @@
 package masl.runtime;
 
-/** One perceived occurrence of an event (MASL §8), with its message ({@code ""} if none). */
-public record EventOccurrence(String event, String message) {
+import java.util.Objects;
+
+/**
+ * One emission of an event (MASL §8) as its receivers perceive it: immutable, shared by all of them.
+ *
+ * @param event the event emitted
+ * @param message the message of {@code emitWithMessage}, {@code ""} for a plain {@code emit}
+ * @param emitter the proxy id of the emitting agent
+ */
+public record EventOccurrence(Event event, String message, int emitter) {
+
+    public EventOccurrence {
+        Objects.requireNonNull(event, "event");
+        Objects.requireNonNull(message, "message");
+    }
 }

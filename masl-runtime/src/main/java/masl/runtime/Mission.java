@@ -44,6 +44,7 @@ public final class Mission {
     private final Scheduler scheduler;
     private final Journal journal;
     private final ChangeEpoch changes = new ChangeEpoch();
+    private final Trace trace;
     private final EntryCoordinator coordinator;
     private final AtomicBoolean started = new AtomicBoolean();
     private final AtomicInteger running;
@@ -58,7 +59,8 @@ public final class Mission {
     private Mission(Builder builder) {
         scheduler = builder.scheduler != null ? builder.scheduler : new PoolScheduler();
         journal = new Journal(builder.journalSink);
-        coordinator = new EntryCoordinator(builder.trace, scheduler::nanoTime, changes);
+        trace = builder.trace;
+        coordinator = new EntryCoordinator(trace, scheduler::nanoTime, changes);
         Map<EntryDefinition, Entry> blocks = new IdentityHashMap<>();
         if (builder.main != null) {
             addEntries(builder.main, null, blocks);
@@ -153,6 +155,20 @@ public final class Mission {
         return journal;
     }
 
+    /**
+     * Queues an invocation of one of agent {@code proxyId}'s primitives made from outside the
+     * mission's agents (the JADE bridge serves a FIPA agent's {@code REQUEST} so). It runs as MASL §5
+     * has external invocations run: at the agent's next step boundary or loop iteration, or at once
+     * on its behalf if the agent is blocked or has finished; a busy-waiting agent sees it as a
+     * change. {@code invocation} runs the primitive only, and must not block for long. Invocations
+     * queued after the mission has ended are never run.
+     *
+     * @throws IndexOutOfBoundsException if no agent has that proxy id
+     */
+    public void submitInvocation(int proxyId, Runnable invocation) {
+        agents.get(proxyId).submitInvocation(Objects.requireNonNull(invocation, "invocation"));
+    }
+
     /** The mission state of a block of this mission's program. */
     public Entry entry(EntryDefinition definition) {
         Entry entry = entries.get(definition);
@@ -164,6 +180,10 @@ public final class Mission {
 
     Scheduler scheduler() {
         return scheduler;
+    }
+
+    Trace trace() {
+        return trace;
     }
 
     ChangeEpoch changes() {

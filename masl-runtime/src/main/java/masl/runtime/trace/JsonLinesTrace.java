@@ -8,7 +8,8 @@ import java.io.UncheckedIOException;
  * Writes one JSON object per line for every event (components.md, "Runtime"), in the order they
  * happened, for {@code --trace FILE}: for instance
  * {@code {"nanos":123,"event":"left","agent":2,"block":"work","cause":"reelect"}}. Names are
- * written as JSON strings, escaped. Source positions are not known to the runtime yet.
+ * written as JSON strings, escaped; a MASL event's own name goes under {@code "name"}, as in
+ * {@code {"nanos":124,"event":"event-reacted","agent":1,"name":"go","block":"main","reaction":"go"}}. Source positions are not known to the runtime yet.
  */
 public final class JsonLinesTrace implements Trace, Flushable {
 
@@ -36,9 +37,10 @@ public final class JsonLinesTrace implements Trace, Flushable {
             line = head(e.nanos(), "barrier-tripped") + ",\"domain\":" + string(e.domain()) + ",\"agents\":" + e.agents();
         } else if (event instanceof TraceEvent.WaveStarted e) {
             line = head(e.nanos(), "wave-started") + ",\"block\":" + string(e.block()) + ",\"wave\":" + e.wave();
-        } else {
-            TraceEvent.WaveEnded e = (TraceEvent.WaveEnded) event;
+        } else if (event instanceof TraceEvent.WaveEnded e) {
             line = head(e.nanos(), "wave-ended") + ",\"block\":" + string(e.block()) + ",\"wave\":" + e.wave();
+        } else {
+            line = eventLine(event);
         }
         try {
             out.append(line).append("}\n");
@@ -54,6 +56,21 @@ public final class JsonLinesTrace implements Trace, Flushable {
         }
     }
 
+    /** The lines of MASL events; their name is written under {@code "name"}, {@code "event"} being the kind. */
+    private static String eventLine(TraceEvent event) {
+        if (event instanceof TraceEvent.EventEmitted e) {
+            return head(e.nanos(), "event-emitted") + ",\"agent\":" + e.agent() + ",\"name\":" + string(e.event())
+                    + ",\"block\":" + string(e.block()) + ",\"message\":" + string(e.message())
+                    + ",\"receivers\":" + e.receivers();
+        }
+        if (event instanceof TraceEvent.EventReacted e) {
+            return head(e.nanos(), "event-reacted") + ",\"agent\":" + e.agent() + ",\"name\":" + string(e.event())
+                    + ",\"block\":" + string(e.block()) + ",\"reaction\":" + string(e.byDefault() ? "default" : e.event());
+        }
+        TraceEvent.EventDropped e = (TraceEvent.EventDropped) event;
+        return head(e.nanos(), "event-dropped") + ",\"agent\":" + e.agent() + ",\"name\":" + string(e.event());
+    }
+
     private static String head(long nanos, String event) {
         return "{\"nanos\":" + nanos + ",\"event\":" + string(event);
     }
@@ -63,6 +80,9 @@ public final class JsonLinesTrace implements Trace, Flushable {
     }
 
     private static String string(String text) {
+        if (text == null) {
+            return "null";
+        }
         StringBuilder json = new StringBuilder("\"");
         for (char c : text.toCharArray()) {
             switch (c) {

@@ -2,7 +2,7 @@ package masl.runtime.trace;
 
 /**
  * One recorded change. {@code nanos} is {@link System#nanoTime()} when it happened; {@code agent}
- * is a proxy id; {@code block} an e-block's name.
+ * is a proxy id; {@code block} an e-block's name; {@code event} a MASL event's name.
  */
 public sealed interface TraceEvent {
 
@@ -34,4 +34,21 @@ public sealed interface TraceEvent {
 
     /** The last member of the wave left: the block is empty (§6.5). */
     record WaveEnded(long nanos, String block, int wave) implements TraceEvent { }
+
+    /**
+     * The agent emitted (or, for a system event, perceived) {@code event}, declared by {@code block}
+     * ({@code null} for a system event), with {@code message} ({@code ""} if none); {@code receivers}
+     * agents perceived it. Recorded before any receiver can react to it.
+     */
+    record EventEmitted(long nanos, int agent, String event, String block, String message, int receivers)
+            implements TraceEvent { }
+
+    /**
+     * The agent runs its reaction of block {@code block} to an occurrence of {@code event}:
+     * {@code react(event)}, or {@code react(default)} if {@code byDefault}.
+     */
+    record EventReacted(long nanos, int agent, String event, String block, boolean byDefault) implements TraceEvent { }
+
+    /** The agent dropped an occurrence of {@code event}: no reaction to it in its blocks, or {@code clearEvents}. */
+    record EventDropped(long nanos, int agent, String event) implements TraceEvent { }
 }

@@ -3,12 +3,17 @@ package masl.runtime.examples;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.StringWriter;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
+import masl.runtime.SeededScheduler;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;
+import masl.runtime.trace.JsonLinesTrace;
+import masl.runtime.trace.Trace;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -41,6 +46,45 @@ class ExamplesTest {
             assertEquals("xxxxxxyyyy\n",
                     Missions.run(driver, E3AsynchronousChild.MAIN, 4, E3AsynchronousChild::new).journal());
         }
+    }
+
+    /** E4 runs 100 times in a row with each driver but the seeded one, which runs it with 20 seeds. */
+    @ParameterizedTest
+    @EnumSource(value = Driver.class, names = "SEEDED", mode = EnumSource.Mode.EXCLUDE)
+    void e4EventsLookUpInTheParentAndResume(Driver driver) {
+        for (int run = 0; run < 100; run++) {
+            assertE4Journal(Missions.run(driver, E4Events.MAIN, 4, E4Events::new).journal());
+        }
+    }
+
+    @Test
+    void e4EventsWithTwentySeeds() {
+        for (long seed = 1; seed <= 20; seed++) {
+            assertE4Journal(Missions.run(new SeededScheduler(seed), E4Events.MAIN, 4, E4Events::new, Trace.NONE)
+                    .journal());
+        }
+    }
+
+    @Test
+    void e4WithOneSeedGivesTheSameJournalAndTraceByteForByte() {
+        for (long seed = 1; seed <= 5; seed++) {
+            List<String> runs = new ArrayList<>();
+            for (int run = 0; run < 2; run++) {
+                StringWriter trace = new StringWriter();
+                String journal = Missions.run(new SeededScheduler(seed), E4Events.MAIN, 4, E4Events::new,
+                        new JsonLinesTrace(trace)).journal();
+                runs.add(journal + trace);
+            }
+            assertTrue(runs.get(0).contains("\"event\":\"event-reacted\""), runs.get(0));
+            assertEquals(runs.get(0), runs.get(1), "seed " + seed);
+        }
+    }
+
+    /** examples.md: four "heard now", one line per worker, "heard now" first; the mission ended on its own. */
+    private static void assertE4Journal(String journal) {
+        assertEquals(List.of("heard now", "heard now", "heard now", "heard now", "worker 1", "worker 2", "worker 3"),
+                sortedLines(journal), journal);
+        assertTrue(journal.startsWith("heard now\n"), journal);
     }
 
     @ParameterizedTest

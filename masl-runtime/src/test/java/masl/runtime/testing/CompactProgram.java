@@ -62,4 +62,28 @@ public abstract class CompactProgram extends AgentProgram {
         }
         return ctx.busyWaitIteration();
     }
+
+    /** A loop's iteration that never parks; continue at {@code head}. */
+    protected final boolean loop(AgentContext ctx, int head) {
+        pc = head;
+        return ctx.loopIteration();
+    }
+
+    /** {@code resume} ending a reaction: on to the next reaction, or back where the boundary was. */
+    protected final boolean resumeAfterReaction(AgentContext ctx) {
+        return ctx.endReaction() && ctx.resumeInterrupted();
+    }
+
+    /**
+     * {@code break} ending a reaction, or its end without an ending statement: if it is the last
+     * reaction, leaves {@code block} and continues at {@code after}, the instruction after it.
+     */
+    protected final boolean breakAfterReaction(AgentContext ctx, EntryDefinition block, int after) {
+        if (!ctx.endReaction()) {
+            return false;
+        }
+        ctx.breakOut(block);
+        pc = after;
+        return true;
+    }
 }

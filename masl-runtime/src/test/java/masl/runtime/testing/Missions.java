@@ -6,6 +6,7 @@ import masl.runtime.AgentProgram;
 import masl.runtime.EntryDefinition;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
+import masl.runtime.Scheduler;
 import masl.runtime.trace.Trace;
 
 /** Runs a test mission of {@link TestAgent}s and insists that it completes. */
@@ -29,7 +30,12 @@ public final class Missions {
 
     public static MissionOutcome run(Driver driver, EntryDefinition main, int agents,
             Function<TestAgent, AgentProgram> program, Trace trace) {
-        Mission.Builder builder = Mission.builder().main(main).scheduler(driver.newScheduler()).trace(trace);
+        return run(driver.newScheduler(), main, agents, program, trace);
+    }
+
+    public static MissionOutcome run(Scheduler scheduler, EntryDefinition main, int agents,
+            Function<TestAgent, AgentProgram> program, Trace trace) {
+        Mission.Builder builder = Mission.builder().main(main).scheduler(scheduler).trace(trace);
         for (int i = 0; i < agents; i++) {
             builder.agent("a" + i, new TestAgent(), program);
         }

@@ -24,8 +24,9 @@ public final class Bindings {
     }
 
     /**
-     * The static type of an expression node; {@link MaslType#ERROR} when it has none: an error was reported
-     * in it, or it is not a value (a label, an entry or a type name before a {@code .}).
+     * The static type of an expression node, or the type a {@code javaType} node of an {@code instanceof}
+     * names; {@link MaslType#ERROR} when it has none: an error was reported in it, or it is not a value (a
+     * label, an entry or a type name before a {@code .}).
      */
     public MaslType typeOf(ParserRuleContext expression) {
         return types.getOrDefault(expression, MaslType.ERROR);

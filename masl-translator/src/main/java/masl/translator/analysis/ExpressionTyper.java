@@ -391,7 +391,8 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
     @Override
     public MaslType visitInstanceofExpr(MASLParser.InstanceofExprContext test) {
         type(test.expression());
-        typeNames.resolve(test.javaType(), errors);
+        // Recorded on the type's node for the generator, which spells it in Java.
+        bindings.type(test.javaType(), typeNames.resolve(test.javaType(), errors));
         return MaslType.BOOLEAN;
     }
 

@@ -15,13 +15,15 @@ final class CommandLine {
     private static final Map<String, Set<String>> OPTIONS = Map.of(
             "check", Set.of("--agent-path"),
             "compile", Set.of("--agent-path", "-d"),
-            "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--trace"));
+            "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--trace"),
+            "timeline", Set.of("-o"));
     private static final Set<String> FLAGS = Set.of("--threads");
 
     final String command;
     final List<String> operands = new ArrayList<>();
     String agentPath = "";
     String outputFolder;
+    String outputFile;
     boolean threads;
     Long seed;
     Long timeoutSeconds;
@@ -72,6 +74,7 @@ final class CommandLine {
         switch (option) {
             case "--agent-path" -> agentPath = value;
             case "-d" -> outputFolder = value;
+            case "-o" -> outputFile = value;
             case "--trace" -> traceFile = value;
             case "--seed" -> seed = number(option, value, Long.MIN_VALUE);
             case "--timeout" -> timeoutSeconds = number(option, value, 1);

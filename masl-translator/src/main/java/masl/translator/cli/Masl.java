@@ -32,10 +32,13 @@ public final class Masl {
             usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE]
                    masl compile FILE -d DIR [--agent-path PATH]
                    masl check FILE [--agent-path PATH]
+                   masl timeline TRACE -o FILE.html
               run       translate a MASL program, compile it in memory and run its mission in this process;
                         the journal (and only the journal) goes to standard output
               compile   translate a MASL program into Java sources under DIR (one folder per package)
               check     report every error of a MASL program and of the descriptors it imports
+              timeline  draw a trace written by run --trace as a self-contained HTML page: one lane per
+                        agent over time, coloured by block, with barrier trips, waves, events and invocations
             options:
               --agent-path PATH   folders and jars holding agent descriptors and their classes, ':'-separated;
                                   searched after the program's folder, before the descriptors masl ships
@@ -67,6 +70,7 @@ public final class Masl {
                 case "check" -> check(line);
                 case "compile" -> compile(line);
                 case "run" -> new RunCommand(out, err).run(line, readProgram(line.singleFile()));
+                case "timeline" -> new TimelineCommand(err).run(line);
                 default -> throw new UsageException("unknown command '" + line.command + "'");
             };
         } catch (UsageException usage) {

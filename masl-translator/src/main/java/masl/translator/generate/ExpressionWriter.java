@@ -18,7 +18,6 @@ import masl.translator.analysis.Symbol;
 import masl.translator.analysis.TypeRef;
 import masl.translator.analysis.Variable;
 import org.antlr.v4.runtime.ParserRuleContext;
-import org.antlr.v4.runtime.tree.ParseTree;
 
 /**
  * Translates MASL expressions (MASL §3) to Java for the program of one agent type: locals are
@@ -35,13 +34,11 @@ final class ExpressionWriter {
     private final StaticStructure structure;
     private final ImportedType selfType;
     private final Unsupported unsupported;
+    private final TreeQueries queries;
+    private final AssignmentWriter assignments;
     private final Map<Variable, String> locals = new java.util.LinkedHashMap<>();
     private final Map<String, Primitive> throwingPrimitives = new java.util.LinkedHashMap<>();
     private boolean usesDynamicMembers;
-    /** Temporaries of split expressions, field name to Java type. */
-    private final Map<String, String> temporaries = new java.util.LinkedHashMap<>();
-    /** Statements to run before the one being translated: values hoisted out of atomic updates. */
-    private final List<String> hoisted = new ArrayList<>();
     /** Inside the function of an atomic update: the variable updated and the function's parameter. */
     private Variable updated;
     private String updatedParameter;
@@ -52,6 +49,8 @@ final class ExpressionWriter {
         this.structure = structure;
         this.selfType = selfType;
         this.unsupported = unsupported;
+        this.queries = new TreeQueries(program, selfType);
+        this.assignments = new AssignmentWriter(program, structure, this, queries, unsupported);
     }
 
     /** The field of a local variable: {@code block$name}. */
@@ -74,30 +73,26 @@ final class ExpressionWriter {
         return usesDynamicMembers;
     }
 
-    /** The temporaries used so far: field name to Java type. */
-    Map<String, String> temporaries() {
-        return temporaries;
-    }
-
-    /** Takes the statements that must run before the statement just translated, in order. */
-    List<String> takeHoisted() {
-        List<String> taken = List.copyOf(hoisted);
-        hoisted.clear();
-        return taken;
-    }
-
     ImportedType selfType() {
         return selfType;
+    }
+
+    TreeQueries queries() {
+        return queries;
+    }
+
+    AssignmentWriter assignments() {
+        return assignments;
     }
 
     // ------------------------------------------------------------------ conversions
 
     /** An entry test or a condition: numbers are true when non-zero (§3). */
     String condition(ExpressionContext expression) {
-        if (usesAbsentMember(expression)) {
+        if (queries.usesAbsentMember(expression)) {
             return "false";
         }
-        if (throwsChecked(expression)) {
+        if (queries.throwsChecked(expression)) {
             return unsupported.report(expression, "a Java call that may throw a checked exception, in a condition,");
         }
         return truth(expression);
@@ -166,10 +161,10 @@ final class ExpressionWriter {
 
     /** A variable initialiser, array initialisers included. */
     String initializer(MaslType target, MASLParser.VariableInitializerContext initializer) {
-        if (usesAbsentMember(initializer)) {
+        if (queries.usesAbsentMember(initializer)) {
             return JavaTypes.defaultValue(target);
         }
-        if (throwsChecked(initializer)) {
+        if (queries.throwsChecked(initializer)) {
             return unsupported.report(initializer, "a Java call that may throw a checked exception, in an initialiser,");
         }
         if (initializer.expression() != null) {
@@ -188,80 +183,6 @@ final class ExpressionWriter {
         return "{" + String.join(", ", elements) + "}";
     }
 
-    // ------------------------------------------------------------------ specialisation (§4)
-
-    /**
-     * Whether {@code tree} uses a primitive or attribute of the current agent that this agent's type
-     * lacks: the statement is then a {@code nop()} for it, and a test or condition is false (§4).
-     */
-    boolean usesAbsentMember(ParseTree tree) {
-        if (tree instanceof ParserRuleContext node && isSelfAccess(node)
-                && program.symbolOf(node).orElse(null) instanceof Member member && !selfHas(member)) {
-            return true;
-        }
-        for (int i = 0; i < tree.getChildCount(); i++) {
-            if (usesAbsentMember(tree.getChild(i))) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    private boolean selfHas(Member member) {
-        return switch (member.kind()) {
-            case PRIMITIVE -> selfType.descriptor().findPrimitive(member.name()).isPresent();
-            case ATTRIBUTE -> selfType.descriptor().findAttribute(member.name()).isPresent();
-            default -> true;
-        };
-    }
-
-    private static boolean isSelfAccess(ParserRuleContext node) {
-        if (node instanceof MASLParser.PrimaryExprContext primary) {
-            return primary.primary() instanceof MASLParser.SelfInvocationContext
-                    || primary.primary() instanceof MASLParser.SelfAttributeContext;
-        }
-        if (node instanceof MASLParser.MethodCallContext call) {
-            return isThis(call.expression());
-        }
-        return node instanceof MASLParser.FieldAccessContext access && isThis(access.expression());
-    }
-
-    private static boolean isThis(ExpressionContext expression) {
-        return expression instanceof MASLParser.PrimaryExprContext primary
-                && primary.primary() instanceof MASLParser.ThisExprContext;
-    }
-
-    /** Whether {@code tree} reads or writes {@code variable}. */
-    boolean mentions(ParseTree tree, Variable variable) {
-        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) == variable) {
-            return true;
-        }
-        for (int i = 0; i < tree.getChildCount(); i++) {
-            if (mentions(tree.getChild(i), variable)) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** Whether {@code tree} calls Java code declaring checked exceptions (a primitive's are wrapped instead). */
-    boolean throwsChecked(org.antlr.v4.runtime.tree.ParseTree tree) {
-        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
-                && member.javaMember() != null) {
-            for (Class<?> exception : member.javaMember().getExceptionTypes()) {
-                if (!RuntimeException.class.isAssignableFrom(exception) && !Error.class.isAssignableFrom(exception)) {
-                    return true;
-                }
-            }
-        }
-        for (int i = 0; i < tree.getChildCount(); i++) {
-            if (throwsChecked(tree.getChild(i))) {
-                return true;
-            }
-        }
-        return false;
-    }
-
     // ------------------------------------------------------------------ expressions
 
     String expr(ExpressionContext expression) {
@@ -274,11 +195,11 @@ final class ExpressionWriter {
         } else if (expression instanceof MASLParser.ArrayAccessContext access) {
             return expr(access.expression(0)) + "[" + expr(access.index) + "]";
         } else if (expression instanceof MASLParser.PostfixExprContext postfix) {
-            return increment(postfix.expression(), postfix.op.getText(), false, false).orElse("null");
+            return assignments.increment(postfix.expression(), postfix.op.getText(), false, false).orElse("null");
         } else if (expression instanceof MASLParser.PrefixExprContext prefix) {
             String operator = prefix.op.getText();
             if (operator.equals("++") || operator.equals("--")) {
-                return increment(prefix.expression(), operator, true, false).orElse("null");
+                return assignments.increment(prefix.expression(), operator, true, false).orElse("null");
             }
             return unary(operator, expr(prefix.expression()));
         } else if (expression instanceof MASLParser.NotExprContext not) {
@@ -294,9 +215,10 @@ final class ExpressionWriter {
             return truth(conditional.condition) + " ? " + expr(conditional.whenTrue) + " : "
                     + expr(conditional.whenFalse);
         } else if (expression instanceof MASLParser.AssignExprContext assignment) {
-            return assignment(assignment, false).orElse("null");
-        } else if (expression instanceof MASLParser.InstanceofExprContext) {
-            return unsupported.report(expression, "instanceof");
+            return assignments.assignment(assignment, false).orElse("null");
+        } else if (expression instanceof MASLParser.InstanceofExprContext test) {
+            // An agent type is its implementation class; type arguments are erased, as the analysis does.
+            return expr(test.expression()) + " instanceof " + JavaTypes.name(program.typeOf(test.javaType()));
         }
         return unsupported.report(expression, "this expression");
     }
@@ -364,6 +286,20 @@ final class ExpressionWriter {
         return unsupported.report(expression, "a reference to an agent other than this");
     }
 
+    /** Generates {@code body} as the function of an atomic update of {@code variable}: its reads are the parameter. */
+    String whileUpdating(Variable variable, String parameter, java.util.function.Supplier<String> body) {
+        Variable outer = updated;
+        String outerParameter = updatedParameter;
+        updated = variable;
+        updatedParameter = parameter;
+        try {
+            return body.get();
+        } finally {
+            updated = outer;
+            updatedParameter = outerParameter;
+        }
+    }
+
     /** The value of a variable. */
     String read(Variable variable) {
         if (variable == updated) {
@@ -410,7 +346,7 @@ final class ExpressionWriter {
         }
         return switch (member.kind()) {
             case ENTRY_MEMBER -> entry(access.expression()) + "." + name + "()";
-            case ATTRIBUTE -> isThis(access.expression()) ? "self." + name
+            case ATTRIBUTE -> TreeQueries.isThis(access.expression()) ? "self." + name
                     : unsupported.report(access, "an attribute of another agent");
             case JAVA_FIELD -> receiver(access.expression()) + "." + name;
             case DYNAMIC -> dynamicField(access.expression(), name);
@@ -426,7 +362,7 @@ final class ExpressionWriter {
             return unsupported.report(call, "this call");
         }
         return switch (member.kind()) {
-            case PRIMITIVE -> isThis(call.expression()) ? selfPrimitive(name, arguments, call)
+            case PRIMITIVE -> TreeQueries.isThis(call.expression()) ? selfPrimitive(name, arguments, call)
                     : unsupported.report(call, "an invocation of another agent's primitive");
             case ENTRY_MEMBER -> entryCall(call.expression(), name, arguments);
             case JAVA_METHOD -> receiver(call.expression()) + "." + name + "(" + String.join(", ", all(arguments))
@@ -499,136 +435,6 @@ final class ExpressionWriter {
             case "char" -> MaslType.CHAR;
             default -> null;
         };
-    }
-
-    // ------------------------------------------------------------------ assignments (§7)
-
-    /**
-     * An assignment. A shared variable is written atomically: {@code set} when the value does not
-     * read it, otherwise {@code update} with the read-modify-write as a function of the old value.
-     * Empty when the write is ignored ({@code limited} to a type this agent is not of, §7).
-     */
-    Optional<String> assignment(MASLParser.AssignExprContext assignment, boolean isStatement) {
-        String operator = assignment.op.getText();
-        ExpressionContext target = assignment.target;
-        ExpressionContext value = assignment.value;
-        MaslType type = program.typeOf(target);
-        Symbol symbol = program.symbolOf(target).orElse(null);
-        if (symbol instanceof Variable variable) {
-            if (!maySelfWrite(variable)) {
-                return ignoredWrite(assignment, isStatement);
-            }
-            if (variable.sharing() == Sharing.LOCAL) {
-                return Optional.of(local(variable) + " " + operator + " "
-                        + (operator.equals("=") ? converted(type, value) : expr(value)));
-            }
-            String shared = "ctx.shared(" + structure.shared(variable) + ")";
-            if (operator.equals("=") && isStatement && !mentions(value, variable)) {
-                return Optional.of(shared + ".set(" + convertedBoxed(type, value) + ")");
-            }
-            String parameter = lambdaParameter(variable);
-            String binary = operator.substring(0, operator.length() - 1);
-            if (isStatement && !operator.equals("=") && !mentions(value, variable) && !isSimple(value)) {
-                // Only what reads the variable runs under its monitor (x += .sense() calls the primitive first).
-                String temporary = hoist(value);
-                return Optional.of(shared + ".update(" + parameter + " -> "
-                        + compound(type, parameter, binary, temporary, program.typeOf(value)) + ")");
-            }
-            String function = inUpdate(variable, parameter, () -> operator.equals("=") ? convertedBoxed(type, value)
-                    : compound(type, parameter, binary, expr(value), program.typeOf(value)));
-            return Optional.of(shared + ".update(" + parameter + " -> " + function + ")");
-        }
-        if (target instanceof MASLParser.FieldAccessContext access && symbol instanceof Member member
-                && member.kind() == Member.Kind.ATTRIBUTE && !isThis(access.expression())) {
-            return Optional.of(unsupported.report(target, "an attribute of another agent"));
-        }
-        if (symbol instanceof Member member && member.kind() == Member.Kind.DYNAMIC) {
-            return Optional.of(unsupported.report(target, "an assignment to a field of an Object-typed value"));
-        }
-        String left = expr(target);
-        return Optional.of(left + " " + operator + " " + (operator.equals("=") ? converted(type, value) : expr(value)));
-    }
-
-    /** Evaluates {@code value} into a new temporary, before the statement; returns the temporary. */
-    private String hoist(ExpressionContext value) {
-        String temporary = "tmp$" + (temporaries.size() + 1);
-        temporaries.put(temporary, JavaTypes.name(program.typeOf(value)));
-        hoisted.add(temporary + " = " + expr(value) + ";");
-        return temporary;
-    }
-
-    /** A literal or a name: nothing gained by evaluating it before an atomic update. */
-    private static boolean isSimple(ExpressionContext value) {
-        return value instanceof MASLParser.PrimaryExprContext primary
-                && (primary.primary() instanceof MASLParser.LiteralExprContext
-                || primary.primary() instanceof MASLParser.NameExprContext);
-    }
-
-    private String compound(MaslType type, String parameter, String operator, String value, MaslType valueType) {
-        String java = parameter + " " + operator + " (" + value + ")";
-        Class<?> target = JavaTypes.unboxed(type);
-        Class<?> source = JavaTypes.unboxed(valueType);
-        if (target == null || target == boolean.class || operator.startsWith("<") || operator.startsWith(">")) {
-            return needsCast(target) ? "(" + target.getName() + ") (" + java + ")" : java;
-        }
-        boolean widens = source != null && JavaTypes.rank(source) > JavaTypes.rank(target);
-        return needsCast(target) || widens ? "(" + target.getName() + ") (" + java + ")" : java;
-    }
-
-    private static boolean needsCast(Class<?> type) {
-        return type == byte.class || type == short.class || type == char.class;
-    }
-
-    /** {@code x++}, {@code --x}, …; on a shared variable an atomic update returning the old or new value. */
-    Optional<String> increment(ExpressionContext target, String operator, boolean prefix, boolean isStatement) {
-        Symbol symbol = program.symbolOf(target).orElse(null);
-        if (symbol instanceof Variable variable) {
-            if (!maySelfWrite(variable)) {
-                return ignoredWrite(target, isStatement);
-            }
-            if (variable.sharing() == Sharing.SHARED) {
-                String parameter = lambdaParameter(variable);
-                Class<?> type = JavaTypes.unboxed(variable.type());
-                String step = parameter + (operator.equals("++") ? " + 1" : " - 1");
-                String function = needsCast(type) ? "(" + type.getName() + ") (" + step + ")" : step;
-                return Optional.of("ctx.shared(" + structure.shared(variable) + ")."
-                        + (prefix ? "update(" : "getAndUpdate(") + parameter + " -> " + function + ")");
-            }
-        }
-        if (symbol instanceof Member member && member.kind() == Member.Kind.DYNAMIC) {
-            return Optional.of(unsupported.report(target, "an assignment to a field of an Object-typed value"));
-        }
-        String operand = expr(target);
-        return Optional.of(prefix ? operator + operand : operand + operator);
-    }
-
-    private boolean maySelfWrite(Variable variable) {
-        return variable.limitedTo() == null || selfType.isSubtypeOf(variable.limitedTo());
-    }
-
-    private Optional<String> ignoredWrite(ParserRuleContext where, boolean isStatement) {
-        if (isStatement) {
-            return Optional.empty();
-        }
-        return Optional.of(unsupported.report(where, "a write to a limited variable inside an expression"));
-    }
-
-    private static String lambdaParameter(Variable variable) {
-        String name = JavaNames.identifier(variable.name());
-        return name.equals("ctx") || name.equals("self") ? name + "_" : name;
-    }
-
-    private String inUpdate(Variable variable, String parameter, java.util.function.Supplier<String> body) {
-        Variable outer = updated;
-        String outerParameter = updatedParameter;
-        updated = variable;
-        updatedParameter = parameter;
-        try {
-            return body.get();
-        } finally {
-            updated = outer;
-            updatedParameter = outerParameter;
-        }
     }
 
     // ------------------------------------------------------------------ helpers

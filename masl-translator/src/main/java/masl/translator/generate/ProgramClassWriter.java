@@ -61,7 +61,7 @@ final class ProgramClassWriter {
         for (Map.Entry<Variable, String> local : expressions.locals().entrySet()) {
             out.add("    private " + JavaTypes.name(local.getKey().type()) + " " + local.getValue() + ";");
         }
-        for (Map.Entry<String, String> temporary : expressions.temporaries().entrySet()) {
+        for (Map.Entry<String, String> temporary : expressions.assignments().temporaries().entrySet()) {
             out.add("    private " + temporary.getValue() + " " + temporary.getKey() + ";");
         }
         for (Block block : keptOnReelect) {

@@ -8,16 +8,12 @@ import java.util.Map;
 import java.util.Set;
 import java.util.stream.Collectors;
 import masl.grammar.MASLParser;
-import masl.grammar.MASLParser.ExpressionContext;
 import masl.grammar.MASLParser.StatementContext;
-import masl.runtime.descriptor.Primitive;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.Block;
 import masl.translator.analysis.ESequence;
 import masl.translator.analysis.EntryRef;
-import masl.translator.analysis.Member;
 import masl.translator.analysis.Sharing;
-import masl.translator.analysis.TypeRef;
 import masl.translator.analysis.Variable;
 import org.antlr.v4.runtime.ParserRuleContext;
 
@@ -45,6 +41,7 @@ final class StatementWriter {
     private final Map<Block, CaseWriter.Point> firsts = new IdentityHashMap<>();
     private final Set<Block> keptOnReelect;
     private final LoopClassifier loops;
+    private final InstructionWriter instructions;
     private Deque<Loop> loopStack = new ArrayDeque<>();
     private Block current;
 
@@ -57,6 +54,7 @@ final class StatementWriter {
         this.file = file;
         this.keptOnReelect = keptOnReelect;
         this.loops = new LoopClassifier(program);
+        this.instructions = new InstructionWriter(program, cases, expressions, file);
         if (program.root() != null) {
             index(program.root());
         }
@@ -215,7 +213,7 @@ final class StatementWriter {
         } else if (statement instanceof MASLParser.EmptyStmtContext) {
             return;
         } else if (statement instanceof MASLParser.ExpressionStmtContext expression) {
-            expressionStatement(expression);
+            instructions.write(expression);
         } else if (statement instanceof MASLParser.IfStmtContext ifStmt) {
             ifStatement(ifStmt);
         } else if (statement instanceof MASLParser.WhileStmtContext whileStmt) {
@@ -280,137 +278,12 @@ final class StatementWriter {
         return block;
     }
 
-    private void expressionStatement(MASLParser.ExpressionStmtContext statement) {
-        ExpressionContext expression = statement.expression();
-        cases.note(at(statement) + ": " + JavaText.snippet(statement));
-        if (expressions.usesAbsentMember(expression)) {
-            cases.comment("a nop() for " + expressions.selfType().name()
-                    + ": its type lacks a member this statement uses (MASL 4)");
-        } else if (isSleep(expression)) {
-            ExpressionContext duration = ExpressionWriter.arguments(sleepArguments(expression)).get(0);
-            cases.suspending("ctx.sleep(" + expressions.expr(duration) + ")", cases.point());
-        } else {
-            String java = statementJava(expression);
-            if (java != null) {
-                writeGuarded(expression, java + ";");
-            } else {
-                cases.comment("the write is ignored: the variable is limited to another type (MASL 7)");
-            }
-        }
-        if (!isZeroDuration(expression)) {
-            cases.suspending("ctx.stepBoundary()", cases.point());
-        }
-    }
-
-    private String statementJava(ExpressionContext expression) {
-        if (expression instanceof MASLParser.AssignExprContext assignment) {
-            return expressions.assignment(assignment, true).orElse(null);
-        }
-        if (expression instanceof MASLParser.PostfixExprContext postfix) {
-            return expressions.increment(postfix.expression(), postfix.op.getText(), false, true).orElse(null);
-        }
-        if (expression instanceof MASLParser.PrefixExprContext prefix
-                && (prefix.op.getText().equals("++") || prefix.op.getText().equals("--"))) {
-            return expressions.increment(prefix.expression(), prefix.op.getText(), true, true).orElse(null);
-        }
-        return expressions.expr(expression);
-    }
-
-    /**
-     * A statement calling Java code that declares checked exceptions: the exception would raise
-     * {@code uncaught_exception} (MASL 8); with no reaction to it, the occurrence is dropped.
-     */
-    private void writeGuarded(ExpressionContext expression, String java) {
-        List<String> before = expressions.takeHoisted();
-        if (!expressions.throwsChecked(expression)) {
-            before.forEach(cases::line);
-            cases.line(java);
-            return;
-        }
-        cases.open("try {");
-        before.forEach(cases::line);
-        cases.line(java);
-        cases.reopen("} catch (Exception uncaught) {");
-        cases.line("// uncaught_exception (MASL 8): no reaction handles it, so the occurrence is dropped");
-        cases.line("if (uncaught instanceof InterruptedException) Thread.currentThread().interrupt();");
-        cases.close("}");
-    }
-
-    /** {@code .sleep(ms)} (when the type keeps Default's) and {@code Thread.sleep(ms)}: a timed suspension. */
-    private boolean isSleep(ExpressionContext expression) {
-        MASLParser.ArgumentsContext arguments = sleepArguments(expression);
-        return arguments != null && ExpressionWriter.arguments(arguments).size() == 1;
-    }
-
-    private MASLParser.ArgumentsContext sleepArguments(ExpressionContext expression) {
-        if (expression instanceof MASLParser.PrimaryExprContext primary
-                && primary.primary() instanceof MASLParser.SelfInvocationContext call
-                && call.identifier().getText().equals("sleep") && !overridesSleep()) {
-            return call.arguments();
-        }
-        if (expression instanceof MASLParser.MethodCallContext call && call.identifier().getText().equals("sleep")) {
-            if (program.symbolOf(call.expression()).orElse(null) instanceof TypeRef type
-                    && type.type().javaName().equals("java.lang.Thread")) {
-                return call.arguments();
-            }
-            if (call.expression() instanceof MASLParser.PrimaryExprContext receiver
-                    && receiver.primary() instanceof MASLParser.ThisExprContext && !overridesSleep()) {
-                return call.arguments();
-            }
-        }
-        return null;
-    }
-
-    /** Whether a type below the root redeclares {@code sleep}: then it is called like any primitive. */
-    private boolean overridesSleep() {
-        for (var type = expressions.selfType().descriptor(); type != null && type.supertype() != null;
-                type = type.supertype()) {
-            if (type.declaredPrimitives().stream().anyMatch(p -> p.name().equals("sleep"))) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** Entry members and accessor primitives take no time: no step boundary after them (MASL 5). */
-    private boolean isZeroDuration(ExpressionContext expression) {
-        Member member = program.symbolOf(expression).orElse(null) instanceof Member m ? m : null;
-        if (member == null) {
-            return false;
-        }
-        if (member.kind() == Member.Kind.ENTRY_MEMBER) {
-            return true;
-        }
-        if (member.kind() == Member.Kind.PRIMITIVE) {
-            Primitive primitive = expressions.selfType().descriptor().findPrimitive(member.name()).orElse(null);
-            return primitive != null && primitive.accessor();
-        }
-        return false;
-    }
-
-    private boolean isZeroDuration(StatementContext statement) {
-        if (statement instanceof MASLParser.EmptyStmtContext) {
-            return true;
-        }
-        if (statement instanceof MASLParser.ExpressionStmtContext expression) {
-            return isZeroDuration(expression.expression()) && !expressions.usesAbsentMember(expression)
-                    && !expressions.throwsChecked(expression);
-        }
-        if (statement instanceof MASLParser.BlockStmtContext block) {
-            return block.block().statement().stream().allMatch(this::isZeroDuration);
-        }
-        if (statement instanceof MASLParser.IfStmtContext ifStmt) {
-            return isZeroDuration(ifStmt.thenStmt) && (ifStmt.elseStmt == null || isZeroDuration(ifStmt.elseStmt));
-        }
-        return false;
-    }
-
     // ------------------------------------------------------------------ control (MASL 12)
 
     private void ifStatement(MASLParser.IfStmtContext ifStmt) {
         cases.note(at(ifStmt) + ": " + JavaText.header(ifStmt));
         String condition = expressions.condition(ifStmt.expression());
-        if (isZeroDuration(ifStmt)) {
+        if (instructions.isZeroDuration(ifStmt)) {
             // Nothing in it can suspend: a plain Java if.
             cases.open("if (" + condition + ") {");
             statement(ifStmt.thenStmt);
@@ -448,7 +321,7 @@ final class StatementWriter {
     private void forStatement(MASLParser.ForStmtContext loop) {
         cases.note(at(loop) + ": " + JavaText.header(loop));
         if (loop.init != null) {
-            forExpressions(loop.init.expression());
+            instructions.writeParts(loop.init.expression());
         }
         CaseWriter.Point head = cases.point();
         CaseWriter.Point exit = cases.point();
@@ -458,25 +331,10 @@ final class StatementWriter {
         }
         body(loop.statement(), exit);
         if (loop.update != null) {
-            forExpressions(loop.update.expression());
+            instructions.writeParts(loop.update.expression());
         }
         iteration(head, false);
         cases.place(exit, null);
-    }
-
-    /** The initialisation or update part of a {@code for}: part of the loop, with no step boundary of its own. */
-    private void forExpressions(List<ExpressionContext> parts) {
-        for (ExpressionContext part : parts) {
-            if (expressions.usesAbsentMember(part)) {
-                cases.comment("nothing for " + expressions.selfType().name() + ": its type lacks a member of "
-                        + JavaText.snippet(part) + " (MASL 4)");
-                continue;
-            }
-            String java = statementJava(part);
-            if (java != null) {
-                writeGuarded(part, java + ";");
-            }
-        }
     }
 
     private void doLoop(MASLParser.DoLoopStmtContext loop) {

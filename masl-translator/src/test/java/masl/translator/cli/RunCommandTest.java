@@ -74,6 +74,8 @@ class RunCommandTest {
         assertEquals(2, run.status());
         assertEquals("", run.out());
         assertTrue(run.err().startsWith("masl: the mission deadlocked"), run.err());
+        assertTrue(run.err().contains("agent a (0) at pc 2 (stuck.masl:5: while (go == 0))"), run.err());
+        assertTrue(run.err().contains("agent b (1) at pc 2 (stuck.masl:5: while (go == 0))"), run.err());
         assertFalse(run.err().contains("\tat "), run.err());
     }
 
@@ -99,6 +101,8 @@ class RunCommandTest {
         assertEquals(2, run.status());
         assertTrue(run.err().startsWith("masl: the mission failed"), run.err());
         assertTrue(run.err().contains("ArithmeticException"), run.err());
+        assertTrue(run.err().contains("(crash.masl:4: .logln(10 / (.getProxyID() - .getProxyID()));) failed"),
+                run.err());
         assertTrue(run.err().contains("--seed 7"), run.err());
         assertFalse(run.err().contains("\tat "), run.err());
     }

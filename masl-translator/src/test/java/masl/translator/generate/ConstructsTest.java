@@ -115,7 +115,7 @@ class ConstructsTest {
 
     @Test
     void membersOfObjectTypedValuesAreFoundAtRunTime() {
-        assertJournal("3\nbc\n3\ntrue\n", ONE + """
+        assertJournal("3\nbc\n3\ntrue\ntrue false\n", ONE + """
                 asynchronous entry main (true) {
                   local java.util.Vector v = new java.util.Vector();
                   local java.util.Vector w = new java.util.Vector();
@@ -127,6 +127,7 @@ class ConstructsTest {
                   n = v.get(0).length();
                   .logln(n);
                   .logln(w.get(0).hasNext());
+                  .logln((v.get(0) instanceof String) + " " + (this instanceof Default && v instanceof java.util.Map));
                 }
                 """);
     }

@@ -113,7 +113,7 @@ class GeneratorTest {
                 n = n * 2 + .getProxyID();
                 """);
         assertTrue(program.contains("tmp$1 = self.getProxyID() * 2;\n"), program);
-        assertTrue(program.contains("ctx.shared(MAIN_N).update(n -> n + (tmp$1));"), program);
+        assertTrue(program.contains("ctx.shared(MAIN_N).update(n -> n + tmp$1);"), program);
         assertTrue(program.contains("ctx.shared(MAIN_N).update(n -> n * 2 + self.getProxyID());"), program);
         assertTrue(program.contains("private int tmp$1;"), program);
     }

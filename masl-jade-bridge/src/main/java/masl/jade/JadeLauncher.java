@@ -1,0 +1,193 @@
+package masl.jade;
+
+import jade.wrapper.AgentController;
+import jade.wrapper.StaleProxyException;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Function;
+import masl.runtime.AgentImplementation;
+import masl.runtime.Mission;
+import masl.runtime.MissionOutcome;
+import masl.runtime.MissionProgram;
+import masl.runtime.MissionProgram.AgentSpec;
+import masl.runtime.descriptor.AgentType;
+import masl.runtime.trace.Trace;
+
+/**
+ * Runs a translated MASL program inside JADE ({@code masl run --platform jade}): one JADE agent per
+ * MASL agent, named after it, registered with the DF, answering FIPA requests, each MASL program
+ * running in a threaded behaviour of its JADE agent ({@link MaslJadeAgent},
+ * {@link ThreadedBehaviourScheduler}). The mission starts once every JADE agent exists and is
+ * registered; afterwards the JADE agents are deleted (and deregistered). The outcome is the one the
+ * runtime gives in-process: status, journal, report.
+ *
+ * <pre>{@code
+ * MissionOutcome outcome = JadeLauncher.of(program)
+ *         .types(spec -> loader.loadByClassName(spec.typeClassName()))
+ *         .journal(System.out)
+ *         .run(JadeOptions.mainContainer(), Duration.ofMinutes(5));
+ * }</pre>
+ *
+ * <p>One launcher may run its program several times, one mission at a time; not thread-safe.
+ */
+public final class JadeLauncher {
+
+    /** How long the JADE agents may take to start and register, and to end after the mission. */
+    private static final Duration AGENTS_TIMEOUT = Duration.ofSeconds(30);
+
+    private final MissionProgram program;
+    private Function<AgentSpec, AgentType> types;
+    private MissionProgram.ImplementationFactory implementations = JadeLauncher::newImplementation;
+    private AcceptPolicy acceptPolicy = AcceptPolicy.INITIAL_STATE;
+    private Appendable journal;
+    private Trace trace = Trace.NONE;
+
+    private JadeLauncher(MissionProgram program) {
+        this.program = Objects.requireNonNull(program, "program");
+    }
+
+    public static JadeLauncher of(MissionProgram program) {
+        return new JadeLauncher(program);
+    }
+
+    /** The agent type of each agent (its descriptor): which primitives it offers. Required. */
+    public JadeLauncher types(Function<AgentSpec, AgentType> agentTypes) {
+        this.types = Objects.requireNonNull(agentTypes, "agentTypes");
+        return this;
+    }
+
+    /** Makes each agent's implementation; by default the no-argument constructor of its type's class. */
+    public JadeLauncher implementations(MissionProgram.ImplementationFactory factory) {
+        this.implementations = Objects.requireNonNull(factory, "factory");
+        return this;
+    }
+
+    /** Whether FIPA agents may invoke a primitive; {@link AcceptPolicy#INITIAL_STATE} by default. */
+    public JadeLauncher acceptPolicy(AcceptPolicy policy) {
+        this.acceptPolicy = Objects.requireNonNull(policy, "policy");
+        return this;
+    }
+
+    /** Where the journal is written as it grows (besides the outcome's journal). */
+    public JadeLauncher journal(Appendable sink) {
+        this.journal = sink;
+        return this;
+    }
+
+    public JadeLauncher trace(Trace missionTrace) {
+        this.trace = Objects.requireNonNull(missionTrace, "missionTrace");
+        return this;
+    }
+
+    /**
+     * Starts a container as {@code options} say, runs the mission in it, and closes the container
+     * (a main container: the whole platform), leaving no JADE thread behind.
+     *
+     * @throws JadeException if the container cannot start, or the agents cannot be created
+     * @throws InterruptedException if the calling thread is interrupted meanwhile
+     */
+    public MissionOutcome run(JadeOptions options, Duration timeout) throws InterruptedException {
+        try (JadePlatform platform = JadePlatform.start(options)) {
+            return run(platform, timeout);
+        }
+    }
+
+    /**
+     * Runs the mission in an open container; its agents are gone from the platform on return.
+     *
+     * @throws JadeException if an agent's name is taken on the platform, an implementation lacks a
+     *                       primitive of its type, or the agents do not start or register
+     * @throws InterruptedException if the calling thread is interrupted meanwhile
+     */
+    public MissionOutcome run(JadePlatform platform, Duration timeout) throws InterruptedException {
+        if (types == null) {
+            throw new IllegalStateException("agent types not given: call types(…) first");
+        }
+        List<AgentSpec> specs = program.agents();
+        List<AgentImplementation> created = new ArrayList<>();
+        ThreadedBehaviourScheduler scheduler = new ThreadedBehaviourScheduler();
+        Mission.Builder builder = Mission.builder().scheduler(scheduler).trace(trace);
+        if (journal != null) {
+            builder.journal(journal);
+        }
+        program.configure(builder, spec -> {
+            AgentImplementation implementation = implementations.create(spec);
+            created.add(implementation);
+            return implementation;
+        });
+        Mission mission = builder.build();
+        List<PrimitiveTable> tables = new ArrayList<>();
+        for (int id = 0; id < specs.size(); id++) {
+            tables.add(new PrimitiveTable(types.apply(specs.get(id)), created.get(id).getClass()));
+        }
+        CountDownLatch ready = new CountDownLatch(specs.size());
+        List<MaslJadeAgent> hosts = new ArrayList<>();
+        List<AgentController> controllers = new ArrayList<>();
+        try {
+            for (int id = 0; id < specs.size(); id++) {
+                MaslJadeAgent host = new MaslJadeAgent(id, created.get(id), tables.get(id), acceptPolicy, mission,
+                        ready);
+                controllers.add(create(platform, specs.get(id).name(), host));
+                hosts.add(host);
+            }
+            for (AgentController controller : controllers) {
+                controller.start();
+            }
+            // Agents that message others right after start() can stall JADE (platform-notes.md):
+            // the mission starts only once every agent exists and is registered.
+            if (!ready.await(AGENTS_TIMEOUT.toMillis(), TimeUnit.MILLISECONDS)) {
+                throw new JadeException("the JADE agents of the mission did not start within " + AGENTS_TIMEOUT);
+            }
+            for (MaslJadeAgent host : hosts) {
+                if (host.registrationFailure() != null) {
+                    throw new JadeException("the DF refused to register " + host.getLocalName() + ": "
+                            + host.registrationFailure().getMessage(), host.registrationFailure());
+                }
+            }
+            scheduler.attach(hosts);
+            return mission.run(timeout);
+        } catch (StaleProxyException e) {
+            throw new JadeException("the JADE container ended before the mission", e);
+        } finally {
+            delete(controllers, hosts);
+        }
+    }
+
+    private static AgentController create(JadePlatform platform, String name, MaslJadeAgent host) {
+        try {
+            return platform.container().acceptNewAgent(name, host);
+        } catch (StaleProxyException e) {
+            throw new JadeException("cannot create JADE agent " + name + " (is the name taken on the platform?)", e);
+        }
+    }
+
+    /** Deletes the mission's JADE agents and waits, bounded, until their threads have ended. */
+    private static void delete(List<AgentController> controllers, List<MaslJadeAgent> hosts)
+            throws InterruptedException {
+        for (AgentController controller : controllers) {
+            try {
+                controller.kill();
+            } catch (StaleProxyException alreadyGone) {
+                // Deleted already: the platform is shutting down.
+            }
+        }
+        long deadline = System.nanoTime() + AGENTS_TIMEOUT.toNanos();
+        for (MaslJadeAgent host : hosts) {
+            Thread thread = host.thread();
+            if (thread != null) {
+                thread.join(Math.max(1, (deadline - System.nanoTime()) / 1_000_000));
+            }
+        }
+    }
+
+    private static AgentImplementation newImplementation(AgentSpec spec) throws ReflectiveOperationException {
+        ClassLoader loader = Thread.currentThread().getContextClassLoader();
+        Class<?> type = Class.forName(spec.typeClassName(), true,
+                loader != null ? loader : JadeLauncher.class.getClassLoader());
+        return type.asSubclass(AgentImplementation.class).getConstructor().newInstance();
+    }
+}

@@ -1,0 +1,158 @@
+package masl.jade;
+
+import jade.core.behaviours.Behaviour;
+import jade.core.behaviours.ThreadedBehaviourFactory;
+import java.util.List;
+import java.util.concurrent.ScheduledThreadPoolExecutor;
+import java.util.concurrent.Semaphore;
+import java.util.concurrent.TimeUnit;
+import masl.runtime.AgentTask;
+import masl.runtime.Scheduler;
+
+/**
+ * Runs each MASL agent inside its JADE agent, in a threaded behaviour (a thread of its own that JADE
+ * created for the behaviour): the runtime's thread-per-agent model (components.md, "Execution
+ * model"), with JADE's threads. The thread parks while the agent waits and runs a slice each time
+ * the agent is made runnable, until the mission ends.
+ */
+final class ThreadedBehaviourScheduler implements Scheduler {
+
+    private static final long JOIN_MILLIS = 10_000;
+
+    private List<MaslJadeAgent> hosts = List.of();
+    private final ThreadedBehaviourFactory threads = new ThreadedBehaviourFactory();
+    private final ScheduledThreadPoolExecutor timer;
+    /** One permit per pending slice, indexed by agent id. */
+    private Semaphore[] runnable;
+    private Driver[] drivers;
+
+    ThreadedBehaviourScheduler() {
+        timer = new ScheduledThreadPoolExecutor(1, runnable -> {
+            Thread thread = new Thread(runnable, "masl-timer");
+            thread.setDaemon(true);
+            return thread;
+        });
+        timer.setRemoveOnCancelPolicy(true);
+    }
+
+    /** The JADE agent of each MASL agent, indexed by proxy id, all started: before {@link #start}. */
+    synchronized void attach(List<MaslJadeAgent> agents) {
+        hosts = List.copyOf(agents);
+    }
+
+    @Override
+    public synchronized void start(List<? extends AgentTask> agents) {
+        if (agents.size() != hosts.size()) {
+            throw new IllegalArgumentException(agents.size() + " agents for " + hosts.size() + " JADE agents");
+        }
+        runnable = new Semaphore[agents.size()];
+        drivers = new Driver[agents.size()];
+        // Every agent is runnable (one permit) before any driver thread exists.
+        for (AgentTask agent : agents) {
+            runnable[agent.id()] = new Semaphore(1);
+        }
+        for (AgentTask agent : agents) {
+            drivers[agent.id()] = new Driver(agent, runnable[agent.id()]);
+            hosts.get(agent.id()).host(threads.wrap(drivers[agent.id()]));
+        }
+    }
+
+    @Override
+    public void schedule(AgentTask agent) {
+        runnable[agent.id()].release();
+    }
+
+    @Override
+    public void scheduleAfter(long delayMillis, Runnable action) {
+        timer.schedule(action, delayMillis, TimeUnit.MILLISECONDS);
+    }
+
+    @Override
+    public int stepsPerSlice() {
+        return Integer.MAX_VALUE;
+    }
+
+    /**
+     * Stops the drivers (a slice under way is interrupted: a primitive blocked in it ends with
+     * {@code InterruptedException}) and the timer, and waits, bounded, until their threads have ended.
+     */
+    @Override
+    public synchronized void shutdown() {
+        timer.shutdownNow();
+        if (drivers != null) {
+            for (Driver driver : drivers) {
+                driver.stop();
+            }
+        }
+        try {
+            long deadline = System.currentTimeMillis() + JOIN_MILLIS;
+            if (drivers != null) {
+                for (Driver driver : drivers) {
+                    driver.join(Math.max(1, deadline - System.currentTimeMillis()));
+                }
+            }
+            timer.awaitTermination(Math.max(1, deadline - System.currentTimeMillis()), TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /**
+     * The behaviour run in its own thread: one slice per permit, until stopped. {@link #stop()} and
+     * the start of the thread may race: the thread publishes itself before it reads the flag, and
+     * {@code stop} sets the flag before it reads the thread, so one of them sees the other.
+     */
+    private static final class Driver extends Behaviour {
+        private static final long serialVersionUID = 1L;
+
+        private final transient AgentTask agent;
+        private final transient Semaphore permits;
+        private transient volatile Thread thread;
+        private volatile boolean stopped;
+        private volatile boolean done;
+
+        Driver(AgentTask agent, Semaphore permits) {
+            this.agent = agent;
+            this.permits = permits;
+        }
+
+        @Override
+        public void action() {
+            thread = Thread.currentThread();
+            try {
+                while (!stopped) {
+                    permits.acquire();
+                    if (!stopped) {
+                        agent.runSlice();
+                    }
+                }
+            } catch (InterruptedException missionEnded) {
+                // stop() interrupts the thread: it ends with the mission.
+            } finally {
+                done = true;
+            }
+        }
+
+        @Override
+        public boolean done() {
+            return done;
+        }
+
+        void stop() {
+            stopped = true;
+            permits.release();
+            Thread running = thread;
+            if (running != null) {
+                running.interrupt();
+            }
+        }
+
+        /** Waits until the driver's thread has ended, if it ever started. */
+        void join(long millis) throws InterruptedException {
+            Thread running = thread;
+            if (running != null) {
+                running.join(millis);
+            }
+        }
+    }
+}

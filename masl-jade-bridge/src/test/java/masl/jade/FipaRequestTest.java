@@ -1,0 +1,220 @@
+package masl.jade;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jade.core.AID;
+import jade.domain.DFService;
+import jade.domain.FIPAAgentManagement.DFAgentDescription;
+import jade.domain.FIPAAgentManagement.ServiceDescription;
+import jade.lang.acl.ACLMessage;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.atomic.AtomicReference;
+import masl.jade.acl.AclInvocations;
+import masl.jade.acl.Reply;
+import masl.runtime.MissionOutcome;
+import masl.runtime.MissionProgram;
+import masl.runtime.descriptor.PermeabilityState;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * A plain FIPA agent (test code using the JADE API only) invokes the primitives of a MASL agent
+ * running inside JADE, with {@code REQUEST}s, and gets every kind of answer.
+ */
+@Timeout(120)
+class FipaRequestTest {
+
+    private static final Duration TIMEOUT = Duration.ofSeconds(60);
+
+    private static Set<Thread> threadsBefore;
+    private static JadePlatform platform;
+    private static Probe probe;
+    /** The MASL agent; an AID by local name needs the platform's name, so it is made after the start. */
+    private static AID b;
+    private static int conversations;
+
+    /** The permeability state the policy reads: what the agent's program would have set. */
+    private final AtomicReference<String> acceptState = new AtomicReference<>("default");
+
+    @BeforeAll
+    static void startPlatform() throws Exception {
+        threadsBefore = new HashSet<>(Thread.getAllStackTraces().keySet());
+        platform = JadePlatform.start(JadeOptions.mainContainer());
+        probe = new Probe();
+        platform.container().acceptNewAgent("probe", probe).start();
+        b = new AID("b", AID.ISLOCALNAME);
+    }
+
+    @AfterAll
+    static void closePlatform() {
+        platform.close();
+        assertEquals(List.of(), JadePlatformTest.newThreads(threadsBefore), "threads left after the platform closed");
+    }
+
+    @Test
+    void primitivesAnswerInformWithTheirResult() throws Exception {
+        MissionOutcome outcome = runWhile(() -> {
+            ACLMessage logged = invoke("log", List.of("hello from FIPA"));
+            assertEquals(ACLMessage.INFORM, logged.getPerformative());
+            assertEquals("{\"result\":null}", logged.getContent());
+            ACLMessage sum = invoke("add", List.of(2, 3));
+            assertEquals(new Reply.Result(new com.fasterxml.jackson.databind.node.IntNode(5)),
+                    AclInvocations.readReply(sum));
+            assertEquals("json", sum.getLanguage());
+            assertEquals("masl", sum.getOntology());
+        });
+        assertEquals("hello from FIPA", outcome.journal());
+    }
+
+    @Test
+    void aPrimitiveThatThrowsAnswersFailure() throws Exception {
+        runWhile(() -> {
+            ACLMessage failed = invoke("divide", List.of(1, 0));
+            assertEquals(ACLMessage.FAILURE, failed.getPerformative());
+            assertEquals(new Reply.Failed("java.lang.ArithmeticException", "/ by zero"),
+                    AclInvocations.readReply(failed));
+        });
+    }
+
+    @Test
+    void aStateDenyingOthersAnswersRefuseAndTheDeniedPrimitiveDoesNotRun() throws Exception {
+        MissionOutcome outcome = runWhile(() -> {
+            assertEquals(ACLMessage.INFORM, invoke("log", List.of("before ")).getPerformative());
+            acceptState.set("nothing");
+            ACLMessage refused = invoke("log", List.of("denied "));
+            assertEquals(ACLMessage.REFUSE, refused.getPerformative());
+            assertEquals(new Reply.Refused("the permeability of b denies others invoking log"),
+                    AclInvocations.readReply(refused));
+            acceptState.set("default");
+            assertEquals(ACLMessage.INFORM, invoke("log", List.of("after")).getPerformative());
+        });
+        assertEquals("before after", outcome.journal());
+    }
+
+    @Test
+    void malformedAndUnknownRequestsAnswerNotUnderstood() throws Exception {
+        runWhile(() -> {
+            assertNotUnderstood("content:1:20: error: malformed JSON: Unexpected character ('}' (code 125)): "
+                    + "was expecting double-quote to start field name", raw(ACLMessage.REQUEST, "{\"primitive\":\"log\",}"));
+            assertNotUnderstood("content:1:14: error: unknown primitive \"fly\": ServiceAgent has getProxyID, nop, "
+                    + "log, logln, add, divide, release", raw(ACLMessage.REQUEST, "{\"primitive\":\"fly\"}"));
+            assertNotUnderstood("content:1:14: error: int add(int, int) takes 2 arguments, got 1",
+                    raw(ACLMessage.REQUEST, "{\"primitive\":\"add\",\"args\":[1]}"));
+            assertNotUnderstood("content:1:30: error: argument 2 of add: expected an int, got \"two\"",
+                    raw(ACLMessage.REQUEST, "{\"primitive\":\"add\",\"args\":[1,\"two\"]}"));
+            assertNotUnderstood("message: error: performative INFORM is not understood: a MASL agent answers "
+                    + "REQUEST only", raw(ACLMessage.INFORM, "{\"primitive\":\"nop\"}"));
+            // A NOT_UNDERSTOOD is never answered (two agents would echo forever): the next answer
+            // the probe gets is the one to the request after it.
+            probe.sendMessage(request(ACLMessage.NOT_UNDERSTOOD, "{}", "ignored"));
+            assertEquals(ACLMessage.INFORM, invoke("nop", List.of()).getPerformative());
+        });
+    }
+
+    @Test
+    void theAgentIsRegisteredWithTheDfWhileItsMissionRuns() throws Exception {
+        runWhile(() -> {
+            assertEquals(List.of("b"), providers(MaslJadeAgent.PRIMITIVE_SERVICE, "divide"));
+            assertEquals(List.of("b"), providers(MaslJadeAgent.TYPE_SERVICE, "ServiceAgent"));
+        });
+        assertEquals(List.of(), providers(MaslJadeAgent.PRIMITIVE_SERVICE, "divide"), "deregistered at the end");
+    }
+
+    /** What the test does while the mission runs; may throw. */
+    @FunctionalInterface
+    private interface Exchange {
+        void run() throws Exception;
+    }
+
+    /**
+     * Runs a mission of one agent {@code b} that waits until released, does {@code exchange} with it
+     * from the probe, then releases it; the mission must complete.
+     */
+    private MissionOutcome runWhile(Exchange exchange) throws Exception {
+        MissionProgram program = TestPrograms.of(null,
+                List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
+                TestPrograms.UntilReleased::new);
+        AcceptPolicy policy = (name, type, primitive) -> type.findState(acceptState.get()).orElseThrow()
+                .allows(primitive.memberId(), PermeabilityState.Requester.OTHER, PermeabilityState.INVOKE);
+        CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
+            try {
+                return JadeLauncher.of(program).types(TestPrograms::type).acceptPolicy(policy).run(platform, TIMEOUT);
+            } catch (InterruptedException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        awaitRegistered();
+        try {
+            exchange.run();
+        } finally {
+            acceptState.set("default");
+            invoke("release", List.of());
+        }
+        MissionOutcome outcome = mission.get();
+        assertTrue(outcome.completed(), outcome::toString);
+        return outcome;
+    }
+
+    /** Waits until {@code b} is registered: its requests are served from then on. */
+    private static void awaitRegistered() throws Exception {
+        while (providers(MaslJadeAgent.PRIMITIVE_SERVICE, "release").isEmpty()) {
+            DFAgentDescription template = template(MaslJadeAgent.PRIMITIVE_SERVICE, "release");
+            // A subscription would be the event-driven way; a blocking search with a wait suffices here.
+            DFService.searchUntilFound(probe, probe.getDefaultDF(), template, null, 20_000);
+        }
+    }
+
+    private static List<String> providers(String serviceType, String serviceName) throws Exception {
+        List<String> names = new ArrayList<>();
+        for (DFAgentDescription found : DFService.search(probe, template(serviceType, serviceName))) {
+            names.add(found.getName().getLocalName());
+        }
+        return names;
+    }
+
+    private static DFAgentDescription template(String serviceType, String serviceName) {
+        DFAgentDescription template = new DFAgentDescription();
+        ServiceDescription service = new ServiceDescription();
+        service.setType(serviceType);
+        service.setName(serviceName);
+        template.addServices(service);
+        return template;
+    }
+
+    private static ACLMessage invoke(String primitive, List<?> args) throws InterruptedException {
+        String replyWith = "r" + (++conversations);
+        probe.sendMessage(AclInvocations.request(b, primitive, args, replyWith));
+        ACLMessage answer = probe.next();
+        assertEquals(replyWith, answer.getInReplyTo());
+        return answer;
+    }
+
+    private static ACLMessage raw(int performative, String content) throws InterruptedException {
+        String replyWith = "r" + (++conversations);
+        probe.sendMessage(request(performative, content, replyWith));
+        ACLMessage answer = probe.next();
+        assertEquals(replyWith, answer.getInReplyTo());
+        return answer;
+    }
+
+    private static ACLMessage request(int performative, String content, String replyWith) {
+        ACLMessage message = new ACLMessage(performative);
+        message.addReceiver(b);
+        message.setContent(content);
+        message.setReplyWith(replyWith);
+        return message;
+    }
+
+    private static void assertNotUnderstood(String error, ACLMessage answer) throws Exception {
+        assertEquals(ACLMessage.NOT_UNDERSTOOD, answer.getPerformative());
+        assertEquals(new Reply.NotUnderstood(error), AclInvocations.readReply(answer));
+    }
+}

@@ -1,0 +1,92 @@
+package masl.jade;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.StringWriter;
+import java.time.Duration;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import masl.runtime.MissionOutcome;
+import masl.runtime.MissionProgram;
+import masl.runtime.testing.TestAgent;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/** The launcher's own platform, its outcomes other than completion, and what it refuses to run. */
+@Timeout(120)
+class JadeLauncherTest {
+
+    private static final MissionProgram WAITER = TestPrograms.of(null,
+            List.of(new MissionProgram.AgentSpec("w", ServiceAgent.class.getName())), TestPrograms.UntilReleased::new);
+
+    @Test
+    void aMissionOnItsOwnPlatformLeavesNoThreadBehind() throws Exception {
+        Set<Thread> before = new HashSet<>(Thread.getAllStackTraces().keySet());
+        StringWriter journal = new StringWriter();
+        MissionProgram program = TestPrograms.of(null, 2, self -> new masl.runtime.testing.CompactProgram(self) {
+            @Override
+            protected void resume(masl.runtime.AgentContext ctx) {
+                self.logln("agent " + self.getProxyID());
+                ctx.finish();
+            }
+        });
+        MissionOutcome outcome = JadeLauncher.of(program).types(TestPrograms::type).journal(journal)
+                .run(JadeOptions.mainContainer(), Duration.ofSeconds(30));
+        assertEquals(MissionOutcome.Status.COMPLETED, outcome.status());
+        assertEquals(List.of("agent 0", "agent 1"), outcome.journal().lines().sorted().toList());
+        assertEquals(outcome.journal(), journal.toString(), "the journal is written through to the sink");
+        assertEquals(List.of(), JadePlatformTest.newThreads(before));
+    }
+
+    @Test
+    void aMissionThatTimesOutEndsAndItsAgentsAreDeleted() throws Exception {
+        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
+            MissionOutcome outcome = JadeLauncher.of(WAITER).types(TestPrograms::type)
+                    .run(platform, Duration.ofMillis(300));
+            assertEquals(MissionOutcome.Status.TIMED_OUT, outcome.status());
+            assertTrue(outcome.report().contains("agent w (0)"), outcome.report());
+            // The name is free again: the same mission can run at once, and be released this time.
+            ServiceAgent[] released = new ServiceAgent[1];
+            MissionOutcome again = JadeLauncher.of(WAITER).types(TestPrograms::type)
+                    .implementations(spec -> {
+                        released[0] = new ServiceAgent();
+                        released[0].release();
+                        return released[0];
+                    })
+                    .run(platform, Duration.ofSeconds(30));
+            assertEquals(MissionOutcome.Status.COMPLETED, again.status());
+        }
+    }
+
+    @Test
+    void anAgentNameTakenOnThePlatformIsReported() throws Exception {
+        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
+            platform.container().acceptNewAgent("w", new Probe()).start();
+            JadeException failure = assertThrows(JadeException.class,
+                    () -> JadeLauncher.of(WAITER).types(TestPrograms::type).run(platform, Duration.ofSeconds(30)));
+            assertEquals("cannot create JADE agent w (is the name taken on the platform?)", failure.getMessage());
+        }
+    }
+
+    @Test
+    void anImplementationLackingAPrimitiveOfItsTypeIsReportedBeforeAnyAgentStarts() {
+        MissionProgram program = TestPrograms.of(null,
+                List.of(new MissionProgram.AgentSpec("w", ServiceAgent.class.getName())),
+                TestPrograms.UntilReleased::new);
+        JadeException failure = assertThrows(JadeException.class, () -> JadeLauncher.of(program)
+                .types(TestPrograms::type)
+                .implementations(spec -> new TestAgent())
+                .run((JadePlatform) null, Duration.ofSeconds(30)));
+        assertEquals("masl.runtime.testing.TestAgent has no public method int add(int, int) that ServiceAgent "
+                + "declares", failure.getMessage());
+    }
+
+    @Test
+    void typesAreRequired() {
+        assertThrows(IllegalStateException.class,
+                () -> JadeLauncher.of(WAITER).run((JadePlatform) null, Duration.ofSeconds(1)));
+    }
+}

@@ -1,0 +1,28 @@
+package masl.jade;
+
+import java.util.concurrent.CompletableFuture;
+import masl.runtime.testing.TestAgent;
+
+/** An agent type with primitives for FIPA agents to invoke: results, exceptions, and a release. */
+public class ServiceAgent extends TestAgent {
+
+    private final CompletableFuture<Void> released = new CompletableFuture<>();
+
+    public int add(int a, int b) {
+        return a + b;
+    }
+
+    public int divide(int a, int b) {
+        return a / b;
+    }
+
+    /** Lets the agent's program ({@link TestPrograms.UntilReleased}) finish. */
+    public void release() {
+        released.complete(null);
+    }
+
+    /** Completed by {@link #release()}. */
+    CompletableFuture<Void> released() {
+        return released;
+    }
+}

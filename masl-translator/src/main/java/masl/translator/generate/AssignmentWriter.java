@@ -1,0 +1,171 @@
+package masl.translator.generate;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import masl.grammar.MASLParser;
+import masl.grammar.MASLParser.ExpressionContext;
+import masl.translator.analysis.AnalyzedProgram;
+import masl.translator.analysis.MaslType;
+import masl.translator.analysis.Member;
+import masl.translator.analysis.Sharing;
+import masl.translator.analysis.Symbol;
+import masl.translator.analysis.Variable;
+import org.antlr.v4.runtime.ParserRuleContext;
+
+/**
+ * Translates assignments, increments and decrements (MASL §7): locals are fields written directly;
+ * a shared variable is written through its wave's {@code SharedVariable}, every read-modify-write as
+ * one atomic update.
+ */
+final class AssignmentWriter {
+
+    private final AnalyzedProgram program;
+    private final StaticStructure structure;
+    private final ExpressionWriter expressions;
+    private final TreeQueries queries;
+    private final Unsupported unsupported;
+    /** Temporaries of split expressions, field name to Java type. */
+    private final Map<String, String> temporaries = new LinkedHashMap<>();
+    /** Statements to run before the one being translated: values hoisted out of atomic updates. */
+    private final List<String> hoisted = new ArrayList<>();
+
+    AssignmentWriter(AnalyzedProgram program, StaticStructure structure, ExpressionWriter expressions,
+            TreeQueries queries, Unsupported unsupported) {
+        this.program = program;
+        this.structure = structure;
+        this.expressions = expressions;
+        this.queries = queries;
+        this.unsupported = unsupported;
+    }
+
+    /** The temporaries used so far: field name to Java type. */
+    Map<String, String> temporaries() {
+        return temporaries;
+    }
+
+    /** Takes the statements that must run before the statement just translated, in order. */
+    List<String> takeHoisted() {
+        List<String> taken = List.copyOf(hoisted);
+        hoisted.clear();
+        return taken;
+    }
+
+    /**
+     * An assignment. A shared variable is written atomically: {@code set} when the value does not
+     * read it, otherwise {@code update} with the read-modify-write as a function of the old value.
+     * Empty when the write is ignored ({@code limited} to a type this agent is not of, §7).
+     */
+    Optional<String> assignment(MASLParser.AssignExprContext assignment, boolean isStatement) {
+        String operator = assignment.op.getText();
+        ExpressionContext target = assignment.target;
+        ExpressionContext value = assignment.value;
+        MaslType type = program.typeOf(target);
+        Symbol symbol = program.symbolOf(target).orElse(null);
+        if (symbol instanceof Variable variable) {
+            if (!maySelfWrite(variable)) {
+                return ignoredWrite(assignment, isStatement);
+            }
+            if (variable.sharing() == Sharing.LOCAL) {
+                return Optional.of(expressions.local(variable) + " " + operator + " "
+                        + (operator.equals("=") ? expressions.converted(type, value) : expressions.expr(value)));
+            }
+            String shared = "ctx.shared(" + structure.shared(variable) + ")";
+            if (operator.equals("=") && isStatement && !queries.mentions(value, variable)) {
+                return Optional.of(shared + ".set(" + expressions.convertedBoxed(type, value) + ")");
+            }
+            String parameter = lambdaParameter(variable);
+            String binary = operator.substring(0, operator.length() - 1);
+            if (isStatement && !operator.equals("=") && !queries.mentions(value, variable) && !isSimple(value)) {
+                // Only what reads the variable runs under its monitor (x += .sense() calls the primitive first).
+                String temporary = hoist(value);
+                return Optional.of(shared + ".update(" + parameter + " -> "
+                        + compound(type, parameter, binary, temporary, program.typeOf(value)) + ")");
+            }
+            String function = expressions.whileUpdating(variable, parameter, () -> operator.equals("=") ? expressions.convertedBoxed(type, value)
+                    : compound(type, parameter, binary, expressions.expr(value), program.typeOf(value)));
+            return Optional.of(shared + ".update(" + parameter + " -> " + function + ")");
+        }
+        if (target instanceof MASLParser.FieldAccessContext access && symbol instanceof Member member
+                && member.kind() == Member.Kind.ATTRIBUTE && !TreeQueries.isThis(access.expression())) {
+            return Optional.of(unsupported.report(target, "an attribute of another agent"));
+        }
+        if (symbol instanceof Member member && member.kind() == Member.Kind.DYNAMIC) {
+            return Optional.of(unsupported.report(target, "an assignment to a field of an Object-typed value"));
+        }
+        String left = expressions.expr(target);
+        return Optional.of(left + " " + operator + " " + (operator.equals("=") ? expressions.converted(type, value) : expressions.expr(value)));
+    }
+
+    /** Evaluates {@code value} into a new temporary, before the statement; returns the temporary. */
+    private String hoist(ExpressionContext value) {
+        String temporary = "tmp$" + (temporaries.size() + 1);
+        temporaries.put(temporary, JavaTypes.name(program.typeOf(value)));
+        hoisted.add(temporary + " = " + expressions.expr(value) + ";");
+        return temporary;
+    }
+
+    /** A literal or a name: nothing gained by evaluating it before an atomic update. */
+    private static boolean isSimple(ExpressionContext value) {
+        return value instanceof MASLParser.PrimaryExprContext primary
+                && (primary.primary() instanceof MASLParser.LiteralExprContext
+                || primary.primary() instanceof MASLParser.NameExprContext);
+    }
+
+    private String compound(MaslType type, String parameter, String operator, String value, MaslType valueType) {
+        boolean simple = value.matches("[\\w$.]+|\"[^\"\\\\]*\"");
+        String java = parameter + " " + operator + " " + (simple ? value : "(" + value + ")");
+        Class<?> target = JavaTypes.unboxed(type);
+        Class<?> source = JavaTypes.unboxed(valueType);
+        if (target == null || target == boolean.class || operator.startsWith("<") || operator.startsWith(">")) {
+            return needsCast(target) ? "(" + target.getName() + ") (" + java + ")" : java;
+        }
+        boolean widens = source != null && JavaTypes.rank(source) > JavaTypes.rank(target);
+        return needsCast(target) || widens ? "(" + target.getName() + ") (" + java + ")" : java;
+    }
+
+    private static boolean needsCast(Class<?> type) {
+        return type == byte.class || type == short.class || type == char.class;
+    }
+
+    /** {@code x++}, {@code --x}, …; on a shared variable an atomic update returning the old or new value. */
+    Optional<String> increment(ExpressionContext target, String operator, boolean prefix, boolean isStatement) {
+        Symbol symbol = program.symbolOf(target).orElse(null);
+        if (symbol instanceof Variable variable) {
+            if (!maySelfWrite(variable)) {
+                return ignoredWrite(target, isStatement);
+            }
+            if (variable.sharing() == Sharing.SHARED) {
+                String parameter = lambdaParameter(variable);
+                Class<?> type = JavaTypes.unboxed(variable.type());
+                String step = parameter + (operator.equals("++") ? " + 1" : " - 1");
+                String function = needsCast(type) ? "(" + type.getName() + ") (" + step + ")" : step;
+                return Optional.of("ctx.shared(" + structure.shared(variable) + ")."
+                        + (prefix ? "update(" : "getAndUpdate(") + parameter + " -> " + function + ")");
+            }
+        }
+        if (symbol instanceof Member member && member.kind() == Member.Kind.DYNAMIC) {
+            return Optional.of(unsupported.report(target, "an assignment to a field of an Object-typed value"));
+        }
+        String operand = expressions.expr(target);
+        return Optional.of(prefix ? operator + operand : operand + operator);
+    }
+
+    private boolean maySelfWrite(Variable variable) {
+        return variable.limitedTo() == null || queries.selfType().isSubtypeOf(variable.limitedTo());
+    }
+
+    private Optional<String> ignoredWrite(ParserRuleContext where, boolean isStatement) {
+        if (isStatement) {
+            return Optional.empty();
+        }
+        return Optional.of(unsupported.report(where, "a write to a limited variable inside an expression"));
+    }
+
+    private static String lambdaParameter(Variable variable) {
+        String name = JavaNames.identifier(variable.name());
+        return name.equals("ctx") || name.equals("self") ? name + "_" : name;
+    }
+}

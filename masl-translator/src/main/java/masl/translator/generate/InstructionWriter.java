@@ -1,0 +1,182 @@
+package masl.translator.generate;
+
+import java.util.List;
+import masl.grammar.MASLParser;
+import masl.grammar.MASLParser.ExpressionContext;
+import masl.grammar.MASLParser.StatementContext;
+import masl.runtime.descriptor.Primitive;
+import masl.translator.analysis.AnalyzedProgram;
+import masl.translator.analysis.Member;
+import masl.translator.analysis.TypeRef;
+import org.antlr.v4.runtime.ParserRuleContext;
+
+/**
+ * Translates instructions (expression statements, MASL §5): the Java of the statement, then the
+ * step boundary unless it takes no time; {@code sleep} as a timed suspension; a statement using a
+ * member its agent's type lacks as a {@code nop()} (§4).
+ */
+final class InstructionWriter {
+
+    private final AnalyzedProgram program;
+    private final CaseWriter cases;
+    private final ExpressionWriter expressions;
+    private final TreeQueries queries;
+    private final AssignmentWriter assignments;
+    private final String file;
+
+    InstructionWriter(AnalyzedProgram program, CaseWriter cases, ExpressionWriter expressions, String file) {
+        this.program = program;
+        this.cases = cases;
+        this.expressions = expressions;
+        this.queries = expressions.queries();
+        this.assignments = expressions.assignments();
+        this.file = file;
+    }
+
+    private String at(ParserRuleContext tree) {
+        return file + ":" + tree.getStart().getLine();
+    }
+
+    /** An expression statement: an instruction, followed by the step boundary unless it takes no time. */
+    void write(MASLParser.ExpressionStmtContext statement) {
+        ExpressionContext expression = statement.expression();
+        cases.note(at(statement) + ": " + JavaText.snippet(statement));
+        if (queries.usesAbsentMember(expression)) {
+            cases.comment("a nop() for " + expressions.selfType().name()
+                    + ": its type lacks a member this statement uses (MASL 4)");
+        } else if (isSleep(expression)) {
+            ExpressionContext duration = ExpressionWriter.arguments(sleepArguments(expression)).get(0);
+            cases.suspending("ctx.sleep(" + expressions.expr(duration) + ")", cases.point());
+            cases.note(at(statement) + ": the step boundary after the sleep");
+        } else {
+            String java = statementJava(expression);
+            if (java != null) {
+                writeGuarded(expression, java + ";");
+            } else {
+                cases.comment("the write is ignored: the variable is limited to another type (MASL 7)");
+            }
+        }
+        if (!isZeroDuration(expression)) {
+            cases.suspending("ctx.stepBoundary()", cases.point());
+        }
+    }
+
+    private String statementJava(ExpressionContext expression) {
+        if (expression instanceof MASLParser.AssignExprContext assignment) {
+            return assignments.assignment(assignment, true).orElse(null);
+        }
+        if (expression instanceof MASLParser.PostfixExprContext postfix) {
+            return assignments.increment(postfix.expression(), postfix.op.getText(), false, true).orElse(null);
+        }
+        if (expression instanceof MASLParser.PrefixExprContext prefix
+                && (prefix.op.getText().equals("++") || prefix.op.getText().equals("--"))) {
+            return assignments.increment(prefix.expression(), prefix.op.getText(), true, true).orElse(null);
+        }
+        return expressions.expr(expression);
+    }
+
+    /**
+     * A statement calling Java code that declares checked exceptions: the exception would raise
+     * {@code uncaught_exception} (MASL 8); with no reaction to it, the occurrence is dropped.
+     */
+    private void writeGuarded(ExpressionContext expression, String java) {
+        List<String> before = assignments.takeHoisted();
+        if (!queries.throwsChecked(expression)) {
+            before.forEach(cases::line);
+            cases.line(java);
+            return;
+        }
+        cases.open("try {");
+        before.forEach(cases::line);
+        cases.line(java);
+        cases.reopen("} catch (Exception uncaught) {");
+        cases.line("// uncaught_exception (MASL 8): no reaction handles it, so the occurrence is dropped");
+        cases.line("if (uncaught instanceof InterruptedException) Thread.currentThread().interrupt();");
+        cases.close("}");
+    }
+
+    /** {@code .sleep(ms)} (when the type keeps Default's) and {@code Thread.sleep(ms)}: a timed suspension. */
+    private boolean isSleep(ExpressionContext expression) {
+        MASLParser.ArgumentsContext arguments = sleepArguments(expression);
+        return arguments != null && ExpressionWriter.arguments(arguments).size() == 1;
+    }
+
+    private MASLParser.ArgumentsContext sleepArguments(ExpressionContext expression) {
+        if (expression instanceof MASLParser.PrimaryExprContext primary
+                && primary.primary() instanceof MASLParser.SelfInvocationContext call
+                && call.identifier().getText().equals("sleep") && !overridesSleep()) {
+            return call.arguments();
+        }
+        if (expression instanceof MASLParser.MethodCallContext call && call.identifier().getText().equals("sleep")) {
+            if (program.symbolOf(call.expression()).orElse(null) instanceof TypeRef type
+                    && type.type().javaName().equals("java.lang.Thread")) {
+                return call.arguments();
+            }
+            if (call.expression() instanceof MASLParser.PrimaryExprContext receiver
+                    && receiver.primary() instanceof MASLParser.ThisExprContext && !overridesSleep()) {
+                return call.arguments();
+            }
+        }
+        return null;
+    }
+
+    /** Whether a type below the root redeclares {@code sleep}: then it is called like any primitive. */
+    private boolean overridesSleep() {
+        for (var type = expressions.selfType().descriptor(); type != null && type.supertype() != null;
+                type = type.supertype()) {
+            if (type.declaredPrimitives().stream().anyMatch(p -> p.name().equals("sleep"))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Entry members and accessor primitives take no time: no step boundary after them (MASL 5). */
+    private boolean isZeroDuration(ExpressionContext expression) {
+        Member member = program.symbolOf(expression).orElse(null) instanceof Member m ? m : null;
+        if (member == null) {
+            return false;
+        }
+        if (member.kind() == Member.Kind.ENTRY_MEMBER) {
+            return true;
+        }
+        if (member.kind() == Member.Kind.PRIMITIVE) {
+            Primitive primitive = expressions.selfType().descriptor().findPrimitive(member.name()).orElse(null);
+            return primitive != null && primitive.accessor();
+        }
+        return false;
+    }
+
+    /** Whether a statement takes no time: then nothing in it can suspend. */
+    boolean isZeroDuration(StatementContext statement) {
+        if (statement instanceof MASLParser.EmptyStmtContext) {
+            return true;
+        }
+        if (statement instanceof MASLParser.ExpressionStmtContext expression) {
+            return isZeroDuration(expression.expression()) && !queries.usesAbsentMember(expression)
+                    && !queries.throwsChecked(expression);
+        }
+        if (statement instanceof MASLParser.BlockStmtContext block) {
+            return block.block().statement().stream().allMatch(this::isZeroDuration);
+        }
+        if (statement instanceof MASLParser.IfStmtContext ifStmt) {
+            return isZeroDuration(ifStmt.thenStmt) && (ifStmt.elseStmt == null || isZeroDuration(ifStmt.elseStmt));
+        }
+        return false;
+    }
+
+    /** The initialisation or update part of a {@code for}: part of the loop, with no step boundary of its own. */
+    void writeParts(List<ExpressionContext> parts) {
+        for (ExpressionContext part : parts) {
+            if (queries.usesAbsentMember(part)) {
+                cases.comment("nothing for " + expressions.selfType().name() + ": its type lacks a member of "
+                        + JavaText.snippet(part) + " (MASL 4)");
+                continue;
+            }
+            String java = statementJava(part);
+            if (java != null) {
+                writeGuarded(part, java + ";");
+            }
+        }
+    }
+}

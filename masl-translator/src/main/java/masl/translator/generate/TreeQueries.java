@@ -1,0 +1,101 @@
+package masl.translator.generate;
+
+import masl.grammar.MASLParser;
+import masl.grammar.MASLParser.ExpressionContext;
+import masl.translator.analysis.AnalyzedProgram;
+import masl.translator.analysis.ImportedType;
+import masl.translator.analysis.Member;
+import masl.translator.analysis.Variable;
+import org.antlr.v4.runtime.ParserRuleContext;
+import org.antlr.v4.runtime.tree.ParseTree;
+
+/**
+ * Questions the generator asks about a piece of the program, for the agent type being generated:
+ * does it use a member the type lacks (§4), does it mention a variable, may it throw a checked exception.
+ */
+final class TreeQueries {
+
+    private final AnalyzedProgram program;
+    private final ImportedType selfType;
+
+    TreeQueries(AnalyzedProgram program, ImportedType selfType) {
+        this.program = program;
+        this.selfType = selfType;
+    }
+
+    ImportedType selfType() {
+        return selfType;
+    }
+
+    /**
+     * Whether {@code tree} uses a primitive or attribute of the current agent that this agent's type
+     * lacks: the statement is then a {@code nop()} for it, and a test or condition is false (§4).
+     */
+    boolean usesAbsentMember(ParseTree tree) {
+        if (tree instanceof ParserRuleContext node && isSelfAccess(node)
+                && program.symbolOf(node).orElse(null) instanceof Member member && !selfHas(member)) {
+            return true;
+        }
+        for (int i = 0; i < tree.getChildCount(); i++) {
+            if (usesAbsentMember(tree.getChild(i))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private boolean selfHas(Member member) {
+        return switch (member.kind()) {
+            case PRIMITIVE -> selfType.descriptor().findPrimitive(member.name()).isPresent();
+            case ATTRIBUTE -> selfType.descriptor().findAttribute(member.name()).isPresent();
+            default -> true;
+        };
+    }
+
+    private static boolean isSelfAccess(ParserRuleContext node) {
+        if (node instanceof MASLParser.PrimaryExprContext primary) {
+            return primary.primary() instanceof MASLParser.SelfInvocationContext
+                    || primary.primary() instanceof MASLParser.SelfAttributeContext;
+        }
+        if (node instanceof MASLParser.MethodCallContext call) {
+            return isThis(call.expression());
+        }
+        return node instanceof MASLParser.FieldAccessContext access && isThis(access.expression());
+    }
+
+    static boolean isThis(ExpressionContext expression) {
+        return expression instanceof MASLParser.PrimaryExprContext primary
+                && primary.primary() instanceof MASLParser.ThisExprContext;
+    }
+
+    /** Whether {@code tree} reads or writes {@code variable}. */
+    boolean mentions(ParseTree tree, Variable variable) {
+        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) == variable) {
+            return true;
+        }
+        for (int i = 0; i < tree.getChildCount(); i++) {
+            if (mentions(tree.getChild(i), variable)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether {@code tree} calls Java code declaring checked exceptions (a primitive's are wrapped instead). */
+    boolean throwsChecked(ParseTree tree) {
+        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
+                && member.javaMember() != null) {
+            for (Class<?> exception : member.javaMember().getExceptionTypes()) {
+                if (!RuntimeException.class.isAssignableFrom(exception) && !Error.class.isAssignableFrom(exception)) {
+                    return true;
+                }
+            }
+        }
+        for (int i = 0; i < tree.getChildCount(); i++) {
+            if (throwsChecked(tree.getChild(i))) {
+                return true;
+            }
+        }
+        return false;
+    }
+}

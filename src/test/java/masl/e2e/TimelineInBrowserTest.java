@@ -1,0 +1,89 @@
+package masl.e2e;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.File;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import javax.imageio.ImageIO;
+import masl.translator.cli.Masl;
+import org.junit.jupiter.api.Test;
+
+/**
+ * {@code masl run --trace} then {@code masl timeline}, and the page opened in a real browser
+ * (Debian's headless Chromium, installed by {@code tools/ensure-chromium.sh}); the screenshot is
+ * kept in {@code build/timeline/} for a person to look at. The run is seeded, so the page (laid out
+ * in record order, the clock being virtual) and its picture are the same every time.
+ */
+class TimelineInBrowserTest {
+
+    private static final int MAIN_BLUE = 0x4e79a7;
+    private static final int EVENS_ORANGE = 0xf28e2b;
+    private static final int END_GREEN = 0x59a14f;
+    private static final int TRIP_RED = 0xd62728;
+
+    @Test
+    void theTimelineOfExampleE3RendersItsLanesBlocksAndTrips() throws Exception {
+        Path out = Files.createDirectories(Path.of("build/timeline"));
+        Path trace = out.resolve("e3.jsonl");
+        Path page = out.resolve("e3.html");
+        Path screenshot = out.resolve("e3.png");
+        Files.deleteIfExists(screenshot);
+
+        assertEquals(0, masl("run", "src/test/resources/examples/e3_asynchronous_child.masl", "--seed", "3", "--trace", trace.toString()));
+        assertEquals(0, masl("timeline", trace.toString(), "-o", page.toString()));
+        chromiumScreenshot(page, screenshot);
+
+        BufferedImage image = ImageIO.read(screenshot.toFile());
+        assertTrue(pixelsOf(image, MAIN_BLUE) > 2_000, "the lanes of block main are drawn");
+        assertTrue(pixelsOf(image, EVENS_ORANGE) > 500, "the agents in block evens are drawn");
+        assertTrue(pixelsOf(image, END_GREEN) > 300, "the agent running scalar block end is drawn");
+        assertTrue(pixelsOf(image, TRIP_RED) > 10, "barrier trips are drawn (one-pixel lines)");
+    }
+
+    private static int masl(String... args) {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int status = new Masl(new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8)).run(args);
+        assertEquals("", err.toString(StandardCharsets.UTF_8));
+        return status;
+    }
+
+    private static void chromiumScreenshot(Path page, Path screenshot) throws IOException, InterruptedException {
+        String chromium = new File("/usr/bin/chromium").canExecute() ? "/usr/bin/chromium" : "chromium";
+        Process browser;
+        try {
+            browser = new ProcessBuilder(chromium, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
+                    "--window-size=1280,320", "--screenshot=" + screenshot.toAbsolutePath(), page.toAbsolutePath().toUri().toString())
+                    .redirectErrorStream(true)
+                    .redirectOutput(ProcessBuilder.Redirect.DISCARD)
+                    .start();
+        } catch (IOException missing) {
+            throw new AssertionError("this test needs Debian's chromium: run tools/ensure-chromium.sh (./run-tests does)", missing);
+        }
+        if (!browser.waitFor(60, TimeUnit.SECONDS)) {
+            browser.destroyForcibly();
+            throw new AssertionError("chromium did not finish the screenshot in 60 s");
+        }
+        assertTrue(Files.size(screenshot) > 0, "chromium wrote " + screenshot);
+    }
+
+    private static int pixelsOf(BufferedImage image, int rgb) {
+        int count = 0;
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                if ((image.getRGB(x, y) & 0xffffff) == rgb) {
+                    count++;
+                }
+            }
+        }
+        return count;
+    }
+}
