@@ -37,17 +37,18 @@ final class AgentBinder {
         Class<?> chosen = declared;
         if (placed != null && placed.implementation().isPresent()) {
             chosen = load(placed.implementation().get(), where, "class of agent '" + spec.name() + "'");
-        } else if (placed != null && placed.isRobot()) {
-            chosen = placed.model().orElseThrow().implementation();
         }
-        if (placed != null && placed.isRobot() && !placed.model().orElseThrow().implementation().isAssignableFrom(chosen)) {
+        RobotModel model = placed != null ? placed.model().orElse(null) : null;
+        if (model != null && placed.implementation().isEmpty()) {
+            chosen = model.implementation();
+        }
+        if (model != null && !model.implementation().isAssignableFrom(chosen)) {
             throw located(where, "class " + chosen.getName() + " of agent '" + spec.name() + "' does not extend "
-                    + placed.model().orElseThrow().implementation().getName() + ", the class of model '"
-                    + placed.model().orElseThrow().scenarioName() + "'");
+                    + model.implementation().getName() + ", the class of model '" + model.scenarioName() + "'");
         }
         if (!declared.isAssignableFrom(chosen)) {
-            throw located(where, "agent '" + spec.name() + "' is declared a " + declared.getName() + " by the mission, but "
-                    + chosen.getName() + " is not one");
+            throw located(where, "agent '" + spec.name() + "' is declared a " + declared.getName()
+                    + " by the mission, but " + chosen.getName() + " is not one");
         }
         if (!AgentImplementation.class.isAssignableFrom(chosen)) {
             throw located(where, "class " + chosen.getName() + " does not extend masl.runtime.AgentImplementation");
@@ -69,7 +70,8 @@ final class AgentBinder {
             switch (model) {
                 case WHEELED -> {
                     SimulatedWheeledRobot body = SimulatedWheeledRobot.load(world,
-                            placed.body().orElse(SimulatedWheeledRobot.BODY), prefix, placed.x(), placed.y(), placed.heading());
+                            placed.body().orElse(SimulatedWheeledRobot.BODY), prefix,
+                            placed.x(), placed.y(), placed.heading());
                     ((WheeledRobot) implementation).attachHardware(body);
                     return new SimulatedRobot(placed.name(), model, body.chassis(), body);
                 }
@@ -104,7 +106,8 @@ final class AgentBinder {
         try {
             ((ScenarioInitialiser) type.getConstructor().newInstance()).initialise(simulation);
         } catch (Exception e) {
-            throw located(initialisation.location(), "initialisation class " + type.getName() + " failed: " + describe(e));
+            throw located(initialisation.location(),
+                    "initialisation class " + type.getName() + " failed: " + describe(e));
         }
     }
 

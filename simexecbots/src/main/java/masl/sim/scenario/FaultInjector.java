@@ -37,7 +37,8 @@ final class FaultInjector implements PhysicsWorld.StepListener {
             return true;
         });
         for (SimulatedRobot robot : simulation.robots().values()) {
-            if (robot.hardware() instanceof SimulatedWheeledRobot wheeled && wheeled.battery() <= 0 && empty.add(robot.name())) {
+            if (robot.hardware() instanceof SimulatedWheeledRobot wheeled && wheeled.battery() <= 0
+                    && empty.add(robot.name())) {
                 recorder.event(robot.name(), "battery-empty", "");
             }
         }

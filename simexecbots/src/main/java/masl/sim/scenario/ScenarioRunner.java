@@ -81,7 +81,8 @@ public final class ScenarioRunner {
                 options.classes() != null ? options.classes() : program.getClass().getClassLoader());
         checkPlacedAgentsAreDeclared(program);
         try (PhysicsWorld world = new PhysicsWorld(scenario.physics())) {
-            RunRecorder recorder = new RunRecorder(Math.max(1, Math.round(scenario.samplePeriod() / scenario.physics().stepSize())));
+            long sampleSteps = Math.max(1, Math.round(scenario.samplePeriod() / scenario.physics().stepSize()));
+            RunRecorder recorder = new RunRecorder(sampleSteps);
             loadWorlds(world);
             SimulatedAtom.Latches latches = new SimulatedAtom.Latches((attached, foot, otherFoot) ->
                     recorder.event(agentOf(foot), attached ? "attach" : "detach", foot + " " + otherFoot));
@@ -112,8 +113,8 @@ public final class ScenarioRunner {
         StringBuilder traceText = new StringBuilder();
         JsonLinesTrace jsonTrace = new JsonLinesTrace(traceText);
         // The file gets simulated time stamps, so that lock-step runs repeat byte for byte.
-        Trace fileTrace = new SimulatedTimeTrace(() -> world.stepCount() * Math.round(scenario.physics().stepSize() * 1e9),
-                jsonTrace);
+        long stepNanos = Math.round(scenario.physics().stepSize() * 1e9);
+        Trace fileTrace = new SimulatedTimeTrace(() -> world.stepCount() * stepNanos, jsonTrace);
         Trace trace = event -> {
             fileTrace.record(event);
             options.trace().record(event);
@@ -152,7 +153,8 @@ public final class ScenarioRunner {
         return new SimulationResult(outcome, simulated, recorder, traceText.toString(), files);
     }
 
-    private List<Path> writeOutput(Path folder, Simulation simulation, MissionOutcome outcome, String trace, double simulated)
+    private List<Path> writeOutput(Path folder, Simulation simulation, MissionOutcome outcome, String trace,
+            double simulated)
             throws IOException {
         Files.createDirectories(folder);
         RunRecorder recorder = simulation.recorder();
@@ -178,7 +180,8 @@ public final class ScenarioRunner {
         List<String> errors = new ArrayList<>();
         for (Scenario.Agent agent : scenario.agents()) {
             if (program.agents().stream().noneMatch(spec -> spec.name().equals(agent.name()))) {
-                errors.add(agent.location() + ": error: agent '" + agent.name() + "' is not declared by the mission (it declares "
+                errors.add(agent.location() + ": error: agent '" + agent.name()
+                        + "' is not declared by the mission (it declares "
                         + program.agents().stream().map(MissionProgram.AgentSpec::name).toList() + ")");
             }
         }

@@ -196,6 +196,34 @@ class ScenarioRunnerTest {
     }
 
     @Test
+    void aRobotClassMustExtendItsModelsClass() throws Exception {
+        Scenario scenario = scenario("<agent name=\"k0\" model=\"wheeled\" class=\"masl.agents.Default\"/>");
+        TestMission mission = new TestMission().agent("k0", Default.class, RobotPrograms::hello);
+        ScenarioException e = assertThrows(ScenarioException.class, () -> new ScenarioRunner(scenario).run(mission, quick()));
+        assertEquals(List.of("test.scenario.xml:3:1: error: class masl.agents.Default of agent 'k0' does not extend "
+                + "masl.agents.WheeledRobot, the class of model 'wheeled'"), e.errors());
+    }
+
+    @Test
+    void aSubclassOfTheModelsClassGetsTheBody() throws Exception {
+        Scenario scenario = scenario("<agent name=\"k0\" model=\"wheeled\" class=\"" + CarefulRobot.class.getName() + "\"/>");
+        AtomicReference<Double> battery = new AtomicReference<>();
+        TestMission mission = new TestMission().agent("k0", WheeledRobot.class, impl -> new AgentProgram() {
+            @Override
+            protected void resume(AgentContext ctx) {
+                battery.set(((CarefulRobot) impl).getBattery());
+                ctx.finish();
+            }
+        });
+        new ScenarioRunner(scenario).run(mission, quick());
+        assertEquals(1.0, battery.get(), 1e-3, "a full battery read through the subclass");
+    }
+
+    /** A user's robot class: the model's class with more of its own. */
+    public static final class CarefulRobot extends WheeledRobot {
+    }
+
+    @Test
     void anInitialisationClassThatIsMissingIsALocatedError() throws Exception {
         Scenario scenario = scenario("<initialisation class=\"no.such.Setup\"/>");
         ScenarioException e = assertThrows(ScenarioException.class,
