@@ -323,6 +323,8 @@ class ScenarioRunnerTest {
                     .count();
             assertTrue(pixels > 200, "robot " + robot + "'s path drawn: " + pixels + " pixels");
         }
-        assertTrue(Files.readString(output.resolve(ScenarioRunner.TRAJECTORIES)).startsWith("time,agent,x,y,z,heading\n0.000,k0,"));
+        String csv = Files.readString(output.resolve(ScenarioRunner.TRAJECTORIES));
+        assertEquals(result.trajectoriesCsv(), csv);
+        assertTrue(csv.startsWith("time,agent,x,y,z,heading\n0.000,k0,"), csv.substring(0, 60));
     }
 }
