@@ -15,7 +15,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
-/** A synchronous block of 1,000 agents runs 1,000 lock-step steps through {@code masl run}: it must simply complete. */
+/**
+ * Large teams through {@code masl run}, in the default test JVM: they must simply complete (speed is
+ * measured by {@code gradle bench}, not here).
+ */
 class ScaleTest {
 
     @TempDir
@@ -39,11 +42,37 @@ class ScaleTest {
                   scalar entry report (main.count == 1000) { .logln("steps " + steps); }
                 }
                 """);
+        assertEquals("steps 1000\n", run(program));
+    }
+
+    @Test
+    @Timeout(300)
+    void tenThousandAgentsTakeTenLockStepSteps() throws IOException {
+        String agents = IntStream.range(0, 10_000).mapToObj(i -> "robot" + i).collect(Collectors.joining(", "));
+        Path program = folder.resolve("ten-thousand.masl");
+        Files.writeString(program, "import Default.xml as Default;\n"
+                + "Default " + agents + " = newAgent(Default);\n"
+                + """
+                synchronous entry main (true) {
+                  shared int arrived = 0;
+                  local int i = 0;
+                  while (i < 10) {
+                    i++;
+                  }
+                  arrived++;
+                  .nop();
+                  scalar entry report (true) { .logln(arrived + " agents, " + i + " steps each"); }
+                }
+                """);
+        assertEquals("10000 agents, 10 steps each\n", run(program));
+    }
+
+    private static String run(Path program) {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         int status = new Masl(new PrintStream(out, true, StandardCharsets.UTF_8),
                 new PrintStream(err, true, StandardCharsets.UTF_8)).run("run", program.toString());
         assertEquals(0, status, err.toString(StandardCharsets.UTF_8));
-        assertEquals("steps 1000\n", out.toString(StandardCharsets.UTF_8));
+        return out.toString(StandardCharsets.UTF_8);
     }
 }

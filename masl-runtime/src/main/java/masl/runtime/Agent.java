@@ -1,6 +1,5 @@
 package masl.runtime;
 
-import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Queue;
@@ -76,15 +75,10 @@ final class Agent implements AgentContext, AgentTask {
     private long busyWaitProgress = -1;
     /** The program's pc was set to other code: resume it at once, in this slice. */
     private boolean redirected;
-    /** The reactions still to run in the current event processing; null when not processing. */
-    private ArrayDeque<ReactionPlan.Step> reactionsToRun;
-    /** The occurrence the running reaction handles; null outside reactions. */
-    private EventOccurrence reactingTo;
-    /** The last reaction has ended: the program is applying its ending (resume, break, …). */
-    private boolean endingDue;
-    /** Where the interrupted boundary continues, and whether it still owes the barrier (§5 step 3). */
-    private int interruptedPc;
-    private boolean barrierAfterReactions;
+    /** The event processing whose reactions are running; null outside reactions. */
+    private ReactionRun reacting;
+    /** The processing whose last reaction has ended and is applying its ending (resume, break, …). */
+    private ReactionRun ending;
 
     // Guarded by the EntryCoordinator's lock (see its invariant for the agent's own reads).
     final List<Membership> memberships = new ArrayList<>();
@@ -341,21 +335,21 @@ final class Agent implements AgentContext, AgentTask {
     @Override
     public void breakOut(EntryDefinition outermost) {
         requireNoReactionRunning("break");
-        endingDue = false;
+        ending = null;
         mission.coordinator().leaveUpTo(this, mission.entry(outermost), LeaveCause.BREAK);
     }
 
     @Override
     public void reelect(EntryDefinition block) {
         requireNoReactionRunning("reelect");
-        endingDue = false;
+        ending = null;
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.REELECT);
     }
 
     @Override
     public void restart(EntryDefinition block) {
         requireNoReactionRunning("restart");
-        endingDue = false;
+        ending = null;
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.RESTART);
     }
 
@@ -420,7 +414,7 @@ final class Agent implements AgentContext, AgentTask {
         requireMember(event, block);
         Agent[] receivers = event.isShared() ? block.perceivers() : new Agent[] {this};
         EventOccurrence occurrence = new EventOccurrence(event, message, id);
-        mission.trace().record(new TraceEvent.EventEmitted(mission.scheduler().nanoTime(), id, event.name(), block.name(), message,
+        mission.trace().record(new TraceEvent.EventEmitted(now(), id, event.name(), block.name(), message,
                 receivers.length));
         for (Agent receiver : receivers) {
             receiver.perceive(occurrence);
@@ -434,43 +428,43 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public String messageOf(Event event) {
-        return reactingTo != null && reactingTo.event() == event ? reactingTo.message() : null;
+        if (reacting == null || reacting.current().event() != event) {
+            return null;
+        }
+        return reacting.current().message();
     }
 
     @Override
     public boolean endReaction() {
-        if (reactingTo == null) {
+        if (reacting == null) {
             throw new IllegalStateException(describe() + ": endReaction outside a reaction");
         }
-        if (!reactionsToRun.isEmpty()) {
+        if (reacting.hasNext()) {
             redirectToNextReaction();
             return false;
         }
-        reactingTo = null;
-        reactionsToRun = null;
-        endingDue = true;
+        ending = reacting;
+        reacting = null;
         return true;
     }
 
     @Override
     public boolean resumeInterrupted() {
-        if (!endingDue) {
+        if (ending == null) {
             throw new IllegalStateException(describe() + ": resume without a reaction that just ended");
         }
-        endingDue = false;
-        program.jump(interruptedPc);
-        return completeBoundary(barrierAfterReactions);
+        ReactionRun ended = ending;
+        ending = null;
+        program.jump(ended.interruptedPc());
+        return completeBoundary(ended.barrierDue());
     }
 
     @Override
     public void clearEvents() {
-        if (reactingTo == null) {
+        if (reacting == null) {
             throw new IllegalStateException(describe() + ": clearEvents outside a reaction");
         }
-        for (ReactionPlan.Step step : reactionsToRun) {
-            traceDropped(step.occurrence());
-        }
-        reactionsToRun.clear();
+        reacting.dropRest().forEach(this::traceDropped);
         events.takeAll().forEach(this::traceDropped);
     }
 
@@ -506,7 +500,7 @@ final class Agent implements AgentContext, AgentTask {
         if (!systemEvent.isSystemEvent()) {
             throw new IllegalArgumentException(systemEvent + " is not a system event");
         }
-        mission.trace().record(new TraceEvent.EventEmitted(mission.scheduler().nanoTime(), id, systemEvent.name(), null, message, 1));
+        mission.trace().record(new TraceEvent.EventEmitted(now(), id, systemEvent.name(), null, message, 1));
         perceive(new EventOccurrence(systemEvent, message, id));
     }
 
@@ -540,35 +534,37 @@ final class Agent implements AgentContext, AgentTask {
             return false;
         }
         progress++;
-        interruptedPc = program.pc();
-        barrierAfterReactions = barrierDue;
-        reactionsToRun = new ArrayDeque<>(plan.steps());
+        reacting = new ReactionRun(plan.steps(), program.pc(), barrierDue);
         redirectToNextReaction();
         return true;
     }
 
     private void redirectToNextReaction() {
-        ReactionPlan.Step step = reactionsToRun.poll();
-        reactingTo = step.occurrence();
+        ReactionPlan.Step step = reacting.next();
         Reaction reaction = step.reaction();
-        mission.trace().record(new TraceEvent.EventReacted(mission.scheduler().nanoTime(), id, reactingTo.event().name(),
-                reaction.block().name(), reaction.isDefault()));
+        mission.trace().record(new TraceEvent.EventReacted(now(), id,
+                step.occurrence().event().name(), reaction.block().name(), reaction.isDefault()));
         program.jump(program.reactionPc(reaction));
         suspended = true;
         redirected = true;
     }
 
     private void traceDropped(EventOccurrence occurrence) {
-        mission.trace().record(new TraceEvent.EventDropped(mission.scheduler().nanoTime(), id, occurrence.event().name()));
+        mission.trace().record(new TraceEvent.EventDropped(now(), id, occurrence.event().name()));
+    }
+
+    /** The mission clock, for trace timestamps. */
+    private long now() {
+        return mission.scheduler().nanoTime();
     }
 
     private boolean isReacting() {
-        return reactingTo != null;
+        return reacting != null;
     }
 
-    /** A reaction runs in one go (§8): between its start and {@link #endReaction()}, no block operation or boundary. */
+    /** A reaction runs in one go (§8): from its start to {@link #endReaction()}, no block operation or boundary. */
     private void requireNoReactionRunning(String what) {
-        if (reactingTo != null) {
+        if (reacting != null) {
             throw new IllegalStateException(describe() + ": " + what + " inside a reaction");
         }
     }
@@ -576,7 +572,7 @@ final class Agent implements AgentContext, AgentTask {
     /** Neither in a reaction, nor between the last one's end and its ending (resume, break, …). */
     private void requireOutsideReaction(String what) {
         requireNoReactionRunning(what);
-        if (endingDue) {
+        if (ending != null) {
             throw new IllegalStateException(describe() + ": " + what
                     + " after endReaction(): a reaction ends with resumeInterrupted, break, restart or reelect");
         }
@@ -620,7 +616,8 @@ final class Agent implements AgentContext, AgentTask {
     }
 
     String describe() {
-        return "agent " + name + " (" + id + ") at pc " + program.pc();
+        String source = program.sourceAt(program.pc());
+        return "agent " + name + " (" + id + ") at pc " + program.pc() + (source == null ? "" : " (" + source + ")");
     }
 
     @Override

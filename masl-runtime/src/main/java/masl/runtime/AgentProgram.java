@@ -34,6 +34,15 @@ public abstract class AgentProgram {
         pc = resumptionPoint;
     }
 
+    /**
+     * The MASL source of resumption point {@code pc} ({@code "hello.masl:5: .logln(x);"}), or null when
+     * unknown: reports of a deadlock or a failure name each agent's place in the program, not in
+     * generated code. Generated programs override it.
+     */
+    protected String sourceAt(int pc) {
+        return null;
+    }
+
     /** The current resumption point, for diagnostics. */
     public final int pc() {
         return pc;

@@ -7,9 +7,9 @@ import java.util.Objects;
 
 /**
  * The static description of an e-block (MASL §3, §6): its name, mode, parent block, the e-sequence
- * it belongs to, its shared variable and event declarations, its reactions and its children. Generated programs hold one
- * definition per block in {@code static final} fields, built in program order before any mission
- * runs; the per-mission state of the block is an {@link Entry}.
+ * it belongs to, its shared variable and event declarations, its reactions and its children.
+ * Generated programs hold one definition per block in {@code static final} fields, built in program
+ * order before any mission runs; the per-mission state of the block is an {@link Entry}.
  */
 public final class EntryDefinition {
 

@@ -529,7 +529,8 @@ class EventDeliveryTest {
             assertEquals(List.of(), instructions.lockStepViolations());
             for (int agent = 0; agent < 3; agent++) {
                 Map<String, Integer> mine = instructions.phases().get(agent);
-                assertEquals(List.of(0, 1, 2, 3), List.of(mine.get("i1"), mine.get("i2"), mine.get("i3"), mine.get("i4")));
+                assertEquals(List.of(0, 1, 2, 3),
+                        List.of(mine.get("i1"), mine.get("i2"), mine.get("i3"), mine.get("i4")));
                 int tick = ticks.phases().get(agent).get("tick");
                 assertTrue(tick == 1 || tick == 2, "agent " + agent + " reacted in phase " + tick);
             }
@@ -695,6 +696,94 @@ class EventDeliveryTest {
             assertTrue(!journal.contains("w4"), journal);
             assertEquals(3, trace.events(TraceEvent.Left.class).stream()
                     .filter(e -> e.block().equals("work") && e.cause() == LeaveCause.BREAK).count());
+        }
+    }
+
+    /**
+     * Agent 1 is held by the free entry barrier of {@code gate} (agent 0, in the same wave of
+     * {@code main}, has not reached its e-sequence yet) when agent 0 emits: as a member of
+     * {@code main} it perceives the event, but is not woken for it; it reacts at its first boundary
+     * once let in.
+     * <pre>
+     * asynchronous entry main (true) {
+     *   shared event open;
+     *   shared int inside = 0;
+     *   inside++;
+     *   while (inside &lt; 2) {}
+     *   asynchronous entry talk (.getProxyID() == 0) {
+     *     while (gate.getWaitingInCount() == 0) {}
+     *     emitWithMessage(open, "now");
+     *   }
+     *   .nop();
+     *   synchronous entry gate (.getProxyID() == 1) {
+     *     .logln("in gate");
+     *   }
+     *   react (open) { .logln(.getProxyID() + " heard " + getMessageFromEvent(open)); resume; }
+     * }
+     * </pre>
+     */
+    static final class HeldMember extends CompactProgram {
+        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
+        static final Event OPEN = MAIN.declareSharedEvent("open");
+        static final SharedDeclaration<Integer> INSIDE = MAIN.declareShared("inside", 0);
+        static final EntryDefinition TALK = MAIN.child("talk", Mode.ASYNCHRONOUS);
+        static final EntryDefinition GATE = MAIN.child("gate", Mode.SYNCHRONOUS);
+        static final Reaction MAIN_OPEN = MAIN.react(OPEN);
+
+        HeldMember(TestAgent self) {
+            super(self);
+        }
+
+        @Override
+        protected int reactionPc(Reaction reaction) {
+            return 20;
+        }
+
+        @Override
+        protected void resume(AgentContext ctx) {
+            int me = self.getProxyID();
+            while (true) {
+                switch (pc) {
+                    case 0: if (!arrive(ctx, MAIN, true, 1, 14)) return; continue;
+                    case 1:
+                        ctx.shared(INSIDE).initialise(() -> 0);
+                        ctx.shared(INSIDE).getAndUpdate(n -> n + 1);
+                        if (!step(ctx, 2)) return;
+                        continue;
+                    case 2: if (!busyWait(ctx, ctx.shared(INSIDE).get() < 2, 3)) return; continue;
+                    case 3: if (!arrive(ctx, TALK, me == 0, 4, 7)) return; continue;
+                    case 4: if (!busyWait(ctx, ctx.entry(GATE).getWaitingInCount() == 0, 5)) return; continue;
+                    case 5: ctx.emit(OPEN, "now"); if (!step(ctx, 6)) return; continue;
+                    case 6: if (!leave(ctx, TALK, 7)) return; continue;
+                    case 7: if (!endOf(ctx, TALK.sequence(), 8)) return; continue;
+                    case 8: self.nop(); if (!step(ctx, 9)) return; continue;
+                    case 9: if (!arrive(ctx, GATE, me == 1, 10, 12)) return; continue;
+                    case 10: self.logln("in gate"); if (!step(ctx, 11)) return; continue;
+                    case 11: if (!leave(ctx, GATE, 12)) return; continue;
+                    case 12: if (!endOf(ctx, GATE.sequence(), 13)) return; continue;
+                    case 13: if (!leave(ctx, MAIN, 14)) return; continue;
+                    case 14: if (!endOf(ctx, MAIN.sequence(), 15)) return; continue;
+                    case 15: ctx.finish(); return;
+                    case 20:
+                        self.logln(me + " heard " + ctx.messageOf(OPEN));
+                        if (!resumeAfterReaction(ctx)) return;
+                        continue;
+                    default: throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void anAgentHeldByAnEntryBarrierPerceivesButReactsOnlyOnceLetIn(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            MemoryTrace trace = new MemoryTrace();
+            String journal = Missions.run(driver, HeldMember.MAIN, 2, HeldMember::new, trace).journal();
+            assertEquals(List.of("0 heard now", "1 heard now", "in gate"), ReactionRulesTest.sortedLines(journal));
+            assertTrue(journal.indexOf("in gate") < journal.indexOf("1 heard now"), journal);
+            assertEquals(List.of(2), trace.events(TraceEvent.EventEmitted.class).stream()
+                    .map(TraceEvent.EventEmitted::receivers).toList());
         }
     }
 

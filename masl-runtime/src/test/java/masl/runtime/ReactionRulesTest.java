@@ -483,7 +483,8 @@ class ReactionRulesTest {
     void clearEventsDropsTheRestSoThatTheCurrentReactionDecides(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             MemoryTrace trace = new MemoryTrace();
-            assertEquals("x\na\ny\n", Missions.run(driver, Clear.MAIN, 1, self -> new Clear(self, true), trace).journal());
+            assertEquals("x\na\ny\n",
+                    Missions.run(driver, Clear.MAIN, 1, self -> new Clear(self, true), trace).journal());
             assertEquals(List.of("b", "c"), trace.events(TraceEvent.EventDropped.class).stream()
                     .map(TraceEvent.EventDropped::event).toList());
             // Without clearEvents, c runs last and its break leaves main before "y".
@@ -641,6 +642,79 @@ class ReactionRulesTest {
                     Missions.run(driver, RestartFromReaction.MAIN, 1, RestartFromReaction::new, trace).journal());
             assertEquals(List.of("inner:RESTART", "inner:RESTART", "inner:BREAK", "outer:BREAK", "main:END"),
                     trace.events(TraceEvent.Left.class).stream().map(e -> e.block() + ":" + e.cause()).toList());
+        }
+    }
+
+    /**
+     * <pre>
+     * asynchronous entry main (true) {
+     *   local event again;
+     *   local int rounds = 0;
+     *   asynchronous entry work (rounds &lt; 2) {
+     *     rounds++;
+     *     emit(again);
+     *     .logln("never");
+     *     react (again) { reelect; }
+     *   }
+     *   .logln("rounds " + rounds);
+     * }
+     * </pre>
+     */
+    static final class ReelectFromReaction extends CompactProgram {
+        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
+        static final Event AGAIN = MAIN.declareLocalEvent("again");
+        static final EntryDefinition WORK = MAIN.child("work", Mode.ASYNCHRONOUS);
+        static final Reaction WORK_AGAIN = WORK.react(AGAIN);
+
+        private int rounds;
+
+        ReelectFromReaction(TestAgent self) {
+            super(self);
+        }
+
+        @Override
+        protected int reactionPc(Reaction reaction) {
+            return 20;
+        }
+
+        @Override
+        protected void resume(AgentContext ctx) {
+            while (true) {
+                switch (pc) {
+                    case 0: if (!arrive(ctx, MAIN, true, 1, 10)) return; continue;
+                    case 1: rounds = 0; pc = 2; continue;
+                    case 2: if (!arrive(ctx, WORK, rounds < 2, 3, 7)) return; continue;
+                    case 3: rounds++; if (!step(ctx, 4)) return; continue;
+                    case 4: ctx.emit(AGAIN); if (!step(ctx, 5)) return; continue;
+                    case 5: self.logln("never"); if (!step(ctx, 6)) return; continue;
+                    case 6: if (!leave(ctx, WORK, 7)) return; continue;
+                    case 7: if (!endOf(ctx, WORK.sequence(), 8)) return; continue;
+                    case 8: self.logln("rounds " + rounds); if (!step(ctx, 9)) return; continue;
+                    case 9: if (!leave(ctx, MAIN, 10)) return; continue;
+                    case 10: if (!endOf(ctx, MAIN.sequence(), 11)) return; continue;
+                    case 11: ctx.finish(); return;
+                    case 20:
+                        // work declares no locals: no reelect flag to set
+                        if (!ctx.endReaction()) return;
+                        ctx.reelect(WORK);
+                        pc = 2;
+                        continue;
+                    default: throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void reelectInAReactionArrivesAtTheReactionsBlockAgain(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            MemoryTrace trace = new MemoryTrace();
+            assertEquals("rounds 2\nrounds 2\n",
+                    Missions.run(driver, ReelectFromReaction.MAIN, 2, ReelectFromReaction::new, trace).journal());
+            assertEquals(4, trace.events(TraceEvent.Left.class).stream()
+                    .filter(e -> e.block().equals("work") && e.cause() == LeaveCause.REELECT).count());
+            assertEquals(4, trace.events(TraceEvent.Entered.class).stream().filter(e -> e.block().equals("work")).count());
         }
     }
 

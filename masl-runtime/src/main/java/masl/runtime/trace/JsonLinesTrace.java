@@ -9,7 +9,8 @@ import java.io.UncheckedIOException;
  * happened, for {@code --trace FILE}: for instance
  * {@code {"nanos":123,"event":"left","agent":2,"block":"work","cause":"reelect"}}. Names are
  * written as JSON strings, escaped; a MASL event's own name goes under {@code "name"}, as in
- * {@code {"nanos":124,"event":"event-reacted","agent":1,"name":"go","block":"main","reaction":"go"}}. Source positions are not known to the runtime yet.
+ * {@code {"nanos":124,"event":"event-reacted","agent":1,"name":"go","block":"main","reaction":"go"}}.
+ * Source positions are not known to the runtime yet.
  */
 public final class JsonLinesTrace implements Trace, Flushable {
 
@@ -65,7 +66,8 @@ public final class JsonLinesTrace implements Trace, Flushable {
         }
         if (event instanceof TraceEvent.EventReacted e) {
             return head(e.nanos(), "event-reacted") + ",\"agent\":" + e.agent() + ",\"name\":" + string(e.event())
-                    + ",\"block\":" + string(e.block()) + ",\"reaction\":" + string(e.byDefault() ? "default" : e.event());
+                    + ",\"block\":" + string(e.block())
+                    + ",\"reaction\":" + string(e.byDefault() ? "default" : e.event());
         }
         TraceEvent.EventDropped e = (TraceEvent.EventDropped) event;
         return head(e.nanos(), "event-dropped") + ",\"agent\":" + e.agent() + ",\"name\":" + string(e.event());

@@ -35,17 +35,19 @@ class JsonLinesTraceTest {
         StringWriter out = new StringWriter();
         JsonLinesTrace trace = new JsonLinesTrace(out);
         trace.record(new TraceEvent.EventEmitted(1, 0, "go", "main", "now \"quoted\"", 4));
-        trace.record(new TraceEvent.EventEmitted(2, 3, "uncaught_exception", null, "java.lang.ArithmeticException", 1));
+        trace.record(new TraceEvent.EventEmitted(2, 3, "uncaught_exception", null, "java.lang.NullPointerException", 1));
         trace.record(new TraceEvent.EventReacted(3, 1, "go", "main", false));
         trace.record(new TraceEvent.EventReacted(4, 2, "go", "work", true));
         trace.record(new TraceEvent.EventDropped(5, 0, "go"));
         assertEquals(String.join("\n",
                 "{\"nanos\":1,\"event\":\"event-emitted\",\"agent\":0,\"name\":\"go\",\"block\":\"main\","
                         + "\"message\":\"now \\\"quoted\\\"\",\"receivers\":4}",
-                "{\"nanos\":2,\"event\":\"event-emitted\",\"agent\":3,\"name\":\"uncaught_exception\",\"block\":null,"
-                        + "\"message\":\"java.lang.ArithmeticException\",\"receivers\":1}",
-                "{\"nanos\":3,\"event\":\"event-reacted\",\"agent\":1,\"name\":\"go\",\"block\":\"main\",\"reaction\":\"go\"}",
-                "{\"nanos\":4,\"event\":\"event-reacted\",\"agent\":2,\"name\":\"go\",\"block\":\"work\",\"reaction\":\"default\"}",
+                "{\"nanos\":2,\"event\":\"event-emitted\",\"agent\":3,\"name\":\"uncaught_exception\","
+                        + "\"block\":null,\"message\":\"java.lang.NullPointerException\",\"receivers\":1}",
+                "{\"nanos\":3,\"event\":\"event-reacted\",\"agent\":1,\"name\":\"go\",\"block\":\"main\","
+                        + "\"reaction\":\"go\"}",
+                "{\"nanos\":4,\"event\":\"event-reacted\",\"agent\":2,\"name\":\"go\",\"block\":\"work\","
+                        + "\"reaction\":\"default\"}",
                 "{\"nanos\":5,\"event\":\"event-dropped\",\"agent\":0,\"name\":\"go\"}") + "\n", out.toString());
     }
 }

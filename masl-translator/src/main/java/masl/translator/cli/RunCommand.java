@@ -70,7 +70,7 @@ final class RunCommand {
         }
         Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
         try {
-            return report(runStoppable(builder.build(), timeout), line.seed, new MaslLines(translation));
+            return report(runStoppable(builder.build(), timeout), line.seed);
         } finally {
             out.flush();
             closeTrace(trace, line.traceFile);
@@ -97,7 +97,7 @@ final class RunCommand {
         }
     }
 
-    private int report(MissionOutcome outcome, Long seed, MaslLines lines) {
+    private int report(MissionOutcome outcome, Long seed) {
         if (outcome.completed()) {
             return Masl.OK;
         }
@@ -110,11 +110,11 @@ final class RunCommand {
         err.println("masl: the mission " + what);
         outcome.failure().ifPresent(failure -> {
             for (Throwable cause = failure; cause != null; cause = cause.getCause()) {
-                err.println("  " + (cause == failure ? "" : "caused by ") + lines.annotate(cause.toString()));
+                err.println("  " + (cause == failure ? "" : "caused by ") + cause);
             }
         });
         if (!outcome.report().isEmpty()) {
-            err.println(lines.annotate(outcome.report().stripTrailing()));
+            err.println(outcome.report().stripTrailing());
         }
         if (seed != null) {
             err.println("masl: the same run again: --seed " + seed);

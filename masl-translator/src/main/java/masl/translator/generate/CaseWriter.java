@@ -146,6 +146,26 @@ final class CaseWriter {
         }
     }
 
+    /**
+     * The {@code sourceAt} method of the program: each commented case's number and its comment (the
+     * MASL line), for the runtime's reports. Call after {@link #render}, which numbers the cases.
+     */
+    List<String> sourceAtMethod() {
+        List<String> out = new ArrayList<>();
+        out.add("    @Override");
+        out.add("    protected String sourceAt(int pc) {");
+        out.add("        return switch (pc) {");
+        for (Case c : cases) {
+            if (c.comment != null) {
+                out.add("            case " + c.number + " -> " + JavaText.quote(c.comment) + ";");
+            }
+        }
+        out.add("            default -> null;");
+        out.add("        };");
+        out.add("    }");
+        return out;
+    }
+
     /** The cases, each line indented by {@code margin}. */
     List<String> render(String margin) {
         for (int i = 0; i < cases.size(); i++) {

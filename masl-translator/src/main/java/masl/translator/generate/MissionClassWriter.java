@@ -12,6 +12,10 @@ import masl.translator.analysis.AnalyzedProgram;
  */
 final class MissionClassWriter {
 
+    private static final int NAMES_PER_LINE = 90;
+    /** Names of up to 3 bytes each in modified UTF-8: 20,000 characters stay within one constant. */
+    private static final int NAMES_PER_CONSTANT = 20_000;
+
     private MissionClassWriter() {
     }
 
@@ -23,6 +27,7 @@ final class MissionClassWriter {
         List<String> out = new ArrayList<>();
         out.add("package " + packageName + ";");
         out.add("");
+        out.add("import java.util.ArrayList;");
         out.add("import java.util.List;");
         out.add("import masl.runtime.AgentImplementation;");
         out.add("import masl.runtime.ESequence;");
@@ -46,15 +51,19 @@ final class MissionClassWriter {
             out.add("");
         }
         List<AgentDecl> agents = program.agents();
-        out.add("    private static final List<AgentSpec> AGENTS = List.of(");
-        for (int i = 0; i < agents.size(); i++) {
-            AgentDecl agent = agents.get(i);
-            out.add("            new AgentSpec(" + JavaText.quote(agent.name()) + ", "
-                    + JavaText.quote(agent.instantiatedType().descriptor().fullClassName()) + ")"
-                    + (i + 1 < agents.size() ? "," : ");"));
-        }
-        if (agents.isEmpty()) {
-            out.set(out.size() - 1, "    private static final List<AgentSpec> AGENTS = List.of();");
+        List<List<AgentDecl>> runs = runsOfOneType(agents);
+        List<List<AgentDecl>> groups = new ArrayList<>();
+        runs.forEach(run -> groups.addAll(withinOneConstant(run)));
+        out.add("    /** The agents in declaration order (proxy ids 0, 1, 2, ...): implementation class, then names. */");
+        out.add("    private static final List<AgentSpec> AGENTS = specs(" + (groups.isEmpty() ? ");" : ""));
+        for (int g = 0; g < groups.size(); g++) {
+            List<AgentDecl> group = groups.get(g);
+            List<String> literals = nameLiterals(group);
+            out.add("            " + JavaText.quote(group.get(0).instantiatedType().descriptor().fullClassName()) + ",");
+            for (int l = 0; l < literals.size(); l++) {
+                out.add("            " + (l == 0 ? "" : "+ ") + literals.get(l)
+                        + (l + 1 < literals.size() ? "" : g + 1 < groups.size() ? "," : ");"));
+            }
         }
         out.add("");
         out.add("    @Override");
@@ -67,14 +76,35 @@ final class MissionClassWriter {
         if (program.root() != null) {
             out.add("        builder.main(" + structure.block(program.root()) + ");");
         }
-        for (int i = 0; i < agents.size(); i++) {
-            AgentDecl agent = agents.get(i);
+        int first = 0;
+        for (List<AgentDecl> run : runs) {
+            AgentDecl agent = run.get(0);
             String implementation = agent.instantiatedType().descriptor().fullClassName();
             String programClass = programClasses.get(agent.instantiatedType().name());
-            out.add("        builder.agent(" + JavaText.quote(agent.name()) + ", (" + implementation
-                    + ") create(implementations, AGENTS.get(" + i + ")), " + programClass + "::new);");
+            if (run.size() == 1) {
+                out.add("        builder.agent(" + JavaText.quote(agent.name()) + ", (" + implementation
+                        + ") create(implementations, AGENTS.get(" + first + ")), " + programClass + "::new);");
+            } else {
+                out.add("        // " + agent.name() + " ... " + run.get(run.size() - 1).name() + ": " + run.size() + " agents of type "
+                        + agent.instantiatedType().name());
+                out.add("        for (AgentSpec agent : AGENTS.subList(" + first + ", " + (first + run.size()) + ")) {");
+                out.add("            builder.agent(agent.name(), (" + implementation + ") create(implementations, agent), "
+                        + programClass + "::new);");
+                out.add("        }");
+            }
+            first += run.size();
         }
         out.add("        return builder;");
+        out.add("    }");
+        out.add("");
+        out.add("    private static List<AgentSpec> specs(String... classThenNames) {");
+        out.add("        List<AgentSpec> specs = new ArrayList<>();");
+        out.add("        for (int i = 0; i < classThenNames.length; i += 2) {");
+        out.add("            for (String name : classThenNames[i + 1].split(\",\")) {");
+        out.add("                specs.add(new AgentSpec(name, classThenNames[i]));");
+        out.add("            }");
+        out.add("        }");
+        out.add("        return List.copyOf(specs);");
         out.add("    }");
         out.add("");
         out.add("    private static AgentImplementation create(ImplementationFactory implementations, AgentSpec agent) {");
@@ -87,5 +117,58 @@ final class MissionClassWriter {
         out.add("    }");
         out.add("}");
         return String.join("\n", out) + "\n";
+    }
+
+    /** Consecutive agents of one instantiated type: one loop each in the generated code. */
+    private static List<List<AgentDecl>> runsOfOneType(List<AgentDecl> agents) {
+        List<List<AgentDecl>> runs = new ArrayList<>();
+        for (AgentDecl agent : agents) {
+            List<AgentDecl> last = runs.isEmpty() ? null : runs.get(runs.size() - 1);
+            if (last != null && last.get(0).instantiatedType() == agent.instantiatedType()) {
+                last.add(agent);
+            } else {
+                runs.add(new ArrayList<>(List.of(agent)));
+            }
+        }
+        return runs;
+    }
+
+    /**
+     * A run cut where its names would exceed {@value #NAMES_PER_CONSTANT} characters: a Java string
+     * constant holds at most 65,535 bytes.
+     */
+    private static List<List<AgentDecl>> withinOneConstant(List<AgentDecl> run) {
+        List<List<AgentDecl>> groups = new ArrayList<>();
+        List<AgentDecl> group = new ArrayList<>();
+        int length = 0;
+        for (AgentDecl agent : run) {
+            if (length + agent.name().length() + 1 > NAMES_PER_CONSTANT && !group.isEmpty()) {
+                groups.add(group);
+                group = new ArrayList<>();
+                length = 0;
+            }
+            group.add(agent);
+            length += agent.name().length() + 1;
+        }
+        groups.add(group);
+        return groups;
+    }
+
+    /**
+     * The names of a group as comma-separated string literals of about {@value #NAMES_PER_LINE}
+     * characters, one per line, concatenated by javac into one constant: a team of ten thousand
+     * agents written one call per agent would exceed the 64 KB limit of a Java method.
+     */
+    private static List<String> nameLiterals(List<AgentDecl> group) {
+        List<String> literals = new ArrayList<>();
+        StringBuilder line = new StringBuilder();
+        for (int i = 0; i < group.size(); i++) {
+            line.append(group.get(i).name()).append(i + 1 < group.size() ? "," : "");
+            if (line.length() >= NAMES_PER_LINE || i + 1 == group.size()) {
+                literals.add(JavaText.quote(line.toString()));
+                line.setLength(0);
+            }
+        }
+        return literals;
     }
 }

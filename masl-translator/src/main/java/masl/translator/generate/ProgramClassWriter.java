@@ -37,7 +37,8 @@ final class ProgramClassWriter {
         ExpressionWriter expressions = new ExpressionWriter(program, structure, type, unsupported);
         StatementWriter statements = new StatementWriter(program, structure, expressions, unsupported, file,
                 keptOnReelect);
-        List<String> cases = statements.program().render("                ");
+        CaseWriter resumptionPoints = statements.program();
+        List<String> cases = resumptionPoints.render("                ");
         String implementation = type.descriptor().fullClassName();
 
         List<String> out = new ArrayList<>();
@@ -86,6 +87,8 @@ final class ProgramClassWriter {
         out.add("            }");
         out.add("        }");
         out.add("    }");
+        out.add("");
+        out.addAll(resumptionPoints.sourceAtMethod());
         if (expressions.usesDynamicMembers()) {
             out.add("");
             out.addAll(DynamicMembers.helpers());

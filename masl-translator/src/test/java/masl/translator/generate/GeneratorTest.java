@@ -13,7 +13,10 @@ import java.util.List;
 import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import java.util.stream.Collectors;
+import java.util.stream.IntStream;
 import java.util.stream.Stream;
+import masl.runtime.MissionProgram;
 import masl.runtime.descriptor.AgentPath;
 import masl.translator.MissionLoader;
 import masl.translator.Translation;
@@ -77,9 +80,25 @@ class GeneratorTest {
         int shared = mission.indexOf("static final SharedDeclaration<Integer> MAIN_N = MAIN.declareShared(\"n\", 0);");
         int report = mission.indexOf("static final EntryDefinition REPORT = MAIN.child(\"report\", Mode.SCALAR);");
         assertTrue(main >= 0 && main < shared && shared < report, mission);
-        assertTrue(mission.contains("new AgentSpec(\"e\", \"masl.agents.Default\"));"), mission);
-        assertTrue(mission.contains("builder.agent(\"a\", (masl.agents.Default) create(implementations, AGENTS.get(0)),"
-                + " DefaultProgram::new);"), mission);
+        assertTrue(mission.contains("AGENTS = specs(\n            \"masl.agents.Default\",\n            \"a,b,c,d,e\");"), mission);
+        assertTrue(mission.contains("for (AgentSpec agent : AGENTS.subList(0, 5)) {\n"
+                + "            builder.agent(agent.name(), (masl.agents.Default) create(implementations, agent), DefaultProgram::new);"),
+                mission);
+    }
+
+    @Test
+    void tenThousandAgentsFitTheLimitsOfJavaMethodsAndConstants() {
+        String names = IntStream.range(0, 10_000).mapToObj(i -> "agent" + i)
+                .collect(Collectors.joining(", "));
+        Translation translation = Programs.translate("team.masl", "import Default.xml as Default;\n"
+                + "Default lead = newAgent(Default);\n"
+                + "Default " + names + " = newAgent(Default);\n"
+                + "scalar entry main (true) { .logln(\"hi\"); }\n");
+        MissionProgram mission = MissionLoader.load(translation, AgentPath.parse("")).program();
+
+        assertEquals(10_001, mission.agents().size());
+        assertEquals(new MissionProgram.AgentSpec("lead", "masl.agents.Default"), mission.agents().get(0));
+        assertEquals(new MissionProgram.AgentSpec("agent9999", "masl.agents.Default"), mission.agents().get(10_000));
     }
 
     @Test
