@@ -11,8 +11,13 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Comparator;
+import java.util.List;
 import java.util.concurrent.TimeUnit;
 import javax.imageio.ImageIO;
+import masl.runtime.trace.timeline.Timeline;
+import masl.runtime.trace.timeline.TimelineHtml;
+import masl.runtime.trace.timeline.TraceReader;
 import masl.translator.cli.Masl;
 import org.junit.jupiter.api.Test;
 
@@ -46,6 +51,34 @@ class TimelineInBrowserTest {
         assertTrue(pixelsOf(image, EVENS_ORANGE) > 500, "the agents in block evens are drawn");
         assertTrue(pixelsOf(image, END_GREEN) > 300, "the agent running scalar block end is drawn");
         assertTrue(pixelsOf(image, TRIP_RED) > 10, "barrier trips are drawn (one-pixel lines)");
+    }
+
+    @Test
+    void theTimelineOfExampleE6ShowsThreeSeparateTurns() throws Exception {
+        Path out = Files.createDirectories(Path.of("build/timeline"));
+        Path trace = out.resolve("e6.jsonl");
+        Path page = out.resolve("e6.html");
+        Path screenshot = out.resolve("e6.png");
+        Files.deleteIfExists(screenshot);
+
+        assertEquals(0, masl("run", "src/test/resources/examples/e6_one_at_a_time.masl", "--seed", "5", "--trace", trace.toString()));
+        assertEquals(0, masl("timeline", trace.toString(), "-o", page.toString()));
+        chromiumScreenshot(page, screenshot);
+
+        Timeline timeline;
+        try (var text = Files.newBufferedReader(trace)) {
+            timeline = Timeline.of(TraceReader.read(trace.toString(), text));
+        }
+        List<Timeline.Span> turns = timeline.lanes().values().stream().flatMap(List::stream)
+                .filter(span -> span.block().equals("turn") && span.state() == Timeline.State.RUNNING)
+                .sorted(Comparator.comparingLong(Timeline.Span::start))
+                .toList();
+        assertEquals(3, turns.size(), turns::toString);
+        for (int i = 1; i < turns.size(); i++) {
+            assertTrue(turns.get(i - 1).end() <= turns.get(i).start(), "turns overlap: " + turns);
+        }
+        int turnColour = Integer.parseInt(new TimelineHtml(timeline, "").color("turn").substring(1), 16);
+        assertTrue(pixelsOf(ImageIO.read(screenshot.toFile()), turnColour) > 3 * 50, "three turns are drawn");
     }
 
     private static int masl(String... args) {

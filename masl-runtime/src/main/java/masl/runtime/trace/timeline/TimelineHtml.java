@@ -187,7 +187,8 @@ public final class TimelineHtml {
         return LABEL_WIDTH + PLOT_WIDTH * (time - timeline.start()) / span;
     }
 
-    private String color(String block) {
+    /** The colour of {@code block}'s spans, as {@code #rrggbb}. */
+    public String color(String block) {
         int index = blocks.indexOf(block);
         return PALETTE[Math.floorMod(index, PALETTE.length)];
     }
