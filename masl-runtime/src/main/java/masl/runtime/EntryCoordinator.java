@@ -74,7 +74,11 @@ final class EntryCoordinator {
         begin();
         try {
             Wave parentWave = parentWaveOf(agent, entry);
-            parentWave.markReached(entry.definition().sequence(), agent);
+            ESequence sequence = entry.definition().sequence();
+            // §6.3: reached = entered one of its blocks, or tested and skipped them all
+            if (test || sequence.endsWith(entry.definition())) {
+                parentWave.markReached(sequence, agent);
+            }
             agent.lastLeftSynchronous = null;
             Arrival arrival;
             if (!test) {
