@@ -54,6 +54,13 @@ public final class ESequence {
         return block;
     }
 
+    /** Whether {@code block} is the last block of this e-sequence, after which it ends. */
+    boolean endsWith(EntryDefinition block) {
+        synchronized (blocks) {
+            return blocks.get(blocks.size() - 1) == block;
+        }
+    }
+
     void addMain(EntryDefinition main) {
         synchronized (blocks) {
             blocks.add(main);

@@ -27,11 +27,8 @@ public final class Entry {
     /** Agents held by the entry barrier, in arrival order (synchronous blocks only). */
     final ArrayDeque<Agent> waitingIn = new ArrayDeque<>();
     LockPolicy policy;
-    /**
-     * The members (held by the entry barrier, or in the current wave), republished after each
-     * change so that emitting a shared event reads them without the lock (§8).
-     */
-    private volatile Agent[] perceivers = new Agent[0];
+    /** The members (held by the entry barrier, or in the current wave), for shared events (§8). */
+    private final Perceivers<Agent> perceivers = new Perceivers<>();
 
     Entry(EntryDefinition definition, Entry parent, EntryCoordinator coordinator) {
         this.definition = definition;
@@ -124,24 +121,19 @@ public final class Entry {
         coordinator.release(this, n);
     }
 
-    /** The members as of the last change: the receivers of a shared event of this block (§8). */
+    /** The members as of the last change: the receivers of a shared event of this block (§8); lock-free. */
     Agent[] perceivers() {
-        return perceivers;
+        return perceivers.snapshot(Agent[]::new);
     }
 
-    /** Republishes the members; called under the coordinator's lock after each change of them. */
-    void membersChanged() {
-        Agent[] members = new Agent[waitingIn.size() + (currentWave == null ? 0 : currentWave.members.size())];
-        int i = 0;
-        for (Agent agent : waitingIn) {
-            members[i++] = agent;
-        }
-        if (currentWave != null) {
-            for (Agent agent : currentWave.members) {
-                members[i++] = agent;
-            }
-        }
-        perceivers = members;
+    /** Records a new member (held by the entry barrier or in the wave); under the coordinator's lock. */
+    void memberJoined(Agent agent) {
+        perceivers.add(agent);
+    }
+
+    /** Records that a member left the block; under the coordinator's lock. */
+    void memberLeft(Agent agent) {
+        perceivers.remove(agent);
     }
 
     SharedVariable<?>[] newSharedVariables(ChangeEpoch changes) {

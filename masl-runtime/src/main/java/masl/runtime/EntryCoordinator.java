@@ -74,7 +74,11 @@ final class EntryCoordinator {
         begin();
         try {
             Wave parentWave = parentWaveOf(agent, entry);
-            parentWave.markReached(entry.definition().sequence(), agent);
+            ESequence sequence = entry.definition().sequence();
+            // §6.3: reached = entered one of its blocks, or tested and skipped them all
+            if (test || sequence.endsWith(entry.definition())) {
+                parentWave.markReached(sequence, agent);
+            }
             agent.lastLeftSynchronous = null;
             Arrival arrival;
             if (!test) {
@@ -224,7 +228,7 @@ final class EntryCoordinator {
     private void join(Agent agent, Entry entry) {
         Wave wave = entry.currentWave != null ? entry.currentWave : startWave(entry);
         wave.members.add(agent);
-        entry.membersChanged();
+        entry.memberJoined(agent);
         agent.memberships.add(new Membership(entry, wave, Membership.Status.ACTIVE));
         trace.record(new TraceEvent.Entered(clock.getAsLong(), agent.id(), entry.name()));
         reconcile(agent);
@@ -234,7 +238,7 @@ final class EntryCoordinator {
     private void holdAtEntry(Agent agent, Entry entry) {
         agent.memberships.add(new Membership(entry, null, Membership.Status.WAITING_IN));
         entry.waitingIn.add(agent);
-        entry.membersChanged();
+        entry.memberJoined(agent);
         trace.record(new TraceEvent.WaitingIn(clock.getAsLong(), agent.id(), entry.name()));
         reconcile(agent);
         if (entry.policy == LockPolicy.FREE) {
@@ -283,7 +287,7 @@ final class EntryCoordinator {
             wave.entry.currentWave = null;
             trace.record(new TraceEvent.WaveEnded(clock.getAsLong(), wave.entry.name(), wave.number));
         }
-        membership.entry.membersChanged();
+        membership.entry.memberLeft(agent);
     }
 
     private Wave startWave(Entry entry) {
@@ -314,13 +318,13 @@ final class EntryCoordinator {
         }
         for (Wave wave : agent.activeIn) {
             if (!waves.contains(wave)) {
-                wave.active--;
+                wave.deactivate(agent);
                 weakenedWaves.add(wave);
             }
         }
         for (Wave wave : waves) {
             if (!agent.activeIn.contains(wave)) {
-                wave.active++;
+                wave.activate(agent);
             }
         }
         for (SynchronisationBarrier barrier : agent.participatesIn) {
@@ -399,20 +403,12 @@ final class EntryCoordinator {
     /**
      * Whether every active member of the parent's current wave has reached the entry's e-sequence
      * during that wave (members that left are no longer in it; held ones are not active). For
-     * {@code main}, the parent wave is the mission's: every agent must have tested it.
+     * {@code main}, the parent wave is the mission's: every agent must have tested it. O(1): the
+     * wave counts its active members that reached each e-sequence.
      */
     private boolean sequenceReachedByAll(Entry entry) {
         Wave parentWave = entry.parent == null ? missionWave : entry.parent.currentWave;
-        if (parentWave == null) {
-            return false;
-        }
-        ESequence sequence = entry.definition().sequence();
-        for (Agent member : parentWave.members) {
-            if (member.activeIn.contains(parentWave) && !parentWave.hasReached(sequence, member)) {
-                return false;
-            }
-        }
-        return true;
+        return parentWave != null && parentWave.reachedByAllActive(entry.definition().sequence());
     }
 
     // ---- helpers -------------------------------------------------------------------------------

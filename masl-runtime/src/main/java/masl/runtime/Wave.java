@@ -22,12 +22,15 @@ final class Wave {
     final int number;
     /** Members in arrival order: active ones, waiting-out ones, those held inside children. */
     final Set<Agent> members = new LinkedHashSet<>();
-    /** Members not held by any entry or exit barrier: the active count of §6.4/§6.7. */
+    /**
+     * Members not held by any entry or exit barrier: the active count of §6.4/§6.7. Changed only
+     * through {@link #activate} and {@link #deactivate}, which keep the reached counts in step.
+     */
     int active;
     /** Members held by the exit barrier, in arrival order (synchronous blocks only). */
     final List<Agent> waitingOut = new ArrayList<>();
     private final Set<Entry> scalarChildrenRun = new HashSet<>();
-    private final Map<ESequence, Set<Agent>> reached = new HashMap<>();
+    private final Map<ESequence, Reached> reached = new HashMap<>();
     private final SharedVariable<?>[] shared;
 
     Wave(Entry entry, int number, SharedVariable<?>[] shared) {
@@ -41,13 +44,43 @@ final class Wave {
         return scalarChildrenRun.add(scalarChild);
     }
 
-    void markReached(ESequence sequence, Agent agent) {
-        reached.computeIfAbsent(sequence, s -> new HashSet<>()).add(agent);
+    /** An agent, active in this wave, counts in it from now on (§6.4). */
+    void activate(Agent agent) {
+        active++;
+        for (Reached sequence : reached.values()) {
+            if (sequence.agents.contains(agent)) {
+                sequence.active++;
+            }
+        }
     }
 
-    boolean hasReached(ESequence sequence, Agent agent) {
-        Set<Agent> agents = reached.get(sequence);
-        return agents != null && agents.contains(agent);
+    /** An agent stops counting as active in this wave: held, or no longer a member. */
+    void deactivate(Agent agent) {
+        active--;
+        for (Reached sequence : reached.values()) {
+            if (sequence.agents.contains(agent)) {
+                sequence.active--;
+            }
+        }
+    }
+
+    /** Records that {@code agent}, active in this wave, reached {@code sequence} during it (§6.3). */
+    void markReached(ESequence sequence, Agent agent) {
+        if (reached.computeIfAbsent(sequence, s -> new Reached()).agents.add(agent)) {
+            reached.get(sequence).active++;
+        }
+    }
+
+    /** Whether every active member has reached {@code sequence} during this wave; O(1). */
+    boolean reachedByAllActive(ESequence sequence) {
+        Reached agents = reached.get(sequence);
+        return (agents == null ? 0 : agents.active) == active;
+    }
+
+    /** The agents that reached one e-sequence during this wave, and how many of them are active in it. */
+    private static final class Reached {
+        final Set<Agent> agents = new HashSet<>();
+        int active;
     }
 
     @SuppressWarnings("unchecked")
