@@ -3,11 +3,16 @@ package masl.runtime;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Queue;
+import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionStage;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Supplier;
+import masl.runtime.descriptor.AgentType;
+import masl.runtime.descriptor.PermeabilityState;
+import masl.runtime.descriptor.PermeabilityState.Requester;
 import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.TraceEvent;
 
@@ -40,6 +45,13 @@ import masl.runtime.trace.TraceEvent;
  * {@code false}; the slice then calls {@code resume} again at once. Each reaction ends with
  * {@link #endReaction()}, which redirects to the next one, or lets the last one apply its ending
  * (§8: the last reaction decides): {@link #resumeInterrupted()}, or a break, restart or reelect.
+ *
+ * <p><b>Invocations and permeability</b> (MASL §9, §11). An external invocation is a
+ * {@link PendingInvocation} in the callee's queue; whoever serves it (the callee at a boundary, or
+ * a serving slice on its behalf) decides at that moment, from the callee's current state and the
+ * requester's relation to it, whether it runs or is denied. While the agent is in
+ * {@code wait(state)} it is <em>attentive</em>: a serving slice runs only the first pending
+ * invocation that state allows, which ends the wait; the others stay queued.
  */
 final class Agent implements AgentContext, AgentTask {
 
@@ -62,7 +74,12 @@ final class Agent implements AgentContext, AgentTask {
     private final EventQueue events = new EventQueue();
     /** The ticket of the agent's latest busy-wait park: an event perceived then wakes it (§5). */
     private volatile long busyWaitTicket;
-    private final Queue<Runnable> invocations = new ConcurrentLinkedQueue<>();
+    private final Queue<PendingInvocation> invocations = new ConcurrentLinkedQueue<>();
+    private final Permeability permeability;
+    /** The ticket of the park of a pending {@code wait(state)}, 0 if none: who zeroes it ends the wait. */
+    private final AtomicLong attentiveTicket = new AtomicLong();
+    /** The state of the pending {@code wait(state)}; read only while {@link #attentiveTicket} is set. */
+    private volatile PermeabilityState attentiveState;
     private volatile boolean finished;
 
     // Confined to the thread running the current slice (successive slices are ordered).
@@ -87,8 +104,10 @@ final class Agent implements AgentContext, AgentTask {
     /** The synchronous block the agent left last, until its next step boundary or arrival. */
     EntryDefinition lastLeftSynchronous;
 
-    Agent(int id, String name, AgentImplementation implementation, AgentProgram program, Mission mission) {
+    Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
+            Mission mission) {
         this.id = id;
+        this.permeability = new Permeability(type);
         this.name = name;
         this.implementation = implementation;
         this.program = program;
@@ -167,7 +186,7 @@ final class Agent implements AgentContext, AgentTask {
 
     /** Schedules a serving slice if invocations wait and the agent is blocked or done. */
     private void serveIfPending() {
-        while (!invocations.isEmpty()) {
+        while (hasServable()) {
             int current = state.get();
             if (current == PARKED) {
                 mission.countSchedule();
@@ -476,16 +495,135 @@ final class Agent implements AgentContext, AgentTask {
         finished = true;
     }
 
+    @Override
+    public <T> CompletableFuture<T> invoke(AgentImplementation callee, String primitive, T defaultValue,
+            Callable<T> call) {
+        Agent target = mission.agentOf(callee);
+        if (target == this) {
+            return CompletableFuture.completedFuture(invokeSelf(primitive, defaultValue, call));
+        }
+        CompletableFuture<T> result = new CompletableFuture<>();
+        mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive));
+        target.submitInvocation(new PendingInvocation(this, primitive,
+                () -> result.complete(runFor(this, call, defaultValue)),
+                () -> {
+                    raise(Event.TIMEOUT, primitive);
+                    result.complete(defaultValue);
+                }));
+        return result;
+    }
+
+    @Override
+    public <T> T invokeSelf(String primitive, T defaultValue, Callable<T> call) {
+        PermeabilityState state = permeability.current();
+        if (!Permeability.allows(state, permeability.primitiveId(primitive), Requester.SELF,
+                PermeabilityState.INVOKE)) {
+            mission.trace().record(new TraceEvent.InvocationDenied(now(), id, id, primitive, state.name()));
+            raise(Event.TIMEOUT, primitive);
+            return defaultValue;
+        }
+        return runFor(this, call, defaultValue);
+    }
+
+    /** Runs a primitive for {@code requester}: an exception becomes its {@code uncaught_exception} (§9). */
+    private static <T> T runFor(Agent requester, Callable<T> call, T defaultValue) {
+        try {
+            return call.call();
+        } catch (Exception thrown) {
+            requester.raise(Event.UNCAUGHT_EXCEPTION, thrown.getClass().getName());
+            return defaultValue;
+        }
+    }
+
+    @Override
+    public <T> T readAttribute(AgentImplementation owner, String attribute, T defaultValue, Supplier<T> read) {
+        if (!mission.agentOf(owner).permitsAttribute(this, attribute, PermeabilityState.READ)) {
+            raise(Event.FORBIDDEN_ACCESS, attribute);
+            return defaultValue;
+        }
+        return read.get();
+    }
+
+    @Override
+    public boolean writeAttribute(AgentImplementation owner, String attribute, Runnable write) {
+        if (!mission.agentOf(owner).permitsAttribute(this, attribute, PermeabilityState.WRITE)) {
+            raise(Event.FORBIDDEN_ACCESS, attribute);
+            return false;
+        }
+        write.run();
+        return true;
+    }
+
+    private boolean permitsAttribute(Agent requester, String attribute, int permission) {
+        return Permeability.allows(permeability.current(), permeability.attributeId(attribute),
+                relationOf(requester, permeability.isStaticAttribute(attribute)), permission);
+    }
+
+    @Override
+    public void setAcceptState(String name) {
+        PermeabilityState state = permeability.find(name).orElse(null);
+        if (state == null) {
+            uncaughtException(new IllegalArgumentException("no permeability state " + name));
+            return;
+        }
+        permeability.set(state);
+        mission.changes().advance();
+    }
+
+    @Override
+    public String getAcceptState() {
+        return permeability.currentName();
+    }
+
+    @Override
+    public String getAcceptState(AgentImplementation agent) {
+        return mission.agentOf(agent).permeability.currentName();
+    }
+
+    @Override
+    public boolean waitFor(String state) {
+        return waitFor(state, -1);
+    }
+
+    @Override
+    public boolean waitFor(String state, long ms) {
+        progress++;
+        PermeabilityState attentiveTo = permeability.find(state).orElse(null);
+        if (attentiveTo == null) {
+            uncaughtException(new IllegalArgumentException("no permeability state " + state));
+            return yieldIfSliceUsed();
+        }
+        PendingInvocation allowed = firstAllowedBy(attentiveTo);
+        if (allowed != null) {
+            invocations.remove(allowed);
+            serve(allowed);
+            return yieldIfSliceUsed();
+        }
+        long ticket = prepareToPark();
+        attentiveState = attentiveTo;
+        attentiveTicket.set(ticket);
+        if (ms >= 0) {
+            mission.outsideWakeUpStarted();
+            mission.scheduler().scheduleAfter(ms, () -> {
+                if (attentiveTicket.compareAndSet(ticket, 0)) {
+                    unpark(ticket);
+                }
+                mission.outsideWakeUpEnded();
+            });
+        }
+        // The slice ends PARKED and then serves what the state allows (serveIfPending).
+        return false;
+    }
+
     // ---- runtime side --------------------------------------------------------------------------
 
     /**
-     * Queues an external invocation of one of this agent's primitives (MASL §9): the hook the
-     * invocations issue builds on. A running agent runs it at its next step boundary or loop
+     * Queues an external invocation of one of this agent's primitives (MASL §9). A running agent runs it at its next step boundary or loop
      * iteration; a blocked or finished one has it run on its behalf at once (§5). An invocation
      * runs the callee's primitive only: served on behalf of a parked agent, it must not use the
      * agent's {@link AgentContext}, whose memberships other agents may be changing meanwhile.
      */
-    void submitInvocation(Runnable invocation) {
+    void submitInvocation(PendingInvocation invocation) {
         invocations.add(invocation);
         serveIfPending();
         mission.changes().advance();
@@ -587,11 +725,92 @@ final class Agent implements AgentContext, AgentTask {
         throw new IllegalStateException(describe() + " emits " + event + " outside that block");
     }
 
+    /**
+     * Step 2 of a boundary, or a serving slice (§5): every pending invocation in order, each run or
+     * denied by the current state; while attentive (in {@code wait(state)}), only the first one that
+     * state allows, which then ends the wait.
+     */
     private void serveInvocations() {
-        Runnable invocation;
-        while ((invocation = invocations.poll()) != null) {
-            invocation.run();
+        long attentive = attentiveTicket.get();
+        if (attentive != 0) {
+            serveAttentively(attentive);
+            return;
         }
+        PendingInvocation invocation;
+        while ((invocation = invocations.poll()) != null) {
+            PermeabilityState state = permeability.current();
+            if (permits(state, invocation)) {
+                serve(invocation);
+            } else {
+                mission.trace().record(new TraceEvent.InvocationDenied(now(), id, invocation.requesterId(),
+                        invocation.primitive(), permeability.currentName()));
+                invocation.deny();
+            }
+        }
+    }
+
+    private void serveAttentively(long ticket) {
+        PendingInvocation allowed = firstAllowedBy(attentiveState);
+        // The timeout of the wait may have won: then the invocation waits for the next boundary.
+        if (allowed == null || !attentiveTicket.compareAndSet(ticket, 0)) {
+            return;
+        }
+        invocations.remove(allowed);
+        serve(allowed);
+        unpark(ticket);
+    }
+
+    private void serve(PendingInvocation invocation) {
+        mission.trace().record(new TraceEvent.InvocationServed(now(), id, invocation.requesterId(),
+                invocation.primitive()));
+        invocation.run();
+    }
+
+    /** Whether a serving slice has something to run: any pending invocation, or while attentive one it allows. */
+    private boolean hasServable() {
+        if (invocations.isEmpty()) {
+            return false;
+        }
+        return attentiveTicket.get() == 0 || firstAllowedBy(attentiveState) != null;
+    }
+
+    private PendingInvocation firstAllowedBy(PermeabilityState state) {
+        for (PendingInvocation invocation : invocations) {
+            if (permits(state, invocation)) {
+                return invocation;
+            }
+        }
+        return null;
+    }
+
+    /** Whether {@code state} of this agent lets the invocation run, its requester's relation decided now (§11). */
+    private boolean permits(PermeabilityState state, PendingInvocation invocation) {
+        String primitive = invocation.primitive();
+        if (primitive == null) {
+            return true;
+        }
+        return Permeability.allows(state, permeability.primitiveId(primitive),
+                relationOf(invocation.requester(), permeability.isStaticPrimitive(primitive)), PermeabilityState.INVOKE);
+    }
+
+    /**
+     * The requester's digit of the rights (§11), decided at the time of the access: u for this agent,
+     * g for an agent whose innermost current block is exactly this agent's, o otherwise. For a static
+     * member, a requester of the same type is filtered by u, another by g or o.
+     */
+    private Requester relationOf(Agent requester, boolean staticMember) {
+        if (requester == this) {
+            return Requester.SELF;
+        }
+        if (requester == null) {
+            return Requester.OTHER;
+        }
+        if (staticMember && requester.permeability.type() == permeability.type()) {
+            return Requester.SELF;
+        }
+        boolean sameBlock = mission.coordinator().query(() -> !memberships.isEmpty()
+                && !requester.memberships.isEmpty() && innermost().entry == requester.innermost().entry);
+        return sameBlock ? Requester.GROUP : Requester.OTHER;
     }
 
     private boolean yieldIfSliceUsed() {

@@ -15,6 +15,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
+import masl.runtime.descriptor.AgentType;
 import masl.runtime.trace.Trace;
 
 /**
@@ -166,7 +167,21 @@ public final class Mission {
      * @throws IndexOutOfBoundsException if no agent has that proxy id
      */
     public void submitInvocation(int proxyId, Runnable invocation) {
-        agents.get(proxyId).submitInvocation(Objects.requireNonNull(invocation, "invocation"));
+        agents.get(proxyId).submitInvocation(PendingInvocation.unfiltered(
+                Objects.requireNonNull(invocation, "invocation")));
+    }
+
+    /**
+     * The agent running {@code implementation}.
+     *
+     * @throws IllegalArgumentException if it runs no agent of this mission
+     */
+    Agent agentOf(AgentImplementation implementation) {
+        int proxyId = implementation.services().proxyId();
+        if (proxyId < 0 || proxyId >= agents.size() || agents.get(proxyId).implementation != implementation) {
+            throw new IllegalArgumentException(implementation + " is no agent of this mission");
+        }
+        return agents.get(proxyId);
     }
 
     /** The mission state of a block of this mission's program. */
@@ -221,12 +236,12 @@ public final class Mission {
     /** Builds a mission: agents in declaration order, the program's {@code main}, and options. */
     public static final class Builder {
 
-        private record AgentDeclaration(String name, AgentImplementation implementation,
+        private record AgentDeclaration(String name, AgentImplementation implementation, AgentType type,
                 Function<AgentImplementation, ? extends AgentProgram> program) {
 
             Agent create(int id, Mission mission) {
                 implementation.bind(mission.new Services(id));
-                return new Agent(id, name, implementation, program.apply(implementation), mission);
+                return new Agent(id, name, implementation, type, program.apply(implementation), mission);
             }
         }
 
@@ -244,12 +259,22 @@ public final class Mission {
          * {@code implementation} is bound to the agent's services, then {@code program} makes the
          * agent's program for it.
          */
-        @SuppressWarnings("unchecked")
         public <T extends AgentImplementation> Builder agent(String name, T implementation,
+                Function<? super T, ? extends AgentProgram> program) {
+            return agent(name, implementation, null, program);
+        }
+
+        /**
+         * Declares the next agent as {@link #agent(String, AgentImplementation, Function)} does, with
+         * its type as loaded from its descriptor: its permeability states apply (MASL §11). An agent
+         * declared without a type allows everything.
+         */
+        @SuppressWarnings("unchecked")
+        public <T extends AgentImplementation> Builder agent(String name, T implementation, AgentType type,
                 Function<? super T, ? extends AgentProgram> program) {
             Objects.requireNonNull(implementation, "implementation");
             Objects.requireNonNull(program, "program");
-            agents.add(new AgentDeclaration(name, implementation,
+            agents.add(new AgentDeclaration(name, implementation, type,
                     impl -> program.apply((T) impl)));
             return this;
         }

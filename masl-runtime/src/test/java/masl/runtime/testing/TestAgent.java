@@ -5,6 +5,9 @@ import masl.runtime.AgentImplementation;
 /** The primitives of {@code Default} the tests need (masl-runtime cannot depend on the agents module). */
 public class TestAgent extends AgentImplementation {
 
+    /** An attribute for the permeability tests (descriptor agents/TestAgent.xml). */
+    public volatile int battery;
+
     public int getProxyID() {
         return services().proxyId();
     }
