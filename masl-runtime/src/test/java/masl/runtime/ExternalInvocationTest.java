@@ -1,0 +1,169 @@
+package masl.runtime;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.StringWriter;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.atomic.AtomicIntegerArray;
+import java.util.concurrent.atomic.AtomicReferenceArray;
+import masl.runtime.testing.CompactProgram;
+import masl.runtime.testing.Driver;
+import masl.runtime.testing.Missions;
+import masl.runtime.testing.TestAgent;
+import masl.runtime.trace.JsonLinesTrace;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+
+/**
+ * External invocations (MASL §5, §9): the caller waits for the result without holding a thread,
+ * the callee serves at its boundaries or, blocked, on its behalf; a primitive's exception becomes
+ * {@code uncaught_exception} in the caller, whose call then gives the default value.
+ */
+@Timeout(120)
+class ExternalInvocationTest {
+
+    static final int ROUNDS = 3;
+
+    /**
+     * Two agents in one synchronous block call each other {@link #ROUNDS} times, each call an
+     * instruction: every call finds the callee awaiting its own call, or at the barrier, and is served.
+     * <pre>
+     * synchronous entry main (true) {
+     *   for (r = 0; r &lt; 3; r++) seen[r] = other.getProxyID();
+     * }
+     * </pre>
+     */
+    static final class Mutual extends CompactProgram {
+        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
+
+        private final AtomicReferenceArray<TestAgent> population;
+        private final AtomicIntegerArray seen;
+        private CompletableFuture<Integer> call;
+        private int round;
+
+        Mutual(TestAgent self, AtomicReferenceArray<TestAgent> population, AtomicIntegerArray seen) {
+            super(self);
+            this.population = population;
+            this.seen = seen;
+            population.set(self.getProxyID(), self);
+        }
+
+        @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
+        protected void resume(AgentContext ctx) {
+            int me = self.getProxyID();
+            while (true) {
+                switch (pc) {
+                    case 0: if (!arrive(ctx, MAIN, true, 1, 4)) return; continue;
+                    case 1:
+                        if (round == ROUNDS) {
+                            pc = 3;
+                            continue;
+                        }
+                        TestAgent other = population.get(1 - me);
+                        call = ctx.invoke(other, "getProxyID", -1, other::getProxyID);
+                        pc = 2;
+                        if (!ctx.await(call)) return;
+                    case 2:
+                        seen.set(me * ROUNDS + round++, call.join());
+                        if (!step(ctx, 1)) return;
+                        continue;
+                    case 3: if (!leave(ctx, MAIN, 4)) return; continue;
+                    case 4: if (!endOf(ctx, MAIN.sequence(), 5)) return; continue;
+                    case 5: ctx.finish(); return;
+                    default: throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void twoAgentsCallingEachOtherInASynchronousBlockNeverDeadlock(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            AtomicIntegerArray seen = new AtomicIntegerArray(2 * ROUNDS);
+            AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(2);
+            StringWriter trace = new StringWriter();
+            Missions.run(driver.newScheduler(), Mutual.MAIN, 2, null, self -> new Mutual(self, population, seen),
+                    new JsonLinesTrace(trace));
+            assertEquals("[1, 1, 1, 0, 0, 0]", seen.toString());
+            assertTrue(trace.toString().contains(
+                    "\"event\":\"invocation-made\",\"requester\":0,\"callee\":1,\"member\":\"getProxyID\""), trace::toString);
+            assertTrue(trace.toString().contains(
+                    "\"event\":\"invocation-served\",\"requester\":1,\"callee\":0,\"member\":\"getProxyID\""), trace::toString);
+        }
+    }
+
+    /**
+     * Agent 0 invokes a primitive of agent 1 that throws; agent 1 is parked at the exit barrier by
+     * then, or not yet there.
+     * <pre>
+     * synchronous entry main (true) {
+     *   if (me == 0) { v = a1.divide(1, 0); .logln("v=" + v); }
+     *   react (uncaught_exception) { .logln(getMessageFromEvent(uncaught_exception)); resume; }
+     * }
+     * </pre>
+     */
+    static final class Throwing extends CompactProgram {
+        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
+        static final Reaction MAIN_REACT = MAIN.react(Event.UNCAUGHT_EXCEPTION);
+
+        private final AtomicReferenceArray<TestAgent> population;
+        private CompletableFuture<Integer> call;
+        private int divisor;
+
+        Throwing(TestAgent self, AtomicReferenceArray<TestAgent> population) {
+            super(self);
+            this.population = population;
+            population.set(self.getProxyID(), self);
+        }
+
+        @Override
+        protected int reactionPc(Reaction reaction) {
+            return reaction == MAIN_REACT ? 9 : super.reactionPc(reaction);
+        }
+
+        @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
+        protected void resume(AgentContext ctx) {
+            while (true) {
+                switch (pc) {
+                    case 0: if (!arrive(ctx, MAIN, true, 1, 5)) return; continue;
+                    case 1:
+                        if (self.getProxyID() != 0) {
+                            pc = 4;
+                            continue;
+                        }
+                        call = ctx.invoke(population.get(1), "divide", 7, () -> 1 / divisor);
+                        pc = 2;
+                        if (!ctx.await(call)) return;
+                    case 2:
+                        self.logln("v=" + call.join());
+                        if (!step(ctx, 4)) return;
+                        continue;
+                    case 4: if (!leave(ctx, MAIN, 5)) return; continue;
+                    case 5: if (!endOf(ctx, MAIN.sequence(), 6)) return; continue;
+                    case 6: ctx.finish(); return;
+                    case 9:
+                        self.logln(ctx.messageOf(Event.UNCAUGHT_EXCEPTION));
+                        if (!resumeAfterReaction(ctx)) return;
+                        continue;
+                    default: throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void aPrimitivesExceptionBecomesUncaughtExceptionInTheCallerWithTheDefaultValue(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(2);
+            String journal = Missions.run(driver, Throwing.MAIN, 2, self -> new Throwing(self, population)).journal();
+            // The value is logged in the instruction of the call, the reaction at its step boundary.
+            assertEquals("v=7\njava.lang.ArithmeticException\n", journal);
+        }
+    }
+}
