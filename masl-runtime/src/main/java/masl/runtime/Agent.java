@@ -80,6 +80,8 @@ final class Agent implements AgentContext, AgentTask {
     private final AtomicLong attentiveTicket = new AtomicLong();
     /** The state of the pending {@code wait(state)}; read only while {@link #attentiveTicket} is set. */
     private volatile PermeabilityState attentiveState;
+    /** Countermeasures armed by this agent's launches, in arming order; confined to its slices. */
+    private final List<Countermeasure> armed = new ArrayList<>();
     private volatile boolean finished;
 
     // Confined to the thread running the current slice (successive slices are ordered).
@@ -348,6 +350,7 @@ final class Agent implements AgentContext, AgentTask {
     @Override
     public boolean leave(EntryDefinition block) {
         requireOutsideReaction("leaving " + block);
+        fireCountermeasures(memberships.size() - 1);
         return mission.coordinator().leaveAtEnd(this, mission.entry(block));
     }
 
@@ -355,6 +358,7 @@ final class Agent implements AgentContext, AgentTask {
     public void breakOut(EntryDefinition outermost) {
         requireNoReactionRunning("break");
         ending = null;
+        fireCountermeasures(depthOf(outermost));
         mission.coordinator().leaveUpTo(this, mission.entry(outermost), LeaveCause.BREAK);
     }
 
@@ -362,6 +366,7 @@ final class Agent implements AgentContext, AgentTask {
     public void reelect(EntryDefinition block) {
         requireNoReactionRunning("reelect");
         ending = null;
+        fireCountermeasures(depthOf(block));
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.REELECT);
     }
 
@@ -369,6 +374,7 @@ final class Agent implements AgentContext, AgentTask {
     public void restart(EntryDefinition block) {
         requireNoReactionRunning("restart");
         ending = null;
+        fireCountermeasures(depthOf(block) + 1);
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.RESTART);
     }
 
@@ -499,6 +505,7 @@ final class Agent implements AgentContext, AgentTask {
     public <T> CompletableFuture<T> invoke(AgentImplementation callee, String primitive, T defaultValue,
             Callable<T> call) {
         Agent target = mission.agentOf(callee);
+        disarm(target, primitive);
         if (target == this) {
             return CompletableFuture.completedFuture(invokeSelf(primitive, defaultValue, call));
         }
@@ -515,14 +522,104 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public <T> T invokeSelf(String primitive, T defaultValue, Callable<T> call) {
-        PermeabilityState state = permeability.current();
-        if (!Permeability.allows(state, permeability.primitiveId(primitive), Requester.SELF,
-                PermeabilityState.INVOKE)) {
-            mission.trace().record(new TraceEvent.InvocationDenied(now(), id, id, primitive, state.name()));
-            raise(Event.TIMEOUT, primitive);
+        disarm(this, primitive);
+        if (!allowsOwn(primitive)) {
             return defaultValue;
         }
         return runFor(this, call, defaultValue);
+    }
+
+    /** Whether the current state lets this agent invoke its own {@code primitive}; if not, the denial's effects (§11). */
+    private boolean allowsOwn(String primitive) {
+        PermeabilityState state = permeability.current();
+        if (Permeability.allows(state, permeability.primitiveId(primitive), Requester.SELF, PermeabilityState.INVOKE)) {
+            return true;
+        }
+        mission.trace().record(new TraceEvent.InvocationDenied(now(), id, id, primitive, state.name()));
+        raise(Event.TIMEOUT, primitive);
+        return false;
+    }
+
+    @Override
+    public <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue,
+            Callable<T> call) {
+        return launch(callee, primitive, defaultValue, call, null, null);
+    }
+
+    @Override
+    public <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue,
+            Callable<T> call, String countermeasure, Callable<?> countermeasureCall) {
+        Agent target = mission.agentOf(callee);
+        disarm(target, primitive);
+        CompletableFuture<T> result = new CompletableFuture<>();
+        Runnable start = () -> mission.runAsynchronously(this, () -> result.complete(runFor(this, call, defaultValue)));
+        if (target == this) {
+            if (allowsOwn(primitive)) {
+                start.run();
+            } else {
+                result.complete(defaultValue);
+            }
+        } else {
+            mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive));
+            target.submitInvocation(new PendingInvocation(this, primitive, start, () -> {
+                raise(Event.TIMEOUT, primitive);
+                result.complete(defaultValue);
+            }));
+        }
+        if (countermeasure != null && !memberships.isEmpty()) {
+            armed.add(new Countermeasure(innermost().entry.definition(), target, countermeasure,
+                    countermeasureCall, result, defaultValue));
+        }
+        return result;
+    }
+
+    @Override
+    public Label newLabel() {
+        return new Label(mission.changes());
+    }
+
+    /** Invoking a countermeasure explicitly disarms it (§9): every armed one of that primitive of {@code target}. */
+    private void disarm(Agent target, String primitive) {
+        if (!armed.isEmpty()) {
+            armed.removeIf(countermeasure -> countermeasure.target() == target
+                    && countermeasure.name().equals(primitive));
+        }
+    }
+
+    /**
+     * The agent is about to leave its blocks from the innermost to depth {@code outermostLeft} (0 is
+     * its outermost block): fires the countermeasures armed for them, innermost block first, the
+     * latest armed first within a block (§9).
+     */
+    private void fireCountermeasures(int outermostLeft) {
+        for (int depth = memberships.size() - 1; depth >= outermostLeft && !armed.isEmpty(); depth--) {
+            EntryDefinition block = memberships.get(depth).entry.definition();
+            for (int i = armed.size() - 1; i >= 0; i--) {
+                Countermeasure countermeasure = armed.get(i);
+                if (countermeasure.block() == block) {
+                    armed.remove(i);
+                    fire(countermeasure);
+                }
+            }
+        }
+    }
+
+    private void fire(Countermeasure countermeasure) {
+        mission.trace().record(new TraceEvent.CountermeasureFired(now(), id, countermeasure.target().id,
+                countermeasure.name(), countermeasure.block().name()));
+        countermeasure.completeLaunch();
+        launch(countermeasure.target().implementation, countermeasure.name(), null, countermeasure.call());
+    }
+
+    /** The depth of {@code block} in the agent's chain of blocks (0: outermost), for leaving up to it. */
+    private int depthOf(EntryDefinition block) {
+        for (int depth = memberships.size() - 1; depth >= 0; depth--) {
+            if (memberships.get(depth).entry.definition() == block) {
+                return depth;
+            }
+        }
+        // Not a member: the coordinator reports the translator bug.
+        return memberships.size();
     }
 
     /** Runs a primitive for {@code requester}: an exception becomes its {@code uncaught_exception} (§9). */

@@ -252,4 +252,33 @@ public interface AgentContext {
      * time have elapsed with no allowed invocation.
      */
     boolean waitFor(String state, long ms);
+
+    // ---- asynchronous primitives, countermeasures and labels (MASL §9, §10) -------------------
+
+    /**
+     * The invocation of an asynchronous primitive ({@code synchronous_call="false"}), internal or
+     * external: returns at once. Internal, it is filtered by permeability now; external, it is
+     * queued and filtered when the callee serves it (§5, §11), as {@link #invoke}. Allowed, its Java
+     * code {@code call} runs on a thread of its own; the future completes with its result, or with
+     * {@code defaultValue} on an exception ({@code uncaught_exception} here) or a denial
+     * ({@code timeout} here). Reading a variable holding it awaits it ({@link #await}).
+     */
+    <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue, Callable<T> call);
+
+    /**
+     * {@link #launch(AgentImplementation, String, Object, Callable)} of a primitive with a
+     * countermeasure (§9): also arms {@code countermeasure} of {@code callee}, whose Java code is
+     * {@code countermeasureCall}, for the agent's innermost block. When the agent leaves that block
+     * in any way ({@link #leave}, {@link #breakOut}, {@link #reelect}, {@link #restart} of an
+     * enclosing block, also from a reaction) while it is armed, the runtime launches it, innermost
+     * blocks first and the latest armed first within a block, before leaving (before an exit
+     * barrier), and completes this launch's future with {@code defaultValue} if it is still
+     * running. Invoking {@code countermeasure} of {@code callee} explicitly ({@link #invoke},
+     * {@link #invokeSelf}, {@code launch}) disarms it.
+     */
+    <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue, Callable<T> call,
+            String countermeasure, Callable<?> countermeasureCall);
+
+    /** A new label ({@code LLabel}: one per member; {@code SLabel}: as the value of a shared variable), §10. */
+    Label newLabel();
 }

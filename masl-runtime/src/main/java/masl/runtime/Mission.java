@@ -9,6 +9,9 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -22,7 +25,8 @@ import masl.runtime.trace.Trace;
  * One run of a MASL program: its agents (proxy ids 0, 1, 2, … in declaration order, each with its
  * implementation bound to its {@link AgentServices} and its program), the state of its e-blocks,
  * its journal and trace, and the scheduler that runs it. The mission ends when every agent's
- * program has finished (MASL §6.5), when a program fails, when no agent can make progress any
+ * program has finished (MASL §6.5) and no asynchronous primitive is still running, when a program
+ * fails, when no agent can make progress any
  * more (deadlock), on timeout or on {@link #stop()}.
  *
  * <pre>{@code
@@ -54,8 +58,16 @@ public final class Mission {
     private volatile boolean stopped;
     /** Transitions of agents to SCHEDULED after their start: the watchdog's sign of life. */
     private final AtomicLong schedules = new AtomicLong();
-    /** Wake-ups promised from outside the agents: sleep timers, futures being awaited. */
+    /** Wake-ups promised from outside the agents: sleep timers, futures being awaited, running primitives. */
     private final AtomicInteger pendingOutsideWakeUps = new AtomicInteger();
+    /** Runs the Java code of asynchronous primitives (MASL §9), which may block for as long as they act. */
+    /** Asynchronous primitives running: the mission completes when they and every program are over. */
+    private final AtomicInteger runningPrimitives = new AtomicInteger();
+    private final ExecutorService primitives = Executors.newCachedThreadPool(runnable -> {
+        Thread thread = new Thread(runnable, "masl-primitive");
+        thread.setDaemon(true);
+        return thread;
+    });
 
     private Mission(Builder builder) {
         scheduler = builder.scheduler != null ? builder.scheduler : new PoolScheduler();
@@ -105,6 +117,7 @@ public final class Mission {
         MissionOutcome.Status status = awaitEnd(timeout);
         String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
         scheduler.shutdown();
+        primitives.shutdownNow();
         journal.flush();
         return new MissionOutcome(status, journal.text(), Optional.ofNullable(failure.get()), report);
     }
@@ -209,6 +222,37 @@ public final class Mission {
         return coordinator;
     }
 
+    /**
+     * Runs the body of an asynchronous primitive launched by {@code requester} on a thread of its
+     * own; until it returns, the deadlock watchdog knows a wake-up may come. An {@code Error} in it
+     * fails the mission; exceptions are the body's to turn into events.
+     */
+    void runAsynchronously(Agent requester, Runnable body) {
+        outsideWakeUpStarted();
+        runningPrimitives.incrementAndGet();
+        try {
+            primitives.execute(() -> {
+                try {
+                    body.run();
+                } catch (Throwable failure) {
+                    agentFailed(requester, failure);
+                } finally {
+                    primitiveEnded();
+                }
+            });
+        } catch (RejectedExecutionException missionEnded) {
+            primitiveEnded();
+        }
+    }
+
+    private void primitiveEnded() {
+        outsideWakeUpEnded();
+        // Decrement, then look at the other count; agentFinished does the converse: the later one sees both at 0.
+        if (runningPrimitives.decrementAndGet() == 0 && running.get() == 0) {
+            ended.countDown();
+        }
+    }
+
     void countSchedule() {
         schedules.incrementAndGet();
     }
@@ -222,7 +266,7 @@ public final class Mission {
     }
 
     void agentFinished(Agent agent) {
-        if (running.decrementAndGet() == 0) {
+        if (running.decrementAndGet() == 0 && runningPrimitives.get() == 0) {
             ended.countDown();
         }
     }

@@ -85,6 +85,10 @@ public final class JsonLinesTrace implements Trace, Flushable {
             return head(e.nanos(), "invocation-served") + ",\"requester\":" + e.requester() + ",\"callee\":"
                     + e.callee() + ",\"member\":" + string(e.member());
         }
+        if (event instanceof TraceEvent.CountermeasureFired e) {
+            return head(e.nanos(), "countermeasure-fired") + ",\"agent\":" + e.agent() + ",\"callee\":"
+                    + e.callee() + ",\"member\":" + string(e.member()) + ",\"block\":" + string(e.block());
+        }
         TraceEvent.InvocationDenied e = (TraceEvent.InvocationDenied) event;
         return head(e.nanos(), "invocation-denied") + ",\"requester\":" + e.requester() + ",\"callee\":"
                 + e.callee() + ",\"member\":" + string(e.member()) + ",\"state\":" + string(e.state());

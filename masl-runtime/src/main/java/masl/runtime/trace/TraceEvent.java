@@ -70,4 +70,11 @@ public sealed interface TraceEvent {
      */
     record InvocationDenied(long nanos, int callee, int requester, String member, String state)
             implements TraceEvent { }
+
+    /**
+     * {@code agent} left {@code block} while countermeasure {@code member} of agent {@code callee} was
+     * armed there: the runtime launches it (§9). Recorded in firing order, innermost block first.
+     */
+    record CountermeasureFired(long nanos, int agent, int callee, String member, String block)
+            implements TraceEvent { }
 }
