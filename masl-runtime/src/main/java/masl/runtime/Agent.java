@@ -551,6 +551,16 @@ final class Agent implements AgentContext, AgentTask {
             Callable<T> call, String countermeasure, Callable<?> countermeasureCall) {
         Agent target = mission.agentOf(callee);
         disarm(target, primitive);
+        CompletableFuture<T> result = start(target, primitive, defaultValue, call);
+        if (countermeasure != null && !memberships.isEmpty()) {
+            armed.add(new Countermeasure(innermost().entry.definition(), target, countermeasure,
+                    countermeasureCall, result, defaultValue));
+        }
+        return result;
+    }
+
+    /** Launches an asynchronous primitive of {@code target}, filtered by permeability, without (dis)arming anything. */
+    private <T> CompletableFuture<T> start(Agent target, String primitive, T defaultValue, Callable<T> call) {
         CompletableFuture<T> result = new CompletableFuture<>();
         Runnable start = () -> mission.runAsynchronously(this, () -> result.complete(runFor(this, call, defaultValue)));
         if (target == this) {
@@ -565,10 +575,6 @@ final class Agent implements AgentContext, AgentTask {
                 raise(Event.TIMEOUT, primitive);
                 result.complete(defaultValue);
             }));
-        }
-        if (countermeasure != null && !memberships.isEmpty()) {
-            armed.add(new Countermeasure(innermost().entry.definition(), target, countermeasure,
-                    countermeasureCall, result, defaultValue));
         }
         return result;
     }
@@ -608,7 +614,8 @@ final class Agent implements AgentContext, AgentTask {
         mission.trace().record(new TraceEvent.CountermeasureFired(now(), id, countermeasure.target().id,
                 countermeasure.name(), countermeasure.block().name()));
         countermeasure.completeLaunch();
-        launch(countermeasure.target().implementation, countermeasure.name(), null, countermeasure.call());
+        // Not launch(): a fired countermeasure disarms no other armed one (of an outer block).
+        start(countermeasure.target(), countermeasure.name(), null, countermeasure.call());
     }
 
     /** The depth of {@code block} in the agent's chain of blocks (0: outermost), for leaving up to it. */
