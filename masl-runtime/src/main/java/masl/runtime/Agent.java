@@ -679,6 +679,10 @@ final class Agent implements AgentContext, AgentTask {
         return permeability.currentName();
     }
 
+    String acceptStateName() {
+        return permeability.currentName();
+    }
+
     @Override
     public String getAcceptState(AgentImplementation agent) {
         return mission.agentOf(agent).permeability.currentName();

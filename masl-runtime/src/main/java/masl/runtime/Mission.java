@@ -197,6 +197,17 @@ public final class Mission {
         return agents.get(proxyId);
     }
 
+    /**
+     * The current permeability state's name of agent {@code proxyId} ({@code getAcceptState(a)},
+     * MASL §11), {@code ""} if its type has no states: for requesters outside the mission, such as
+     * the JADE bridge, which filter their own requests as an "other" (o).
+     *
+     * @throws IndexOutOfBoundsException if no agent has that proxy id
+     */
+    public String acceptState(int proxyId) {
+        return agents.get(proxyId).acceptStateName();
+    }
+
     /** The mission state of a block of this mission's program. */
     public Entry entry(EntryDefinition definition) {
         Entry entry = entries.get(definition);
