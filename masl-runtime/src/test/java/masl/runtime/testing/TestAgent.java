@@ -23,4 +23,10 @@ public class TestAgent extends AgentImplementation {
     public void logln(String message) {
         services().log(message + "\n");
     }
+
+    /** Uses {@code amount} of the battery and returns what is left (the degraded-mode tests). */
+    public int drain(int amount) {
+        battery -= amount;
+        return battery;
+    }
 }
