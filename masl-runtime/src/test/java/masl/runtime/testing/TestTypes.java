@@ -20,6 +20,11 @@ public final class TestTypes {
         return loader().load(folder().resolve("TestAgent.xml"));
     }
 
+    /** {@code agents/TestRobot.xml}: a subtype of {@link #testAgent()} with a static primitive. */
+    public static AgentType testRobot() {
+        return loader().load(folder().resolve("TestRobot.xml"));
+    }
+
     private static DescriptorLoader loader() {
         return new DescriptorLoader(AgentPath.of(List.of(folder()), TestTypes.class.getClassLoader()), ROOT);
     }
