@@ -529,7 +529,10 @@ final class Agent implements AgentContext, AgentTask {
         return runFor(this, call, defaultValue);
     }
 
-    /** Whether the current state lets this agent invoke its own {@code primitive}; if not, the denial's effects (§11). */
+    /**
+     * Whether the current state lets this agent invoke its own {@code primitive}; if not, the
+     * denial's effects (§11): traced, and {@code timeout} perceived.
+     */
     private boolean allowsOwn(String primitive) {
         PermeabilityState state = permeability.current();
         if (Permeability.allows(state, permeability.primitiveId(primitive), Requester.SELF, PermeabilityState.INVOKE)) {
@@ -726,10 +729,11 @@ final class Agent implements AgentContext, AgentTask {
     // ---- runtime side --------------------------------------------------------------------------
 
     /**
-     * Queues an external invocation of one of this agent's primitives (MASL §9). A running agent runs it at its next step boundary or loop
-     * iteration; a blocked or finished one has it run on its behalf at once (§5). An invocation
-     * runs the callee's primitive only: served on behalf of a parked agent, it must not use the
-     * agent's {@link AgentContext}, whose memberships other agents may be changing meanwhile.
+     * Queues an external invocation of one of this agent's primitives (MASL §9). A running agent
+     * runs it at its next step boundary or loop iteration; a blocked or finished one has it run on
+     * its behalf at once (§5). An invocation runs the callee's primitive only: served on behalf of
+     * a parked agent, it must not use the agent's {@link AgentContext}, whose memberships other
+     * agents may be changing meanwhile.
      */
     void submitInvocation(PendingInvocation invocation) {
         invocations.add(invocation);
@@ -898,7 +902,8 @@ final class Agent implements AgentContext, AgentTask {
             return true;
         }
         return Permeability.allows(state, permeability.primitiveId(primitive),
-                relationOf(invocation.requester(), permeability.isStaticPrimitive(primitive)), PermeabilityState.INVOKE);
+                relationOf(invocation.requester(), permeability.isStaticPrimitive(primitive)),
+                PermeabilityState.INVOKE);
     }
 
     /**

@@ -72,7 +72,10 @@ class AcceptStateAndAttributesTest {
                         if (!step(ctx, 2)) return;
                         continue;
                     case 2: self.logln("state " + ctx.getAcceptState()); if (!step(ctx, 3)) return; continue;
-                    case 3: ctx.writeAttribute(self, "battery", () -> self.battery = 50); if (!step(ctx, 4)) return; continue;
+                    case 3:
+                        ctx.writeAttribute(self, "battery", () -> self.battery = 50);
+                        if (!step(ctx, 4)) return;
+                        continue;
                     case 4: ctx.setAcceptState("readOnly"); if (!step(ctx, 5)) return; continue;
                     case 5: if (!busyWait(ctx, ctx.shared(DONE).get() == 0, 10)) return; continue;
                     case 6:
@@ -82,7 +85,10 @@ class AcceptStateAndAttributesTest {
                         self.logln("read " + ctx.readAttribute(a0, "battery", -1, () -> a0.battery));
                         if (!step(ctx, 8)) return;
                         continue;
-                    case 8: ctx.writeAttribute(a0, "battery", () -> a0.battery = 7); if (!step(ctx, 9)) return; continue;
+                    case 8:
+                        ctx.writeAttribute(a0, "battery", () -> a0.battery = 7);
+                        if (!step(ctx, 9)) return;
+                        continue;
                     case 9: ctx.shared(DONE).set(1); if (!step(ctx, 10)) return; continue;
                     case 10: if (!leave(ctx, MAIN, 11)) return; continue;
                     case 11: if (!endOf(ctx, MAIN.sequence(), 12)) return; continue;

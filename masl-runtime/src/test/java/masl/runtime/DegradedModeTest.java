@@ -66,7 +66,10 @@ class DegradedModeTest {
             while (true) {
                 switch (pc) {
                     case 0: if (!arrive(ctx, MAIN, true, 1, 12)) return; continue;
-                    case 1: ctx.writeAttribute(self, "battery", () -> self.battery = 100); if (!step(ctx, 2)) return; continue;
+                    case 1:
+                        ctx.writeAttribute(self, "battery", () -> self.battery = 100);
+                        if (!step(ctx, 2)) return;
+                        continue;
                     case 2: if (!arrive(ctx, WORK, ctx.getAcceptState().equals("default"), 3, 6)) return; continue;
                     case 3:
                         ctx.invokeSelf("drain", 0, () -> self.drain(AMOUNTS[me]));
@@ -103,7 +106,8 @@ class DegradedModeTest {
             String journal = Missions.run(driver.newScheduler(), MAIN, 3, type, Draining::new, Trace.NONE).journal();
             assertEquals(List.of("0 works at 80", "0 works at 60", "0 works at 40", "0 degraded at 40"),
                     linesOf(journal, "0 "), journal);
-            assertEquals(List.of("1 works at 70", "1 works at 40", "1 degraded at 40"), linesOf(journal, "1 "), journal);
+            assertEquals(List.of("1 works at 70", "1 works at 40", "1 degraded at 40"), linesOf(journal, "1 "),
+                    journal);
             assertEquals(List.of("2 works at 40", "2 degraded at 40"), linesOf(journal, "2 "), journal);
             assertEquals(9, journal.lines().count(), journal);
         }

@@ -90,9 +90,11 @@ class ExternalInvocationTest {
                     new JsonLinesTrace(trace));
             assertEquals("[1, 1, 1, 0, 0, 0]", seen.toString());
             assertTrue(trace.toString().contains(
-                    "\"event\":\"invocation-made\",\"requester\":0,\"callee\":1,\"member\":\"getProxyID\""), trace::toString);
+                    "\"event\":\"invocation-made\",\"requester\":0,\"callee\":1,\"member\":\"getProxyID\""),
+                    trace::toString);
             assertTrue(trace.toString().contains(
-                    "\"event\":\"invocation-served\",\"requester\":1,\"callee\":0,\"member\":\"getProxyID\""), trace::toString);
+                    "\"event\":\"invocation-served\",\"requester\":1,\"callee\":0,\"member\":\"getProxyID\""),
+                    trace::toString);
         }
     }
 

@@ -113,7 +113,8 @@ class LabelTest {
             List<String> seen = new CopyOnWriteArrayList<>();
             Missions.run(driver.newScheduler(), MAIN, 4, null, self -> new Measures(self, population, gates, seen),
                     Trace.NONE);
-            assertEquals(List.of("launched, finished false", "two measured, finished false", "finished: 10 20 30"), seen);
+            assertEquals(List.of("launched, finished false", "two measured, finished false", "finished: 10 20 30"),
+                    seen);
         }
     }
 }
