@@ -208,6 +208,19 @@ public final class Mission {
         return agents.get(proxyId).acceptStateName();
     }
 
+    /**
+     * Queues an invocation of primitive {@code primitive} of agent {@code proxyId} from outside the
+     * mission's agents, filtered by permeability as a requester of the kind "other" (o, MASL §11):
+     * when the agent serves it, by its state then, either {@code invocation} runs or {@code denial}
+     * does (the primitive did not run). Otherwise as {@link #submitInvocation(int, Runnable)}.
+     *
+     * @throws IndexOutOfBoundsException if no agent has that proxy id
+     */
+    public void submitInvocation(int proxyId, String primitive, Runnable invocation, Runnable denial) {
+        agents.get(proxyId).submitInvocation(new PendingInvocation(null, Objects.requireNonNull(primitive, "primitive"),
+                Objects.requireNonNull(invocation, "invocation"), Objects.requireNonNull(denial, "denial")));
+    }
+
     /** The mission state of a block of this mission's program. */
     public Entry entry(EntryDefinition definition) {
         Entry entry = entries.get(definition);
