@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;
@@ -135,6 +136,70 @@ class CountermeasureTest {
             }
             List<String> innermostFirst = List.of("inner", "outer");
             assertEquals(List.of(innermostFirst, innermostFirst, innermostFirst, innermostFirst, List.of()), fired);
+        }
+    }
+
+    /**
+     * A fired countermeasure counts as the completion of its launch (§10): {@code calibrate} runs
+     * until {@code stopCalibrate} stops it; the agent breaks out of {@code inner} while it runs.
+     * <pre>
+     * asynchronous entry main (true) {
+     *   LLabel l; local int x = 0;
+     *   asynchronous entry inner (true) { l.x = .calibrate(); break; }
+     *   .logln(l.isFinished() + " x=" + x);
+     * }
+     * </pre>
+     */
+    static final class Stopped extends CompactProgram {
+        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
+        static final EntryDefinition INNER = MAIN.child("inner", Mode.ASYNCHRONOUS);
+
+        private final CountDownLatch stopped = new CountDownLatch(1);
+        private Label l;
+        private int x;
+
+        Stopped(TestAgent self) {
+            super(self);
+        }
+
+        @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
+        protected void resume(AgentContext ctx) {
+            while (true) {
+                switch (pc) {
+                    case 0: if (!arrive(ctx, MAIN, true, 1, 6)) return; continue;
+                    case 1:
+                        l = ctx.newLabel();
+                        x = 0;
+                        if (!arrive(ctx, INNER, true, 2, 3)) return;
+                        continue;
+                    case 2:
+                        l.register(ctx.launch(self, "calibrate", -1, () -> {
+                            stopped.await();
+                            return 5;
+                        }, "stopCalibrate", () -> {
+                            stopped.countDown();
+                            return null;
+                        }), v -> x = v);
+                        ctx.breakOut(INNER);
+                        pc = 3;
+                        continue;
+                    case 3: if (!endOf(ctx, INNER.sequence(), 4)) return; continue;
+                    case 4: self.logln(l.isFinished() + " x=" + x); if (!step(ctx, 5)) return; continue;
+                    case 5: if (!leave(ctx, MAIN, 6)) return; continue;
+                    case 6: if (!endOf(ctx, MAIN.sequence(), 7)) return; continue;
+                    case 7: ctx.finish(); return;
+                    default: throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void aFiredCountermeasureCompletesItsLaunchForLabels(Driver driver) {
+        for (int run = 0; run < Missions.REPETITIONS; run++) {
+            assertEquals("true x=-1\n", Missions.run(driver, Stopped.MAIN, 1, Stopped::new).journal());
         }
     }
 }
