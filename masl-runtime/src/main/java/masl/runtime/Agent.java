@@ -504,6 +504,9 @@ final class Agent implements AgentContext, AgentTask {
     @Override
     public <T> CompletableFuture<T> invoke(AgentImplementation callee, String primitive, T defaultValue,
             Callable<T> call) {
+        if (callee == null) {
+            return CompletableFuture.completedFuture(nullAgent(defaultValue));
+        }
         Agent target = mission.agentOf(callee);
         disarm(target, primitive);
         if (target == this) {
@@ -552,6 +555,9 @@ final class Agent implements AgentContext, AgentTask {
     @Override
     public <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue,
             Callable<T> call, String countermeasure, Callable<?> countermeasureCall) {
+        if (callee == null) {
+            return CompletableFuture.completedFuture(nullAgent(defaultValue));
+        }
         Agent target = mission.agentOf(callee);
         disarm(target, primitive);
         CompletableFuture<T> result = start(target, primitive, defaultValue, call);
@@ -632,6 +638,16 @@ final class Agent implements AgentContext, AgentTask {
         return memberships.size();
     }
 
+    /**
+     * A member of an agent variable holding {@code null} was used: as for a Java call that throws
+     * (§8), the agent perceives {@code uncaught_exception} ({@code java.lang.NullPointerException})
+     * and the value is the default.
+     */
+    private <T> T nullAgent(T defaultValue) {
+        uncaughtException(new NullPointerException());
+        return defaultValue;
+    }
+
     /** Runs a primitive for {@code requester}: an exception becomes its {@code uncaught_exception} (§9). */
     private static <T> T runFor(Agent requester, Callable<T> call, T defaultValue) {
         try {
@@ -644,6 +660,9 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public <T> T readAttribute(AgentImplementation owner, String attribute, T defaultValue, Supplier<T> read) {
+        if (owner == null) {
+            return nullAgent(defaultValue);
+        }
         if (!mission.agentOf(owner).permitsAttribute(this, attribute, PermeabilityState.READ)) {
             raise(Event.FORBIDDEN_ACCESS, attribute);
             return defaultValue;
@@ -653,6 +672,10 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean writeAttribute(AgentImplementation owner, String attribute, Runnable write) {
+        if (owner == null) {
+            nullAgent(null);
+            return false;
+        }
         if (!mission.agentOf(owner).permitsAttribute(this, attribute, PermeabilityState.WRITE)) {
             raise(Event.FORBIDDEN_ACCESS, attribute);
             return false;
@@ -688,6 +711,9 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public String getAcceptState(AgentImplementation agent) {
+        if (agent == null) {
+            return nullAgent("");
+        }
         return mission.agentOf(agent).permeability.currentName();
     }
 

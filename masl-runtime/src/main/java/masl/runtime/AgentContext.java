@@ -191,6 +191,9 @@ public interface AgentContext {
      * permeability denied it when it came to serve it (this agent perceives {@code timeout},
      * message the primitive's name, and the primitive does not run). When {@code callee} is this
      * agent the invocation is internal and runs now, as {@link #invokeSelf}.
+     * A {@code null} callee (an agent variable holding no agent) makes this agent perceive
+     * {@code uncaught_exception} ({@code java.lang.NullPointerException}) and gives the default
+     * value; so do the other calls taking an agent here.
      *
      * @param primitive the primitive's name in the callee's descriptor: permeability filters by it
      * @param call runs the primitive on the callee's implementation object; it runs on the thread

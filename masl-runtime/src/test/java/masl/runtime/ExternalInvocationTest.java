@@ -113,12 +113,14 @@ class ExternalInvocationTest {
         static final Reaction MAIN_REACT = MAIN.react(Event.UNCAUGHT_EXCEPTION);
 
         private final AtomicReferenceArray<TestAgent> population;
+        private final boolean nullCallee;
         private CompletableFuture<Integer> call;
         private int divisor;
 
-        Throwing(TestAgent self, AtomicReferenceArray<TestAgent> population) {
+        Throwing(TestAgent self, AtomicReferenceArray<TestAgent> population, boolean nullCallee) {
             super(self);
             this.population = population;
+            this.nullCallee = nullCallee;
             population.set(self.getProxyID(), self);
         }
 
@@ -138,7 +140,7 @@ class ExternalInvocationTest {
                             pc = 4;
                             continue;
                         }
-                        call = ctx.invoke(population.get(1), "divide", 7, () -> 1 / divisor);
+                        call = ctx.invoke(nullCallee ? null : population.get(1), "divide", 7, () -> 1 / divisor);
                         pc = 2;
                         if (!ctx.await(call)) return;
                     case 2:
@@ -163,10 +165,20 @@ class ExternalInvocationTest {
     void aPrimitivesExceptionBecomesUncaughtExceptionInTheCallerWithTheDefaultValue(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(2);
-            String journal = Missions.run(driver, Throwing.MAIN, 2, self -> new Throwing(self, population)).journal();
+            String journal = Missions.run(driver, Throwing.MAIN, 2, self -> new Throwing(self, population, false))
+                    .journal();
             // The value is logged in the instruction of the call, the reaction at its step boundary.
             assertEquals("v=7\njava.lang.ArithmeticException\n", journal);
         }
+    }
+
+    /** {@code a.m()} with {@code a} holding no agent: as a Java call that throws, not a failed mission. */
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void invokingAnAgentVariableHoldingNullIsAnUncaughtException(Driver driver) {
+        AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(2);
+        String journal = Missions.run(driver, Throwing.MAIN, 2, self -> new Throwing(self, population, true)).journal();
+        assertEquals("v=7\njava.lang.NullPointerException\n", journal);
     }
 
     /**
