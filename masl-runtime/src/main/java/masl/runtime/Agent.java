@@ -3,11 +3,16 @@ package masl.runtime;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Queue;
+import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionStage;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Supplier;
+import masl.runtime.descriptor.AgentType;
+import masl.runtime.descriptor.PermeabilityState;
+import masl.runtime.descriptor.PermeabilityState.Requester;
 import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.TraceEvent;
 
@@ -40,6 +45,13 @@ import masl.runtime.trace.TraceEvent;
  * {@code false}; the slice then calls {@code resume} again at once. Each reaction ends with
  * {@link #endReaction()}, which redirects to the next one, or lets the last one apply its ending
  * (§8: the last reaction decides): {@link #resumeInterrupted()}, or a break, restart or reelect.
+ *
+ * <p><b>Invocations and permeability</b> (MASL §9, §11). An external invocation is a
+ * {@link PendingInvocation} in the callee's queue; whoever serves it (the callee at a boundary, or
+ * a serving slice on its behalf) decides at that moment, from the callee's current state and the
+ * requester's relation to it, whether it runs or is denied. While the agent is in
+ * {@code wait(state)} it is <em>attentive</em>: a serving slice runs only the first pending
+ * invocation that state allows, which ends the wait; the others stay queued.
  */
 final class Agent implements AgentContext, AgentTask {
 
@@ -62,7 +74,14 @@ final class Agent implements AgentContext, AgentTask {
     private final EventQueue events = new EventQueue();
     /** The ticket of the agent's latest busy-wait park: an event perceived then wakes it (§5). */
     private volatile long busyWaitTicket;
-    private final Queue<Runnable> invocations = new ConcurrentLinkedQueue<>();
+    private final Queue<PendingInvocation> invocations = new ConcurrentLinkedQueue<>();
+    private final Permeability permeability;
+    /** The ticket of the park of a pending {@code wait(state)}, 0 if none: who zeroes it ends the wait. */
+    private final AtomicLong attentiveTicket = new AtomicLong();
+    /** The state of the pending {@code wait(state)}; read only while {@link #attentiveTicket} is set. */
+    private volatile PermeabilityState attentiveState;
+    /** Countermeasures armed by this agent's launches, in arming order; confined to its slices. */
+    private final List<Countermeasure> armed = new ArrayList<>();
     private volatile boolean finished;
 
     // Confined to the thread running the current slice (successive slices are ordered).
@@ -87,8 +106,10 @@ final class Agent implements AgentContext, AgentTask {
     /** The synchronous block the agent left last, until its next step boundary or arrival. */
     EntryDefinition lastLeftSynchronous;
 
-    Agent(int id, String name, AgentImplementation implementation, AgentProgram program, Mission mission) {
+    Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
+            Mission mission) {
         this.id = id;
+        this.permeability = new Permeability(type);
         this.name = name;
         this.implementation = implementation;
         this.program = program;
@@ -167,7 +188,7 @@ final class Agent implements AgentContext, AgentTask {
 
     /** Schedules a serving slice if invocations wait and the agent is blocked or done. */
     private void serveIfPending() {
-        while (!invocations.isEmpty()) {
+        while (hasServable()) {
             int current = state.get();
             if (current == PARKED) {
                 mission.countSchedule();
@@ -329,6 +350,7 @@ final class Agent implements AgentContext, AgentTask {
     @Override
     public boolean leave(EntryDefinition block) {
         requireOutsideReaction("leaving " + block);
+        fireCountermeasures(memberships.size() - 1);
         return mission.coordinator().leaveAtEnd(this, mission.entry(block));
     }
 
@@ -336,6 +358,7 @@ final class Agent implements AgentContext, AgentTask {
     public void breakOut(EntryDefinition outermost) {
         requireNoReactionRunning("break");
         ending = null;
+        fireCountermeasures(depthOf(outermost));
         mission.coordinator().leaveUpTo(this, mission.entry(outermost), LeaveCause.BREAK);
     }
 
@@ -343,6 +366,7 @@ final class Agent implements AgentContext, AgentTask {
     public void reelect(EntryDefinition block) {
         requireNoReactionRunning("reelect");
         ending = null;
+        fireCountermeasures(depthOf(block));
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.REELECT);
     }
 
@@ -350,6 +374,7 @@ final class Agent implements AgentContext, AgentTask {
     public void restart(EntryDefinition block) {
         requireNoReactionRunning("restart");
         ending = null;
+        fireCountermeasures(depthOf(block) + 1);
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.RESTART);
     }
 
@@ -476,16 +501,267 @@ final class Agent implements AgentContext, AgentTask {
         finished = true;
     }
 
+    @Override
+    public <T> CompletableFuture<T> invoke(AgentImplementation callee, String primitive, T defaultValue,
+            Callable<T> call) {
+        if (callee == null) {
+            return CompletableFuture.completedFuture(nullAgent(defaultValue));
+        }
+        Agent target = mission.agentOf(callee);
+        disarm(target, primitive);
+        if (target == this) {
+            return CompletableFuture.completedFuture(invokeSelf(primitive, defaultValue, call));
+        }
+        CompletableFuture<T> result = new CompletableFuture<>();
+        mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive));
+        target.submitInvocation(new PendingInvocation(this, primitive,
+                () -> result.complete(runFor(this, call, defaultValue)),
+                () -> {
+                    raise(Event.TIMEOUT, primitive);
+                    result.complete(defaultValue);
+                }));
+        return result;
+    }
+
+    @Override
+    public <T> T invokeSelf(String primitive, T defaultValue, Callable<T> call) {
+        disarm(this, primitive);
+        if (!allowsOwn(primitive)) {
+            return defaultValue;
+        }
+        return runFor(this, call, defaultValue);
+    }
+
+    /**
+     * Whether the current state lets this agent invoke its own {@code primitive}; if not, the
+     * denial's effects (§11): traced, and {@code timeout} perceived.
+     */
+    private boolean allowsOwn(String primitive) {
+        PermeabilityState state = permeability.current();
+        if (Permeability.allows(state, permeability.primitiveId(primitive), Requester.SELF, PermeabilityState.INVOKE)) {
+            return true;
+        }
+        mission.trace().record(new TraceEvent.InvocationDenied(now(), id, id, primitive, state.name()));
+        raise(Event.TIMEOUT, primitive);
+        return false;
+    }
+
+    @Override
+    public <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue,
+            Callable<T> call) {
+        return launch(callee, primitive, defaultValue, call, null, null);
+    }
+
+    @Override
+    public <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue,
+            Callable<T> call, String countermeasure, Callable<?> countermeasureCall) {
+        if (callee == null) {
+            return CompletableFuture.completedFuture(nullAgent(defaultValue));
+        }
+        Agent target = mission.agentOf(callee);
+        disarm(target, primitive);
+        CompletableFuture<T> result = start(target, primitive, defaultValue, call);
+        if (countermeasure != null && !memberships.isEmpty()) {
+            armed.add(new Countermeasure(innermost().entry.definition(), target, countermeasure,
+                    countermeasureCall, result, defaultValue));
+        }
+        return result;
+    }
+
+    /** Launches an asynchronous primitive of {@code target}, filtered by permeability, without (dis)arming anything. */
+    private <T> CompletableFuture<T> start(Agent target, String primitive, T defaultValue, Callable<T> call) {
+        CompletableFuture<T> result = new CompletableFuture<>();
+        Runnable start = () -> mission.runAsynchronously(this, () -> result.complete(runFor(this, call, defaultValue)));
+        if (target == this) {
+            if (allowsOwn(primitive)) {
+                start.run();
+            } else {
+                result.complete(defaultValue);
+            }
+        } else {
+            mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive));
+            target.submitInvocation(new PendingInvocation(this, primitive, start, () -> {
+                raise(Event.TIMEOUT, primitive);
+                result.complete(defaultValue);
+            }));
+        }
+        return result;
+    }
+
+    @Override
+    public Label newLabel() {
+        return new Label(mission.changes());
+    }
+
+    /** Invoking a countermeasure explicitly disarms it (§9): every armed one of that primitive of {@code target}. */
+    private void disarm(Agent target, String primitive) {
+        if (!armed.isEmpty()) {
+            armed.removeIf(countermeasure -> countermeasure.target() == target
+                    && countermeasure.name().equals(primitive));
+        }
+    }
+
+    /**
+     * The agent is about to leave its blocks from the innermost to depth {@code outermostLeft} (0 is
+     * its outermost block): fires the countermeasures armed for them, innermost block first, the
+     * latest armed first within a block (§9).
+     */
+    private void fireCountermeasures(int outermostLeft) {
+        for (int depth = memberships.size() - 1; depth >= outermostLeft && !armed.isEmpty(); depth--) {
+            EntryDefinition block = memberships.get(depth).entry.definition();
+            for (int i = armed.size() - 1; i >= 0; i--) {
+                Countermeasure countermeasure = armed.get(i);
+                if (countermeasure.block() == block) {
+                    armed.remove(i);
+                    fire(countermeasure);
+                }
+            }
+        }
+    }
+
+    private void fire(Countermeasure countermeasure) {
+        mission.trace().record(new TraceEvent.CountermeasureFired(now(), id, countermeasure.target().id,
+                countermeasure.name(), countermeasure.block().name()));
+        countermeasure.completeLaunch();
+        // Not launch(): a fired countermeasure disarms no other armed one (of an outer block).
+        start(countermeasure.target(), countermeasure.name(), null, countermeasure.call());
+    }
+
+    /** The depth of {@code block} in the agent's chain of blocks (0: outermost), for leaving up to it. */
+    private int depthOf(EntryDefinition block) {
+        for (int depth = memberships.size() - 1; depth >= 0; depth--) {
+            if (memberships.get(depth).entry.definition() == block) {
+                return depth;
+            }
+        }
+        // Not a member: the coordinator reports the translator bug.
+        return memberships.size();
+    }
+
+    /**
+     * A member of an agent variable holding {@code null} was used: as for a Java call that throws
+     * (§8), the agent perceives {@code uncaught_exception} ({@code java.lang.NullPointerException})
+     * and the value is the default.
+     */
+    private <T> T nullAgent(T defaultValue) {
+        uncaughtException(new NullPointerException());
+        return defaultValue;
+    }
+
+    /** Runs a primitive for {@code requester}: an exception becomes its {@code uncaught_exception} (§9). */
+    private static <T> T runFor(Agent requester, Callable<T> call, T defaultValue) {
+        try {
+            return call.call();
+        } catch (Exception thrown) {
+            requester.raise(Event.UNCAUGHT_EXCEPTION, thrown.getClass().getName());
+            return defaultValue;
+        }
+    }
+
+    @Override
+    public <T> T readAttribute(AgentImplementation owner, String attribute, T defaultValue, Supplier<T> read) {
+        if (owner == null) {
+            return nullAgent(defaultValue);
+        }
+        if (!mission.agentOf(owner).permitsAttribute(this, attribute, PermeabilityState.READ)) {
+            raise(Event.FORBIDDEN_ACCESS, attribute);
+            return defaultValue;
+        }
+        return read.get();
+    }
+
+    @Override
+    public boolean writeAttribute(AgentImplementation owner, String attribute, Runnable write) {
+        if (owner == null) {
+            nullAgent(null);
+            return false;
+        }
+        if (!mission.agentOf(owner).permitsAttribute(this, attribute, PermeabilityState.WRITE)) {
+            raise(Event.FORBIDDEN_ACCESS, attribute);
+            return false;
+        }
+        write.run();
+        return true;
+    }
+
+    private boolean permitsAttribute(Agent requester, String attribute, int permission) {
+        return Permeability.allows(permeability.current(), permeability.attributeId(attribute),
+                relationOf(requester, permeability.isStaticAttribute(attribute)), permission);
+    }
+
+    @Override
+    public void setAcceptState(String name) {
+        PermeabilityState state = permeability.find(name).orElse(null);
+        if (state == null) {
+            uncaughtException(new IllegalArgumentException("no permeability state " + name));
+            return;
+        }
+        permeability.set(state);
+        mission.changes().advance();
+    }
+
+    @Override
+    public String getAcceptState() {
+        return permeability.currentName();
+    }
+
+    String acceptStateName() {
+        return permeability.currentName();
+    }
+
+    @Override
+    public String getAcceptState(AgentImplementation agent) {
+        if (agent == null) {
+            return nullAgent("");
+        }
+        return mission.agentOf(agent).permeability.currentName();
+    }
+
+    @Override
+    public boolean waitFor(String state) {
+        return waitFor(state, -1);
+    }
+
+    @Override
+    public boolean waitFor(String state, long ms) {
+        progress++;
+        PermeabilityState attentiveTo = permeability.find(state).orElse(null);
+        if (attentiveTo == null) {
+            uncaughtException(new IllegalArgumentException("no permeability state " + state));
+            return yieldIfSliceUsed();
+        }
+        PendingInvocation allowed = firstAllowedBy(attentiveTo);
+        if (allowed != null) {
+            invocations.remove(allowed);
+            serve(allowed);
+            return yieldIfSliceUsed();
+        }
+        long ticket = prepareToPark();
+        attentiveState = attentiveTo;
+        attentiveTicket.set(ticket);
+        if (ms >= 0) {
+            mission.outsideWakeUpStarted();
+            mission.scheduler().scheduleAfter(ms, () -> {
+                if (attentiveTicket.compareAndSet(ticket, 0)) {
+                    unpark(ticket);
+                }
+                mission.outsideWakeUpEnded();
+            });
+        }
+        // The slice ends PARKED and then serves what the state allows (serveIfPending).
+        return false;
+    }
+
     // ---- runtime side --------------------------------------------------------------------------
 
     /**
-     * Queues an external invocation of one of this agent's primitives (MASL §9): the hook the
-     * invocations issue builds on. A running agent runs it at its next step boundary or loop
-     * iteration; a blocked or finished one has it run on its behalf at once (§5). An invocation
-     * runs the callee's primitive only: served on behalf of a parked agent, it must not use the
-     * agent's {@link AgentContext}, whose memberships other agents may be changing meanwhile.
+     * Queues an external invocation of one of this agent's primitives (MASL §9). A running agent
+     * runs it at its next step boundary or loop iteration; a blocked or finished one has it run on
+     * its behalf at once (§5). An invocation runs the callee's primitive only: served on behalf of
+     * a parked agent, it must not use the agent's {@link AgentContext}, whose memberships other
+     * agents may be changing meanwhile.
      */
-    void submitInvocation(Runnable invocation) {
+    void submitInvocation(PendingInvocation invocation) {
         invocations.add(invocation);
         serveIfPending();
         mission.changes().advance();
@@ -587,11 +863,93 @@ final class Agent implements AgentContext, AgentTask {
         throw new IllegalStateException(describe() + " emits " + event + " outside that block");
     }
 
+    /**
+     * Step 2 of a boundary, or a serving slice (§5): every pending invocation in order, each run or
+     * denied by the current state; while attentive (in {@code wait(state)}), only the first one that
+     * state allows, which then ends the wait.
+     */
     private void serveInvocations() {
-        Runnable invocation;
-        while ((invocation = invocations.poll()) != null) {
-            invocation.run();
+        long attentive = attentiveTicket.get();
+        if (attentive != 0) {
+            serveAttentively(attentive);
+            return;
         }
+        PendingInvocation invocation;
+        while ((invocation = invocations.poll()) != null) {
+            PermeabilityState state = permeability.current();
+            if (permits(state, invocation)) {
+                serve(invocation);
+            } else {
+                mission.trace().record(new TraceEvent.InvocationDenied(now(), id, invocation.requesterId(),
+                        invocation.primitive(), permeability.currentName()));
+                invocation.deny();
+            }
+        }
+    }
+
+    private void serveAttentively(long ticket) {
+        PendingInvocation allowed = firstAllowedBy(attentiveState);
+        // The timeout of the wait may have won: then the invocation waits for the next boundary.
+        if (allowed == null || !attentiveTicket.compareAndSet(ticket, 0)) {
+            return;
+        }
+        invocations.remove(allowed);
+        serve(allowed);
+        unpark(ticket);
+    }
+
+    private void serve(PendingInvocation invocation) {
+        mission.trace().record(new TraceEvent.InvocationServed(now(), id, invocation.requesterId(),
+                invocation.primitive()));
+        invocation.run();
+    }
+
+    /** Whether a serving slice has something to run: any pending invocation, or while attentive one it allows. */
+    private boolean hasServable() {
+        if (invocations.isEmpty()) {
+            return false;
+        }
+        return attentiveTicket.get() == 0 || firstAllowedBy(attentiveState) != null;
+    }
+
+    private PendingInvocation firstAllowedBy(PermeabilityState state) {
+        for (PendingInvocation invocation : invocations) {
+            if (permits(state, invocation)) {
+                return invocation;
+            }
+        }
+        return null;
+    }
+
+    /** Whether {@code state} of this agent lets the invocation run, its requester's relation decided now (§11). */
+    private boolean permits(PermeabilityState state, PendingInvocation invocation) {
+        String primitive = invocation.primitive();
+        if (primitive == null) {
+            return true;
+        }
+        return Permeability.allows(state, permeability.primitiveId(primitive),
+                relationOf(invocation.requester(), permeability.isStaticPrimitive(primitive)),
+                PermeabilityState.INVOKE);
+    }
+
+    /**
+     * The requester's digit of the rights (§11), decided at the time of the access: u for this agent,
+     * g for an agent whose innermost current block is exactly this agent's, o otherwise. For a static
+     * member, a requester of the same type is filtered by u, another by g or o.
+     */
+    private Requester relationOf(Agent requester, boolean staticMember) {
+        if (requester == this) {
+            return Requester.SELF;
+        }
+        if (requester == null) {
+            return Requester.OTHER;
+        }
+        if (staticMember && requester.permeability.type() == permeability.type()) {
+            return Requester.SELF;
+        }
+        boolean sameBlock = mission.coordinator().query(() -> !memberships.isEmpty()
+                && !requester.memberships.isEmpty() && innermost().entry == requester.innermost().entry);
+        return sameBlock ? Requester.GROUP : Requester.OTHER;
     }
 
     private boolean yieldIfSliceUsed() {

@@ -1,6 +1,9 @@
 package masl.runtime;
 
+import java.util.concurrent.Callable;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionStage;
+import java.util.function.Supplier;
 
 /**
  * What a generated program calls on the runtime: one instance per agent, passed to
@@ -175,4 +178,110 @@ public interface AgentContext {
      * invocations; the mission ends when every agent has finished.
      */
     void finish();
+
+    // ---- invocations, attributes and permeability (MASL §9, §11) ------------------------------
+
+    /**
+     * An external invocation {@code a.m(args)} (MASL §9): queues it at {@code callee}, which runs
+     * {@code call} at its next step boundary or loop iteration, or at once on its behalf if it is
+     * blocked or has finished (§5). Never blocks: a synchronous primitive is then awaited with
+     * {@link #await} and read with {@code join()}. The future always completes normally: with the
+     * primitive's result; with {@code defaultValue} if the primitive threw (this agent perceives
+     * {@code uncaught_exception}, message the exception's class name) or if the callee's
+     * permeability denied it when it came to serve it (this agent perceives {@code timeout},
+     * message the primitive's name, and the primitive does not run). When {@code callee} is this
+     * agent the invocation is internal and runs now, as {@link #invokeSelf}.
+     * A {@code null} callee (an agent variable holding no agent) makes this agent perceive
+     * {@code uncaught_exception} ({@code java.lang.NullPointerException}) and gives the default
+     * value; so do the other calls taking an agent here.
+     *
+     * @param primitive the primitive's name in the callee's descriptor: permeability filters by it
+     * @param call runs the primitive on the callee's implementation object; it runs on the thread
+     *     serving the callee and must use nothing of this agent's program but what it captured
+     * @throws IllegalArgumentException if {@code callee} runs no agent of this mission
+     */
+    <T> CompletableFuture<T> invoke(AgentImplementation callee, String primitive, T defaultValue, Callable<T> call);
+
+    /**
+     * An internal invocation {@code .m(args)} (MASL §9): runs {@code call} now, if the current
+     * permeability state lets the agent invoke its own {@code primitive} (the u digit, §11), and
+     * returns its result. Denied, it returns {@code defaultValue} and the agent perceives
+     * {@code timeout}; if the primitive throws, {@code defaultValue} and {@code uncaught_exception}.
+     * Zero duration itself: the program adds the step boundary unless the primitive is an accessor.
+     */
+    <T> T invokeSelf(String primitive, T defaultValue, Callable<T> call);
+
+    /**
+     * A read of attribute {@code attribute} of {@code owner} (this agent's own implementation for
+     * {@code x} / {@code this.x}), immediate and subject to permeability (§9, §11): the r bit of the
+     * requester's digit in the owner's current state. Denied, it returns {@code defaultValue} and the
+     * agent perceives {@code forbidden_access} (message: the attribute's name). Zero duration.
+     */
+    <T> T readAttribute(AgentImplementation owner, String attribute, T defaultValue, Supplier<T> read);
+
+    /**
+     * A write of attribute {@code attribute} of {@code owner}, as {@link #readAttribute} with the w
+     * bit: denied, {@code write} does not run and the agent perceives {@code forbidden_access}.
+     * Returns whether it ran.
+     */
+    boolean writeAttribute(AgentImplementation owner, String attribute, Runnable write);
+
+    /**
+     * {@code setAcceptState("name")} (§11): the agent's current permeability state becomes the
+     * type's state {@code name}; invocations served from now on are filtered by it, and busy-waits
+     * reading accept states see the change. An undeclared name changes nothing and makes the agent
+     * perceive {@code uncaught_exception} ({@code java.lang.IllegalArgumentException}).
+     */
+    void setAcceptState(String name);
+
+    /** {@code getAcceptState()}: the current state's name; {@code ""} for a type without states. */
+    String getAcceptState();
+
+    /** {@code getAcceptState(a)}: agent {@code a}'s current state's name, read now. */
+    String getAcceptState(AgentImplementation agent);
+
+    /**
+     * {@code wait("state")} (§11): the agent becomes attentive until the first pending or arriving
+     * external invocation that {@code state} allows for its requester has run, as this
+     * instruction; the other pending invocations stay queued, to be served at the next step
+     * boundary by the current state. Suspends unless such an invocation is already pending (then
+     * it runs now). An undeclared state raises {@code uncaught_exception} and ends the wait at once.
+     * The program then adds the instruction's step boundary.
+     */
+    boolean waitFor(String state);
+
+    /**
+     * {@code wait("state", ms)}: as {@link #waitFor(String)}, also ending when {@code ms} of mission
+     * time have elapsed with no allowed invocation.
+     */
+    boolean waitFor(String state, long ms);
+
+    // ---- asynchronous primitives, countermeasures and labels (MASL §9, §10) -------------------
+
+    /**
+     * The invocation of an asynchronous primitive ({@code synchronous_call="false"}), internal or
+     * external: returns at once. Internal, it is filtered by permeability now; external, it is
+     * queued and filtered when the callee serves it (§5, §11), as {@link #invoke}. Allowed, its Java
+     * code {@code call} runs on a thread of its own; the future completes with its result, or with
+     * {@code defaultValue} on an exception ({@code uncaught_exception} here) or a denial
+     * ({@code timeout} here). Reading a variable holding it awaits it ({@link #await}).
+     */
+    <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue, Callable<T> call);
+
+    /**
+     * {@link #launch(AgentImplementation, String, Object, Callable)} of a primitive with a
+     * countermeasure (§9): also arms {@code countermeasure} of {@code callee}, whose Java code is
+     * {@code countermeasureCall}, for the agent's innermost block. When the agent leaves that block
+     * in any way ({@link #leave}, {@link #breakOut}, {@link #reelect}, {@link #restart} of an
+     * enclosing block, also from a reaction) while it is armed, the runtime launches it, innermost
+     * blocks first and the latest armed first within a block, before leaving (before an exit
+     * barrier), and completes this launch's future with {@code defaultValue} if it is still
+     * running. Invoking {@code countermeasure} of {@code callee} explicitly ({@link #invoke},
+     * {@link #invokeSelf}, {@code launch}) disarms it.
+     */
+    <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue, Callable<T> call,
+            String countermeasure, Callable<?> countermeasureCall);
+
+    /** A new label ({@code LLabel}: one per member; {@code SLabel}: as the value of a shared variable), §10. */
+    Label newLabel();
 }

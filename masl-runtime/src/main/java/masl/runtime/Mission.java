@@ -9,19 +9,24 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
+import masl.runtime.descriptor.AgentType;
 import masl.runtime.trace.Trace;
 
 /**
  * One run of a MASL program: its agents (proxy ids 0, 1, 2, … in declaration order, each with its
  * implementation bound to its {@link AgentServices} and its program), the state of its e-blocks,
  * its journal and trace, and the scheduler that runs it. The mission ends when every agent's
- * program has finished (MASL §6.5), when a program fails, when no agent can make progress any
+ * program has finished (MASL §6.5) and no asynchronous primitive is still running, when a program
+ * fails, when no agent can make progress any
  * more (deadlock), on timeout or on {@link #stop()}.
  *
  * <pre>{@code
@@ -53,8 +58,16 @@ public final class Mission {
     private volatile boolean stopped;
     /** Transitions of agents to SCHEDULED after their start: the watchdog's sign of life. */
     private final AtomicLong schedules = new AtomicLong();
-    /** Wake-ups promised from outside the agents: sleep timers, futures being awaited. */
+    /** Wake-ups promised from outside the agents: sleep timers, futures being awaited, running primitives. */
     private final AtomicInteger pendingOutsideWakeUps = new AtomicInteger();
+    /** Runs the Java code of asynchronous primitives (MASL §9), which may block for as long as they act. */
+    /** Asynchronous primitives running: the mission completes when they and every program are over. */
+    private final AtomicInteger runningPrimitives = new AtomicInteger();
+    private final ExecutorService primitives = Executors.newCachedThreadPool(runnable -> {
+        Thread thread = new Thread(runnable, "masl-primitive");
+        thread.setDaemon(true);
+        return thread;
+    });
 
     private Mission(Builder builder) {
         scheduler = builder.scheduler != null ? builder.scheduler : new PoolScheduler();
@@ -104,6 +117,7 @@ public final class Mission {
         MissionOutcome.Status status = awaitEnd(timeout);
         String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
         scheduler.shutdown();
+        primitives.shutdownNow();
         journal.flush();
         return new MissionOutcome(status, journal.text(), Optional.ofNullable(failure.get()), report);
     }
@@ -166,7 +180,45 @@ public final class Mission {
      * @throws IndexOutOfBoundsException if no agent has that proxy id
      */
     public void submitInvocation(int proxyId, Runnable invocation) {
-        agents.get(proxyId).submitInvocation(Objects.requireNonNull(invocation, "invocation"));
+        agents.get(proxyId).submitInvocation(PendingInvocation.unfiltered(
+                Objects.requireNonNull(invocation, "invocation")));
+    }
+
+    /**
+     * The agent running {@code implementation}.
+     *
+     * @throws IllegalArgumentException if it runs no agent of this mission
+     */
+    Agent agentOf(AgentImplementation implementation) {
+        int proxyId = implementation.services().proxyId();
+        if (proxyId < 0 || proxyId >= agents.size() || agents.get(proxyId).implementation != implementation) {
+            throw new IllegalArgumentException(implementation + " is no agent of this mission");
+        }
+        return agents.get(proxyId);
+    }
+
+    /**
+     * The current permeability state's name of agent {@code proxyId} ({@code getAcceptState(a)},
+     * MASL §11), {@code ""} if its type has no states: for requesters outside the mission, such as
+     * the JADE bridge, which filter their own requests as an "other" (o).
+     *
+     * @throws IndexOutOfBoundsException if no agent has that proxy id
+     */
+    public String acceptState(int proxyId) {
+        return agents.get(proxyId).acceptStateName();
+    }
+
+    /**
+     * Queues an invocation of primitive {@code primitive} of agent {@code proxyId} from outside the
+     * mission's agents, filtered by permeability as a requester of the kind "other" (o, MASL §11):
+     * when the agent serves it, by its state then, either {@code invocation} runs or {@code denial}
+     * does (the primitive did not run). Otherwise as {@link #submitInvocation(int, Runnable)}.
+     *
+     * @throws IndexOutOfBoundsException if no agent has that proxy id
+     */
+    public void submitInvocation(int proxyId, String primitive, Runnable invocation, Runnable denial) {
+        agents.get(proxyId).submitInvocation(new PendingInvocation(null, Objects.requireNonNull(primitive, "primitive"),
+                Objects.requireNonNull(invocation, "invocation"), Objects.requireNonNull(denial, "denial")));
     }
 
     /** The mission state of a block of this mission's program. */
@@ -194,6 +246,37 @@ public final class Mission {
         return coordinator;
     }
 
+    /**
+     * Runs the body of an asynchronous primitive launched by {@code requester} on a thread of its
+     * own; until it returns, the deadlock watchdog knows a wake-up may come. An {@code Error} in it
+     * fails the mission; exceptions are the body's to turn into events.
+     */
+    void runAsynchronously(Agent requester, Runnable body) {
+        outsideWakeUpStarted();
+        runningPrimitives.incrementAndGet();
+        try {
+            primitives.execute(() -> {
+                try {
+                    body.run();
+                } catch (Throwable failure) {
+                    agentFailed(requester, failure);
+                } finally {
+                    primitiveEnded();
+                }
+            });
+        } catch (RejectedExecutionException missionEnded) {
+            primitiveEnded();
+        }
+    }
+
+    private void primitiveEnded() {
+        outsideWakeUpEnded();
+        // Decrement, then look at the other count; agentFinished does the converse: the later one sees both at 0.
+        if (runningPrimitives.decrementAndGet() == 0 && running.get() == 0) {
+            ended.countDown();
+        }
+    }
+
     void countSchedule() {
         schedules.incrementAndGet();
     }
@@ -207,7 +290,7 @@ public final class Mission {
     }
 
     void agentFinished(Agent agent) {
-        if (running.decrementAndGet() == 0) {
+        if (running.decrementAndGet() == 0 && runningPrimitives.get() == 0) {
             ended.countDown();
         }
     }
@@ -221,12 +304,12 @@ public final class Mission {
     /** Builds a mission: agents in declaration order, the program's {@code main}, and options. */
     public static final class Builder {
 
-        private record AgentDeclaration(String name, AgentImplementation implementation,
+        private record AgentDeclaration(String name, AgentImplementation implementation, AgentType type,
                 Function<AgentImplementation, ? extends AgentProgram> program) {
 
             Agent create(int id, Mission mission) {
                 implementation.bind(mission.new Services(id));
-                return new Agent(id, name, implementation, program.apply(implementation), mission);
+                return new Agent(id, name, implementation, type, program.apply(implementation), mission);
             }
         }
 
@@ -244,12 +327,22 @@ public final class Mission {
          * {@code implementation} is bound to the agent's services, then {@code program} makes the
          * agent's program for it.
          */
-        @SuppressWarnings("unchecked")
         public <T extends AgentImplementation> Builder agent(String name, T implementation,
+                Function<? super T, ? extends AgentProgram> program) {
+            return agent(name, implementation, null, program);
+        }
+
+        /**
+         * Declares the next agent as {@link #agent(String, AgentImplementation, Function)} does, with
+         * its type as loaded from its descriptor: its permeability states apply (MASL §11). An agent
+         * declared without a type allows everything.
+         */
+        @SuppressWarnings("unchecked")
+        public <T extends AgentImplementation> Builder agent(String name, T implementation, AgentType type,
                 Function<? super T, ? extends AgentProgram> program) {
             Objects.requireNonNull(implementation, "implementation");
             Objects.requireNonNull(program, "program");
-            agents.add(new AgentDeclaration(name, implementation,
+            agents.add(new AgentDeclaration(name, implementation, type,
                     impl -> program.apply((T) impl)));
             return this;
         }

@@ -75,9 +75,8 @@ class InvocationServingTest {
                         if (!busyWait(ctx, gate.getWaitingInCount() == 0, 7)) return;
                         continue;
                     case 7:
-                        result = new CompletableFuture<>();
-                        Agent callee = (Agent) agents.get(1);
-                        callee.submitInvocation(() -> result.complete("served"));
+                        TestAgent callee = (TestAgent) ((Agent) agents.get(1)).implementation;
+                        result = ctx.invoke(callee, "nop", "", () -> "served");
                         pc = 8;
                         if (!ctx.await(result)) return;
                     case 8:

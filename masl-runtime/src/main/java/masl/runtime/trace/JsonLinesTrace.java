@@ -69,8 +69,29 @@ public final class JsonLinesTrace implements Trace, Flushable {
                     + ",\"block\":" + string(e.block())
                     + ",\"reaction\":" + string(e.byDefault() ? "default" : e.event());
         }
-        TraceEvent.EventDropped e = (TraceEvent.EventDropped) event;
-        return head(e.nanos(), "event-dropped") + ",\"agent\":" + e.agent() + ",\"name\":" + string(e.event());
+        if (event instanceof TraceEvent.EventDropped e) {
+            return head(e.nanos(), "event-dropped") + ",\"agent\":" + e.agent() + ",\"name\":" + string(e.event());
+        }
+        return invocationLine(event);
+    }
+
+    /** The lines of invocations: the primitive's name is under {@code "member"}. */
+    private static String invocationLine(TraceEvent event) {
+        if (event instanceof TraceEvent.InvocationMade e) {
+            return head(e.nanos(), "invocation-made") + ",\"requester\":" + e.requester() + ",\"callee\":"
+                    + e.callee() + ",\"member\":" + string(e.member());
+        }
+        if (event instanceof TraceEvent.InvocationServed e) {
+            return head(e.nanos(), "invocation-served") + ",\"requester\":" + e.requester() + ",\"callee\":"
+                    + e.callee() + ",\"member\":" + string(e.member());
+        }
+        if (event instanceof TraceEvent.CountermeasureFired e) {
+            return head(e.nanos(), "countermeasure-fired") + ",\"agent\":" + e.agent() + ",\"callee\":"
+                    + e.callee() + ",\"member\":" + string(e.member()) + ",\"block\":" + string(e.block());
+        }
+        TraceEvent.InvocationDenied e = (TraceEvent.InvocationDenied) event;
+        return head(e.nanos(), "invocation-denied") + ",\"requester\":" + e.requester() + ",\"callee\":"
+                + e.callee() + ",\"member\":" + string(e.member()) + ",\"state\":" + string(e.state());
     }
 
     private static String head(long nanos, String event) {

@@ -51,4 +51,30 @@ public sealed interface TraceEvent {
 
     /** The agent dropped an occurrence of {@code event}: no reaction to it in its blocks, or {@code clearEvents}. */
     record EventDropped(long nanos, int agent, String event) implements TraceEvent { }
+
+    /**
+     * Agent {@code requester} queued an external invocation of primitive {@code member} of agent
+     * {@code callee} (MASL §9).
+     */
+    record InvocationMade(long nanos, int requester, int callee, String member) implements TraceEvent { }
+
+    /**
+     * Agent {@code callee} runs primitive {@code member} for {@code requester} ({@code -1}: a requester
+     * outside the mission, such as a FIPA agent), permeability allowing it (§11).
+     */
+    record InvocationServed(long nanos, int callee, int requester, String member) implements TraceEvent { }
+
+    /**
+     * Permeability state {@code state} of {@code callee} denied {@code requester} the invocation of
+     * {@code member} (an internal one when both are the same agent): it did not run (§11).
+     */
+    record InvocationDenied(long nanos, int callee, int requester, String member, String state)
+            implements TraceEvent { }
+
+    /**
+     * {@code agent} left {@code block} while countermeasure {@code member} of agent {@code callee} was
+     * armed there: the runtime launches it (§9). Recorded in firing order, innermost block first.
+     */
+    record CountermeasureFired(long nanos, int agent, int callee, String member, String block)
+            implements TraceEvent { }
 }

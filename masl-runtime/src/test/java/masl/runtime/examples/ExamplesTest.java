@@ -8,9 +8,13 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicReferenceArray;
 import masl.runtime.SeededScheduler;
+import masl.runtime.descriptor.AgentType;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;
+import masl.runtime.testing.TestAgent;
+import masl.runtime.testing.TestTypes;
 import masl.runtime.trace.JsonLinesTrace;
 import masl.runtime.trace.Trace;
 import org.junit.jupiter.api.Test;
@@ -85,6 +89,22 @@ class ExamplesTest {
         assertEquals(List.of("heard now", "heard now", "heard now", "heard now", "worker 1", "worker 2", "worker 3"),
                 sortedLines(journal), journal);
         assertTrue(journal.startsWith("heard now\n"), journal);
+    }
+
+    /** E5 runs 100 times in a row with each driver; the trace shows the denial by b's state. */
+    @ParameterizedTest
+    @EnumSource(Driver.class)
+    void e5DeniedInvocationBecomesTimeout(Driver driver) {
+        AgentType type = TestTypes.testAgent();
+        for (int run = 0; run < 100; run++) {
+            AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(2);
+            StringWriter trace = new StringWriter();
+            String journal = Missions.run(driver.newScheduler(), E5Permeability.MAIN, 2, type,
+                    self -> new E5Permeability(self, population), new JsonLinesTrace(trace)).journal();
+            assertEquals("timeout\nseen=0\n", journal);
+            assertTrue(trace.toString().contains("\"event\":\"invocation-denied\",\"requester\":0,\"callee\":1,"
+                    + "\"member\":\"getProxyID\",\"state\":\"nothing\""), trace.toString());
+        }
     }
 
     @ParameterizedTest

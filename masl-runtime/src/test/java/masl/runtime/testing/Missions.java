@@ -7,6 +7,7 @@ import masl.runtime.EntryDefinition;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.Scheduler;
+import masl.runtime.descriptor.AgentType;
 import masl.runtime.trace.Trace;
 
 /** Runs a test mission of {@link TestAgent}s and insists that it completes. */
@@ -35,9 +36,15 @@ public final class Missions {
 
     public static MissionOutcome run(Scheduler scheduler, EntryDefinition main, int agents,
             Function<TestAgent, AgentProgram> program, Trace trace) {
+        return run(scheduler, main, agents, null, program, trace);
+    }
+
+    /** A mission whose agents have {@code type} (null: no type, everything allowed), from its descriptor. */
+    public static MissionOutcome run(Scheduler scheduler, EntryDefinition main, int agents, AgentType type,
+            Function<TestAgent, AgentProgram> program, Trace trace) {
         Mission.Builder builder = Mission.builder().main(main).scheduler(scheduler).trace(trace);
         for (int i = 0; i < agents; i++) {
-            builder.agent("a" + i, new TestAgent(), program);
+            builder.agent("a" + i, new TestAgent(), type, program);
         }
         try {
             return builder.build().run(TIMEOUT).requireCompleted();

@@ -5,6 +5,9 @@ import masl.runtime.AgentImplementation;
 /** The primitives of {@code Default} the tests need (masl-runtime cannot depend on the agents module). */
 public class TestAgent extends AgentImplementation {
 
+    /** An attribute for the permeability tests (descriptor agents/TestAgent.xml). */
+    public volatile int battery;
+
     public int getProxyID() {
         return services().proxyId();
     }
@@ -19,5 +22,11 @@ public class TestAgent extends AgentImplementation {
 
     public void logln(String message) {
         services().log(message + "\n");
+    }
+
+    /** Uses {@code amount} of the battery and returns what is left (the degraded-mode tests). */
+    public int drain(int amount) {
+        battery -= amount;
+        return battery;
     }
 }

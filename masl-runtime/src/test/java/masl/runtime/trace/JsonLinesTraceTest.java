@@ -50,4 +50,23 @@ class JsonLinesTraceTest {
                         + "\"reaction\":\"default\"}",
                 "{\"nanos\":5,\"event\":\"event-dropped\",\"agent\":0,\"name\":\"go\"}") + "\n", out.toString());
     }
+
+    @Test
+    void writesInvocationsAndCountermeasuresWithThePrimitiveUnderMember() {
+        StringWriter out = new StringWriter();
+        JsonLinesTrace trace = new JsonLinesTrace(out);
+        trace.record(new TraceEvent.InvocationMade(1, 0, 1, "getProxyID"));
+        trace.record(new TraceEvent.InvocationServed(2, 1, 0, "getProxyID"));
+        trace.record(new TraceEvent.InvocationDenied(3, 1, -1, "log", "nothing"));
+        trace.record(new TraceEvent.CountermeasureFired(4, 2, 2, "stopGripper", "grip"));
+        assertEquals(String.join("\n",
+                "{\"nanos\":1,\"event\":\"invocation-made\",\"requester\":0,\"callee\":1,"
+                        + "\"member\":\"getProxyID\"}",
+                "{\"nanos\":2,\"event\":\"invocation-served\",\"requester\":0,\"callee\":1,"
+                        + "\"member\":\"getProxyID\"}",
+                "{\"nanos\":3,\"event\":\"invocation-denied\",\"requester\":-1,\"callee\":1,\"member\":\"log\","
+                        + "\"state\":\"nothing\"}",
+                "{\"nanos\":4,\"event\":\"countermeasure-fired\",\"agent\":2,\"callee\":2,\"member\":\"stopGripper\","
+                        + "\"block\":\"grip\"}") + "\n", out.toString());
+    }
 }

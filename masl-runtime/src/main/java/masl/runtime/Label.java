@@ -1,0 +1,75 @@
+package masl.runtime;
+
+import java.util.concurrent.CompletableFuture;
+import java.util.function.Consumer;
+
+/**
+ * A MASL label (§10): collects invocations and tells when all have completed. {@code LLabel l;} is
+ * one label per member (a local: {@code block$l = ctx.newLabel();}), {@code SLabel s;} one per wave
+ * (a shared variable holding a label: {@code ctx.shared(S).initialise(ctx::newLabel)}).
+ *
+ * <p>Thread-safe: invocations complete on whichever thread serves them. A completion stores its
+ * result (if the registration asked for it) <em>before</em> it is counted, so a program that saw
+ * {@link #isFinished()} true reads every stored result. Completions advance the mission's change
+ * epoch, so a busy-wait on {@code isFinished()} parks instead of spinning and wakes at the last one.
+ */
+public final class Label {
+
+    private final ChangeEpoch changes;
+    /** Registrations of the current generation not yet completed; guarded by {@code this}. */
+    private int pending;
+    /** Bumped by {@link #free()}: completions of earlier generations are ignored. */
+    private long generation;
+
+    Label(ChangeEpoch changes) {
+        this.changes = changes;
+    }
+
+    /**
+     * {@code l.a.m(args)} (§10): registers {@code invocation}; an already completed one (a
+     * synchronous primitive) counts as done at once.
+     */
+    public <T> CompletableFuture<T> register(CompletableFuture<T> invocation) {
+        return register(invocation, value -> { });
+    }
+
+    /**
+     * {@code l.x = a.m(args)}, {@code l.a.x = …}: registers {@code invocation}, and when it completes
+     * (unless the label was freed meanwhile) passes its value to {@code store}, which assigns the
+     * variable or attribute, on the completing thread.
+     */
+    public <T> CompletableFuture<T> register(CompletableFuture<T> invocation, Consumer<? super T> store) {
+        long registeredIn;
+        synchronized (this) {
+            pending++;
+            registeredIn = generation;
+        }
+        invocation.thenAccept(value -> completed(registeredIn, () -> store.accept(value)));
+        return invocation;
+    }
+
+    private void completed(long registeredIn, Runnable store) {
+        synchronized (this) {
+            if (registeredIn != generation) {
+                return;
+            }
+            store.run();
+            pending--;
+        }
+        changes.advance();
+    }
+
+    /** {@code l.isFinished()} / {@code isFinished(l)}: every registered invocation has completed. Zero duration. */
+    public synchronized boolean isFinished() {
+        return pending == 0;
+    }
+
+    /** {@code l.free()}: forgets the registered invocations; their completions are ignored. Zero duration. */
+    public void free() {
+        synchronized (this) {
+            generation++;
+            pending = 0;
+        }
+        changes.advance();
+    }
+}
