@@ -28,11 +28,6 @@ class WheeledRobotTest {
         }
 
         @Override
-        public double proximityRange() {
-            return 0.2;
-        }
-
-        @Override
         public double[] odometry() {
             return new double[] {1, 2, 3};
         }

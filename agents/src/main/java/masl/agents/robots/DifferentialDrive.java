@@ -16,15 +16,12 @@ public interface DifferentialDrive {
 
     /**
      * The distance (m) from the robot's hull to the nearest obstacle along infra-red ray
-     * {@code sensor} (0 … {@link masl.agents.WheeledRobot#SENSORS}−1), or {@link #proximityRange()}
-     * when nothing is that close.
+     * {@code sensor} (0 … {@link masl.agents.WheeledRobot#SENSORS}−1), or the sensor's range when
+     * nothing is that close.
      *
      * @throws IndexOutOfBoundsException for a sensor the robot does not have
      */
     double proximity(int sensor);
-
-    /** The largest distance a proximity ray reports. */
-    double proximityRange();
 
     /** Dead-reckoned pose from the wheel encoders since the start: x (m), y (m), heading (rad). */
     double[] odometry();

@@ -101,6 +101,7 @@ public final class PhysicsWorld implements AutoCloseable {
         world.setQuickStepNumIterations(settings.solverIterations());
         // A thin allowed penetration keeps resting contacts from chattering between touching and not.
         world.setContactSurfaceLayer(0.001);
+        world.setCFM(1e-5);
         space = OdeHelper.createHashSpace(null);
         contactJoints = OdeHelper.createJointGroup();
         contacts = new ContactGenerator(world, contactJoints, settings.friction(), settings.maxContacts());

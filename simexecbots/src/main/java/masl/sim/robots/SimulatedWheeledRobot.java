@@ -125,11 +125,6 @@ public final class SimulatedWheeledRobot implements DifferentialDrive, PhysicsWo
     }
 
     @Override
-    public double proximityRange() {
-        return PROXIMITY_RANGE;
-    }
-
-    @Override
     public synchronized double[] odometry() {
         return new double[] {x, y, heading};
     }

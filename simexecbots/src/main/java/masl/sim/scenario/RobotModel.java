@@ -13,20 +13,18 @@ import masl.runtime.AgentImplementation;
 public enum RobotModel {
 
     /** Two-wheeled differential robot, Khepera-like: {@code WheeledRobot.xml}, {@code wheeled-robot.xode}. */
-    WHEELED("wheeled", WheeledRobot.class, "WheeledRobot.xml", "chassis"),
+    WHEELED("wheeled", WheeledRobot.class, "WheeledRobot.xml"),
     /** Legged modular atom, MAAM-like: {@code MaamAtom.xml}, {@code maam-atom.xode}. */
-    MAAM_ATOM("maam-atom", MaamAtom.class, "MaamAtom.xml", "atom");
+    MAAM_ATOM("maam-atom", MaamAtom.class, "MaamAtom.xml");
 
     private final String scenarioName;
     private final Class<? extends AgentImplementation> implementation;
     private final String descriptor;
-    private final String mainBody;
 
-    RobotModel(String scenarioName, Class<? extends AgentImplementation> implementation, String descriptor, String mainBody) {
+    RobotModel(String scenarioName, Class<? extends AgentImplementation> implementation, String descriptor) {
         this.scenarioName = scenarioName;
         this.implementation = implementation;
         this.descriptor = descriptor;
-        this.mainBody = mainBody;
     }
 
     /** The name a scenario uses: {@code model="wheeled"}. */
@@ -39,14 +37,9 @@ public enum RobotModel {
         return implementation;
     }
 
-    /** The descriptor's file name, found on the class path (agents/). */
+    /** The descriptor's file name, found on the class path (agents/): what a launcher imports for the type. */
     public String descriptor() {
         return descriptor;
-    }
-
-    /** The body (unprefixed name) whose pose is the robot's trajectory. */
-    public String mainBody() {
-        return mainBody;
     }
 
     public static Optional<RobotModel> named(String scenarioName) {

@@ -128,7 +128,7 @@ public final class ScenarioLoader {
                     case "physics" -> {
                         physics = physics(child, physics);
                         mode = mode(child);
-                        slicesPerStep = (int) number(child, "slicesPerStep", 64, 1, true);
+                        slicesPerStep = whole(child, "slicesPerStep", 64);
                         duration = number(child, "duration", 0, 0, false);
                     }
                     case "world" -> world(child).ifPresent(worlds::add);
@@ -155,9 +155,9 @@ public final class ScenarioLoader {
 
         private PhysicsSettings physics(XodeElement element, PhysicsSettings defaults) {
             double step = number(element, "step", defaults.stepSize(), 0, true);
-            int iterations = (int) number(element, "iterations", defaults.solverIterations(), 1, false);
+            int iterations = whole(element, "iterations", defaults.solverIterations());
             double friction = number(element, "friction", defaults.friction(), 0, false);
-            int contacts = (int) number(element, "contacts", defaults.maxContacts(), 1, false);
+            int contacts = whole(element, "contacts", defaults.maxContacts());
             double realTime = number(element, "realTimeFactor", defaults.realTimeFactor(), 0, false);
             long seed = defaults.seed();
             Optional<String> seedText = element.attribute("seed");
@@ -318,6 +318,24 @@ public final class ScenarioLoader {
                 return fallback;
             }
             return value;
+        }
+
+        /** The attribute as a whole number ≥ 1, else {@code fallback}. */
+        private int whole(XodeElement element, String attribute, int fallback) {
+            Optional<String> text = element.attribute(attribute);
+            if (text.isEmpty()) {
+                return fallback;
+            }
+            try {
+                int value = Integer.parseInt(text.get().trim());
+                if (value >= 1) {
+                    return value;
+                }
+            } catch (NumberFormatException e) {
+                // reported below
+            }
+            error(element, attribute + ": '" + text.get() + "' is not a whole number of at least 1");
+            return fallback;
         }
 
         private double parse(XodeElement element, String attribute, String text) {

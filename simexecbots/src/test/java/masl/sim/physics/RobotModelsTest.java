@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Test;
 /** The shipped robot bodies behave like the robots they model. */
 class RobotModelsTest {
 
-    /** Wheel radius of khepera.xode: 5 rad/s is 0.105 m/s. */
+    /** Wheel radius of wheeled-robot.xode: 5 rad/s is 0.105 m/s. */
     private static final double WHEEL_RADIUS = 0.021;
 
     private static PhysicsWorld worldWithGround() throws XodeException {

@@ -114,6 +114,16 @@ class ScenarioLoaderTest {
     }
 
     @Test
+    void countsAreWholeNumbersOfAtLeastOne() throws Exception {
+        assertEquals(List.of(
+                "s.xml:1:11: error: iterations: '2.5' is not a whole number of at least 1",
+                "s.xml:1:11: error: contacts: '0' is not a whole number of at least 1",
+                "s.xml:1:11: error: slicesPerStep: 'many' is not a whole number of at least 1"),
+                errors("<scenario><physics iterations=\"2.5\" contacts=\"0\" slicesPerStep=\"many\"/></scenario>"));
+        assertEquals(1, load("<scenario><physics slicesPerStep=\"1\"/></scenario>").slicesPerStep(), "one slice per step");
+    }
+
+    @Test
     void malformedXmlIsOneLocatedError() {
         List<String> errors = errors("<scenario>\n  <agent name=\"k0\">\n</scenario>");
         assertEquals(1, errors.size());

@@ -196,6 +196,34 @@ class ScenarioRunnerTest {
     }
 
     @Test
+    void aRobotClassMustExtendItsModelsClass() throws Exception {
+        Scenario scenario = scenario("<agent name=\"k0\" model=\"wheeled\" class=\"masl.agents.Default\"/>");
+        TestMission mission = new TestMission().agent("k0", Default.class, RobotPrograms::hello);
+        ScenarioException e = assertThrows(ScenarioException.class, () -> new ScenarioRunner(scenario).run(mission, quick()));
+        assertEquals(List.of("test.scenario.xml:3:1: error: class masl.agents.Default of agent 'k0' does not extend "
+                + "masl.agents.WheeledRobot, the class of model 'wheeled'"), e.errors());
+    }
+
+    @Test
+    void aSubclassOfTheModelsClassGetsTheBody() throws Exception {
+        Scenario scenario = scenario("<agent name=\"k0\" model=\"wheeled\" class=\"" + CarefulRobot.class.getName() + "\"/>");
+        AtomicReference<Double> battery = new AtomicReference<>();
+        TestMission mission = new TestMission().agent("k0", WheeledRobot.class, impl -> new AgentProgram() {
+            @Override
+            protected void resume(AgentContext ctx) {
+                battery.set(((CarefulRobot) impl).getBattery());
+                ctx.finish();
+            }
+        });
+        new ScenarioRunner(scenario).run(mission, quick());
+        assertEquals(1.0, battery.get(), 1e-3, "a full battery read through the subclass");
+    }
+
+    /** A user's robot class: the model's class with more of its own. */
+    public static final class CarefulRobot extends WheeledRobot {
+    }
+
+    @Test
     void anInitialisationClassThatIsMissingIsALocatedError() throws Exception {
         Scenario scenario = scenario("<initialisation class=\"no.such.Setup\"/>");
         ScenarioException e = assertThrows(ScenarioException.class,
@@ -255,6 +283,24 @@ class ScenarioRunnerTest {
     }
 
     @Test
+    void aScenarioFileWithItsWorldNextToItRunsFromItsPath() throws Exception {
+        Path file = Path.of(getClass().getResource("/scenarios/two-wheeled.scenario.xml").toURI());
+        Scenario scenario = new ScenarioLoader().load(file);
+        assertEquals("two wheeled robots", scenario.name());
+        assertEquals(file.resolveSibling("wander.masl"), scenario.mission().orElseThrow(), "resolved next to the scenario");
+        TestMission mission = new TestMission()
+                .agent("k0", WheeledRobot.class, impl -> RobotPrograms.wander(impl, 1000))
+                .agent("k1", WheeledRobot.class, impl -> RobotPrograms.wander(impl, 1000));
+        Path output = Path.of("build", "pictures", "two-wheeled");
+        SimulationResult result = new ScenarioRunner(scenario).run(mission, quick().withOutput(output));
+        assertEquals(MissionOutcome.Status.STOPPED, result.outcome().status(), "ended by the scenario's duration");
+        assertEquals(10.0, result.simulatedSeconds(), 1e-9);
+        for (RunRecorder.Sample s : result.recorder().samples()) {
+            assertTrue(Math.abs(s.x()) < 0.6 && Math.abs(s.y()) < 0.6, "stayed inside the walls: " + s);
+        }
+    }
+
+    @Test
     void aSmallScenarioWritesAPictureWithEveryRobotsPath() throws Exception {
         Scenario scenario = scenario("""
                 <physics seed="3" duration="6"/>
@@ -277,6 +323,8 @@ class ScenarioRunnerTest {
                     .count();
             assertTrue(pixels > 200, "robot " + robot + "'s path drawn: " + pixels + " pixels");
         }
-        assertTrue(Files.readString(output.resolve(ScenarioRunner.TRAJECTORIES)).startsWith("time,agent,x,y,z,heading\n0.000,k0,"));
+        String csv = Files.readString(output.resolve(ScenarioRunner.TRAJECTORIES));
+        assertEquals(result.trajectoriesCsv(), csv);
+        assertTrue(csv.startsWith("time,agent,x,y,z,heading\n0.000,k0,"), csv.substring(0, 60));
     }
 }
