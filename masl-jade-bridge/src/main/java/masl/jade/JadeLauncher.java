@@ -122,7 +122,8 @@ public final class JadeLauncher {
         List<AgentSpec> specs = program.agents();
         List<AgentImplementation> created = new ArrayList<>();
         ThreadedBehaviourScheduler scheduler = new ThreadedBehaviourScheduler();
-        Mission.Builder builder = Mission.builder().scheduler(scheduler).trace(trace);
+        // FIPA agents may invoke primitives at any time: a busy-wait may end on a request.
+        Mission.Builder builder = Mission.builder().scheduler(scheduler).trace(trace).openToOutsideInvocations();
         if (journal != null) {
             builder.journal(journal);
         }

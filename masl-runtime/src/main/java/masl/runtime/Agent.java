@@ -62,6 +62,8 @@ final class Agent implements AgentContext, AgentTask {
     private final EventQueue events = new EventQueue();
     /** The ticket of the agent's latest busy-wait park: an event perceived then wakes it (§5). */
     private volatile long busyWaitTicket;
+    /** Whether the agent's latest park is a busy-wait's: for the deadlock watchdog (Mission). */
+    private volatile boolean busyWaitPark;
     private final Queue<Runnable> invocations = new ConcurrentLinkedQueue<>();
     private volatile boolean finished;
 
@@ -187,6 +189,11 @@ final class Agent implements AgentContext, AgentTask {
         return current == PARKED || current == DONE;
     }
 
+    /** Parked in a busy-wait: waiting for a change, which an outside invocation is. */
+    boolean isParkedInBusyWait() {
+        return state.get() == PARKED && busyWaitPark;
+    }
+
     private void end() {
         finished = true;
         state.set(DONE);
@@ -198,6 +205,7 @@ final class Agent implements AgentContext, AgentTask {
             throw new IllegalStateException(describe() + ": runtime called again after a suspension");
         }
         suspended = true;
+        busyWaitPark = false;
         long ticket = ++lastTicket;
         wakeTicket.set(ticket);
         return ticket;
@@ -308,6 +316,7 @@ final class Agent implements AgentContext, AgentTask {
         long epoch = mission.changes().current();
         if (epoch == busyWaitEpoch && progress == busyWaitProgress) {
             long ticket = mission.changes().parkUntilChanged(this, epoch);
+            busyWaitPark = true;
             busyWaitTicket = ticket;
             // An emitter that pushed before the ticket was published has not woken us: wake ourselves.
             if (!isReacting() && !events.isEmpty()) {
