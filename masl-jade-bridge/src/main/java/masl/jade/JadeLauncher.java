@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 import java.util.function.Function;
 import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
@@ -45,7 +46,7 @@ public final class JadeLauncher {
     private AcceptPolicy acceptPolicy = AcceptPolicy.INITIAL_STATE;
     private Appendable journal;
     private Trace trace = Trace.NONE;
-    private Runnable whenReady = () -> { };
+    private Consumer<Mission> whenReady = mission -> { };
 
     private JadeLauncher(MissionProgram program) {
         this.program = Objects.requireNonNull(program, "program");
@@ -86,9 +87,10 @@ public final class JadeLauncher {
 
     /**
      * Called on the launching thread once every JADE agent of a mission exists and is registered with
-     * the DF, just before the mission starts: from then on FIPA agents can find and invoke them.
+     * the DF, with the mission about to run: from then on FIPA agents can find and invoke them, and
+     * the caller may {@link Mission#stop()} it (on Ctrl-C, say).
      */
-    public JadeLauncher whenReady(Runnable action) {
+    public JadeLauncher whenReady(Consumer<Mission> action) {
         this.whenReady = Objects.requireNonNull(action, "action");
         return this;
     }
@@ -120,7 +122,8 @@ public final class JadeLauncher {
         List<AgentSpec> specs = program.agents();
         List<AgentImplementation> created = new ArrayList<>();
         ThreadedBehaviourScheduler scheduler = new ThreadedBehaviourScheduler();
-        Mission.Builder builder = Mission.builder().scheduler(scheduler).trace(trace);
+        // FIPA agents may invoke primitives at any time: a busy-wait may end on a request.
+        Mission.Builder builder = Mission.builder().scheduler(scheduler).trace(trace).openToOutsideInvocations();
         if (journal != null) {
             builder.journal(journal);
         }
@@ -163,7 +166,7 @@ public final class JadeLauncher {
                 }
             }
             scheduler.attach(hosts);
-            whenReady.run();
+            whenReady.accept(mission);
             return mission.run(timeout);
         } catch (StaleProxyException e) {
             throw new JadeException("the JADE container ended before the mission", e);

@@ -60,6 +60,26 @@ class FipaRequestTest {
         assertEquals(List.of(), JadePlatformTest.newThreads(threadsBefore), "threads left after the platform closed");
     }
 
+    /** In-process the watchdog would call this busy-wait a deadlock; inside JADE a request may end it. */
+    @Test
+    void aRequestEndsABusyWaitingAgent() throws Exception {
+        MissionProgram program = TestPrograms.of(null,
+                List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
+                TestPrograms.BusyUntilReleased::new);
+        CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
+            try {
+                return JadeLauncher.of(program).types(TestPrograms::type).run(platform, TIMEOUT);
+            } catch (InterruptedException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        awaitRegistered();
+        assertEquals(ACLMessage.INFORM, invoke("release", List.of()).getPerformative());
+        MissionOutcome outcome = mission.get();
+        assertEquals(MissionOutcome.Status.COMPLETED, outcome.status(), outcome::toString);
+        assertEquals("released", outcome.journal());
+    }
+
     @Test
     void primitivesAnswerInformWithTheirResult() throws Exception {
         MissionOutcome outcome = runWhile(() -> {

@@ -65,6 +65,15 @@ class JadeLauncherTest {
     }
 
     @Test
+    void theMissionHandedOverWhenReadyCanBeStopped() throws Exception {
+        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
+            MissionOutcome outcome = JadeLauncher.of(WAITER).types(TestPrograms::type).whenReady(Mission::stop)
+                    .run(platform, Duration.ofSeconds(30));
+            assertEquals(MissionOutcome.Status.STOPPED, outcome.status());
+        }
+    }
+
+    @Test
     void anAgentNameTakenOnThePlatformIsReported() throws Exception {
         try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
             platform.container().acceptNewAgent("w", new Probe()).start();

@@ -93,6 +93,24 @@ public final class TestPrograms {
         }
     }
 
+    /** {@code while (!released) {}}: a busy-wait that only a FIPA agent's {@code release()} ends. */
+    static final class BusyUntilReleased extends CompactProgram {
+        BusyUntilReleased(TestAgent self) {
+            super(self);
+        }
+
+        @Override
+        protected void resume(AgentContext ctx) {
+            while (!((ServiceAgent) self).released().isDone()) {
+                if (!ctx.busyWaitIteration()) {
+                    return;
+                }
+            }
+            self.log("released");
+            ctx.finish();
+        }
+    }
+
     private static Path descriptors() {
         try {
             return Path.of(TestPrograms.class.getResource("TestAgent.xml").toURI()).getParent();

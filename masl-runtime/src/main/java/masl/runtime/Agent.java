@@ -74,6 +74,8 @@ final class Agent implements AgentContext, AgentTask {
     private final EventQueue events = new EventQueue();
     /** The ticket of the agent's latest busy-wait park: an event perceived then wakes it (§5). */
     private volatile long busyWaitTicket;
+    /** Whether the agent's latest park is a busy-wait's: for the deadlock watchdog (Mission). */
+    private volatile boolean busyWaitPark;
     private final Queue<PendingInvocation> invocations = new ConcurrentLinkedQueue<>();
     private final Permeability permeability;
     /** The ticket of the park of a pending {@code wait(state)}, 0 if none: who zeroes it ends the wait. */
@@ -208,6 +210,11 @@ final class Agent implements AgentContext, AgentTask {
         return current == PARKED || current == DONE;
     }
 
+    /** Parked in a busy-wait: waiting for a change, which an outside invocation is. */
+    boolean isParkedInBusyWait() {
+        return state.get() == PARKED && busyWaitPark;
+    }
+
     private void end() {
         finished = true;
         state.set(DONE);
@@ -219,6 +226,7 @@ final class Agent implements AgentContext, AgentTask {
             throw new IllegalStateException(describe() + ": runtime called again after a suspension");
         }
         suspended = true;
+        busyWaitPark = false;
         long ticket = ++lastTicket;
         wakeTicket.set(ticket);
         return ticket;
@@ -329,6 +337,7 @@ final class Agent implements AgentContext, AgentTask {
         long epoch = mission.changes().current();
         if (epoch == busyWaitEpoch && progress == busyWaitProgress) {
             long ticket = mission.changes().parkUntilChanged(this, epoch);
+            busyWaitPark = true;
             busyWaitTicket = ticket;
             // An emitter that pushed before the ticket was published has not woken us: wake ourselves.
             if (!isReacting() && !events.isEmpty()) {

@@ -60,7 +60,6 @@ public final class Mission {
     private final AtomicLong schedules = new AtomicLong();
     /** Wake-ups promised from outside the agents: sleep timers, futures being awaited, running primitives. */
     private final AtomicInteger pendingOutsideWakeUps = new AtomicInteger();
-    /** Runs the Java code of asynchronous primitives (MASL §9), which may block for as long as they act. */
     /** Asynchronous primitives running: the mission completes when they and every program are over. */
     private final AtomicInteger runningPrimitives = new AtomicInteger();
     private final ExecutorService primitives = Executors.newCachedThreadPool(runnable -> {
@@ -68,11 +67,13 @@ public final class Mission {
         thread.setDaemon(true);
         return thread;
     });
+    private final boolean openToOutsideInvocations;
 
     private Mission(Builder builder) {
         scheduler = builder.scheduler != null ? builder.scheduler : new PoolScheduler();
         journal = new Journal(builder.journalSink);
         trace = builder.trace;
+        openToOutsideInvocations = builder.openToOutsideInvocations;
         coordinator = new EntryCoordinator(trace, scheduler::nanoTime, changes);
         Map<EntryDefinition, Entry> blocks = new IdentityHashMap<>();
         if (builder.main != null) {
@@ -126,7 +127,8 @@ public final class Mission {
      * Waits for the end, looking for a deadlock every {@link #WATCHDOG_PERIOD}: every agent idle
      * (parked or done), no wake-up promised from outside the agents pending (a sleep, an awaited
      * future: what completes it is unknown, so it is given the benefit of the doubt), and no
-     * agent scheduled since the previous look.
+     * agent scheduled since the previous look. In a mission {@linkplain Builder#openToOutsideInvocations()
+     * open to outside invocations}, an agent parked in a busy-wait is such a promise too.
      *
      * <p>Agents are read one by one, not in one snapshot, so a look alone could miss a wake-up made
      * between two reads; but such a wake-up counts a schedule first, so two looks that agree on
@@ -151,7 +153,8 @@ public final class Mission {
                 return MissionOutcome.Status.TIMED_OUT;
             }
             long scheduled = schedules.get();
-            boolean idle = pendingOutsideWakeUps.get() == 0 && agents.stream().allMatch(Agent::isIdle);
+            boolean idle = pendingOutsideWakeUps.get() == 0 && agents.stream().allMatch(Agent::isIdle)
+                    && !(openToOutsideInvocations && agents.stream().anyMatch(Agent::isParkedInBusyWait));
             if (idle && scheduled == schedules.get() && scheduled == schedulesAtLastIdleLook) {
                 return MissionOutcome.Status.DEADLOCKED;
             }
@@ -318,6 +321,7 @@ public final class Mission {
         private Scheduler scheduler;
         private Appendable journalSink;
         private Trace trace = Trace.NONE;
+        private boolean openToOutsideInvocations;
 
         private Builder() {
         }
@@ -370,6 +374,19 @@ public final class Mission {
 
         public Builder trace(Trace trace) {
             this.trace = Objects.requireNonNull(trace, "trace");
+            return this;
+        }
+
+        /**
+         * Declares that invocations may come from outside the mission's agents
+         * ({@link Mission#submitInvocation}: FIPA agents, through the JADE bridge). An outside
+         * invocation is a change a busy-wait observes, so while any agent is parked in a busy-wait
+         * the deadlock watchdog does not end the mission: only its timeout or {@link #stop()} do.
+         * Agents that all wait at barriers (or are done) are still a deadlock: an invocation served
+         * on a blocked agent's behalf does not move it.
+         */
+        public Builder openToOutsideInvocations() {
+            this.openToOutsideInvocations = true;
             return this;
         }
 

@@ -90,7 +90,7 @@ public final class BridgePingPong {
                             }
                             return server;
                         })
-                        .whenReady(ready::countDown)
+                        .whenReady(started -> ready.countDown())
                         .run(platform, MISSION_TIMEOUT);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();

@@ -15,7 +15,8 @@ final class CommandLine {
     private static final Map<String, Set<String>> OPTIONS = Map.of(
             "check", Set.of("--agent-path"),
             "compile", Set.of("--agent-path", "-d"),
-            "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--trace"),
+            "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--trace", "--platform", "--main-host",
+                    "--main-port"),
             "timeline", Set.of("-o"));
     private static final Set<String> FLAGS = Set.of("--threads");
 
@@ -28,6 +29,9 @@ final class CommandLine {
     Long seed;
     Long timeoutSeconds;
     String traceFile;
+    String platform = "inproc";
+    String mainHost;
+    Integer mainPort;
 
     private CommandLine(String command) {
         this.command = command;
@@ -78,8 +82,28 @@ final class CommandLine {
             case "--trace" -> traceFile = value;
             case "--seed" -> seed = number(option, value, Long.MIN_VALUE);
             case "--timeout" -> timeoutSeconds = number(option, value, 1);
+            case "--platform" -> platform = oneOf(option, value, "inproc", "jade");
+            case "--main-host" -> mainHost = value;
+            case "--main-port" -> mainPort = port(option, value);
             default -> throw new UsageException("unknown option " + option);
         }
+    }
+
+    private static String oneOf(String option, String value, String... choices) throws UsageException {
+        for (String choice : choices) {
+            if (choice.equals(value)) {
+                return value;
+            }
+        }
+        throw new UsageException(option + " is one of " + String.join(", ", choices) + ", got '" + value + "'");
+    }
+
+    private static int port(String option, String value) throws UsageException {
+        long port = number(option, value, 1);
+        if (port > 65535) {
+            throw new UsageException(option + " must be at most 65535, got " + value);
+        }
+        return (int) port;
     }
 
     private static long number(String option, String value, long minimum) throws UsageException {

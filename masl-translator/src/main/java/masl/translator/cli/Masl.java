@@ -30,6 +30,7 @@ public final class Masl {
 
     static final String USAGE_TEXT = """
             usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE]
+                           [--platform inproc|jade] [--main-host HOST --main-port PORT]
                    masl compile FILE -d DIR [--agent-path PATH]
                    masl check FILE [--agent-path PATH]
                    masl timeline TRACE -o FILE.html
@@ -46,6 +47,11 @@ public final class Masl {
               --seed N            run on one thread, every scheduling choice drawn from seed N (replayable)
               --timeout SECONDS   stop the mission after SECONDS (default: no limit)
               --trace FILE        write the trace (one JSON object per line) to FILE
+              --platform P        inproc (default): run in this process; jade: run inside a JADE platform,
+                                  one JADE agent per MASL agent, registered with the DF, answering FIPA requests
+              --main-host HOST, --main-port PORT
+                                  with --platform jade: join the platform whose main container listens there
+                                  instead of starting one on loopback
             exit status: 0 success, 1 errors in the program or its descriptors, 2 the mission failed,
                          deadlocked or timed out, 64 bad usage, 70 internal error
             """;

@@ -43,6 +43,9 @@ final class RunCommand {
         if (line.threads && line.seed != null) {
             throw new UsageException("--threads and --seed choose two different schedulers: give one of them");
         }
+        if (!line.platform.equals("jade") && (line.mainHost != null || line.mainPort != null)) {
+            throw new UsageException("--main-host and --main-port join a JADE platform: give them with --platform jade");
+        }
         AgentPath agentPath = AgentPath.parse(line.agentPath);
         Translation translation = new Translator(agentPath).translate(source);
         new DiagnosticPrinter(java.util.Map.of(source.name(), source.text()))
@@ -51,6 +54,17 @@ final class RunCommand {
             return Masl.PROGRAM_ERRORS;
         }
         MissionLoader loaded = MissionLoader.load(translation, agentPath);
+        Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
+        if (line.platform.equals("jade")) {
+            JadeRun jade = new JadeRun(line, source, agentPath, loaded, out);
+            Writer trace = openTrace(line.traceFile);
+            try {
+                return report(jade.run(trace == null ? null : new JsonLinesTrace(trace), timeout), null);
+            } finally {
+                out.flush();
+                closeTrace(trace, line.traceFile);
+            }
+        }
         Mission.Builder builder;
         try {
             builder = loaded.newMission();
@@ -68,7 +82,6 @@ final class RunCommand {
         if (trace != null) {
             builder.trace(new JsonLinesTrace(trace));
         }
-        Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
         try {
             return report(runStoppable(builder.build(), timeout), line.seed);
         } finally {

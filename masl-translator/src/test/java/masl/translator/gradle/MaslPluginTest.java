@@ -81,6 +81,13 @@ class MaslPluginTest {
         assertEquals("Hi team\n", result.getOutput());
     }
 
+    @Test
+    void maslRunInsideJadePrintsTheSameJournal() {
+        BuildResult result = gradle("-q", "maslRun", "-Pmission=team", "-Pplatform=jade").build();
+
+        assertEquals("Hi team\n", result.getOutput());
+    }
+
     private String generatedSources() throws IOException {
         try (var files = Files.walk(project.resolve("build/generated/masl/main"))) {
             StringBuilder all = new StringBuilder();

@@ -1,0 +1,98 @@
+package masl.e2e;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import masl.jade.JadeOptions;
+import masl.jade.JadePlatform;
+import masl.translator.cli.Masl;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * The worked examples of examples.md (E1, E2, E3, E6, E7, E8) run from their MASL sources inside
+ * JADE, as a user runs them: {@code masl run FILE --platform jade}, joining a main container this
+ * class starts once (JADE keeps a platform at least 3 s; and JADE's runtime, one per JVM, does not
+ * shut a second main container down cleanly). The command's own platform, its default, is tested in
+ * masl-translator ({@code JadeRunTest}). Each journal is the one examples.md states; standard error
+ * stays empty.
+ */
+@Timeout(120)
+class JadeExamplesTest {
+
+    private static JadePlatform platform;
+
+    @BeforeAll
+    static void startPlatform() {
+        platform = JadePlatform.start(JadeOptions.mainContainer());
+    }
+
+    @AfterAll
+    static void closePlatform() {
+        platform.close();
+    }
+
+    @Test
+    void e1ScalarMainIsRunByOneAgent() {
+        assertEquals("Hi team\n", maslJoined("e1_scalar_main.masl"));
+    }
+
+    @Test
+    void e2SharedAndLocalVariablesInLockStep() {
+        assertEquals("n=5\n" + "mine=1\n".repeat(5), maslJoined("e2_shared_and_local.masl"));
+    }
+
+    @Test
+    void e3AsynchronousChildIsOneInstructionOfItsSynchronousParent() {
+        assertEquals("xxxxxxyyyy\n", maslJoined("e3_asynchronous_child.masl"));
+    }
+
+    @Test
+    void e6LockedBlockAdmitsOneAgentPerWave() {
+        assertEquals("in 1\n".repeat(3), maslJoined("e6_one_at_a_time.masl"));
+    }
+
+    @Test
+    void e7ReelectThinsTheWaveOut() {
+        assertEquals(List.of("0:1", "1:2", "2:3"), sorted(maslJoined("e7_reelect.masl")));
+    }
+
+    /** E8: two {@code in}, two {@code out}, no {@code never}; each agent's {@code in} precedes its {@code out}. */
+    @Test
+    void e8BreakLeavesTwoBlocks() {
+        String journal = maslJoined("e8_break_out_of_two.masl");
+        assertEquals(List.of("in", "in", "out", "out"), sorted(journal));
+        int open = 0;
+        for (String line : journal.split("\n")) {
+            open += line.equals("in") ? 1 : -1;
+            if (open < 0) {
+                throw new AssertionError("an out before its agent's in:\n" + journal);
+            }
+        }
+    }
+
+    /** The journal of {@code masl run} on an example; fails unless the run succeeds silently. */
+    private static String maslJoined(String example) {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        List<String> arguments = new ArrayList<>(List.of("run", "src/test/resources/examples/" + example,
+                "--platform", "jade", "--main-host", platform.host(), "--main-port", String.valueOf(platform.port()),
+                "--timeout", "60"));
+        int status = new Masl(new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8)).run(arguments.toArray(String[]::new));
+        assertEquals("", err.toString(StandardCharsets.UTF_8));
+        assertEquals(0, status);
+        return out.toString(StandardCharsets.UTF_8);
+    }
+
+    private static List<String> sorted(String journal) {
+        return Arrays.stream(journal.split("\n")).sorted().toList();
+    }
+}
