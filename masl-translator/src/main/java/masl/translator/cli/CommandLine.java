@@ -15,7 +15,7 @@ final class CommandLine {
     private static final Map<String, Set<String>> OPTIONS = Map.of(
             "check", Set.of("--agent-path"),
             "compile", Set.of("--agent-path", "-d"),
-            "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--trace"),
+            "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--trace", "--sim", "--out"),
             "timeline", Set.of("-o"));
     private static final Set<String> FLAGS = Set.of("--threads");
 
@@ -28,6 +28,7 @@ final class CommandLine {
     Long seed;
     Long timeoutSeconds;
     String traceFile;
+    String scenarioFile;
 
     private CommandLine(String command) {
         this.command = command;
@@ -73,7 +74,8 @@ final class CommandLine {
     private void set(String option, String value) throws UsageException {
         switch (option) {
             case "--agent-path" -> agentPath = value;
-            case "-d" -> outputFolder = value;
+            case "-d", "--out" -> outputFolder = value;
+            case "--sim" -> scenarioFile = value;
             case "-o" -> outputFile = value;
             case "--trace" -> traceFile = value;
             case "--seed" -> seed = number(option, value, Long.MIN_VALUE);
