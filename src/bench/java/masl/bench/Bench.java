@@ -1,11 +1,15 @@
 package masl.bench;
 
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import masl.jade.JadeOptions;
+import masl.jade.JadePlatform;
+import masl.jade.bench.AclPingPong;
 
 /**
  * {@code gradle bench}: runs MASL and its baselines side by side in one JVM and prints tables of
@@ -27,13 +31,36 @@ public final class Bench {
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.vm.name"),
                 System.getProperty("java.version"), Runtime.getRuntime().maxMemory() >> 20);
         lockStep(options);
+        invocations(options);
+    }
+
+    /**
+     * The JADE baseline of the invocation benchmarks: ACL REQUEST/INFORM round trips in one
+     * container. MASL's in-process and bridged invocations join this table when external
+     * invocations are translated (issue 7).
+     */
+    private static void invocations(Options options) throws Exception {
+        System.out.println("2. Invocations: synchronous round trips per second between agent pairs");
+        System.out.printf(Locale.ROOT, "%8s | %20s | %20s%n", "pairs", "JADE ACL ping-pong", "MASL in-process");
+        Duration window = Duration.ofMillis((long) (options.seconds * 1000));
+        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
+            for (int pairs : new int[] {1, 10}) {
+                double best = 0;
+                for (int round = 0; round < ROUNDS; round++) {
+                    best = Math.max(best, AclPingPong.measure(platform, pairs, window.dividedBy(2), window).roundTripsPerSecond());
+                }
+                System.out.printf(Locale.ROOT, "%8d | %20s | %20s%n", pairs, rate(best), "not translated yet");
+            }
+        }
+        System.out.println();
     }
 
     private static void lockStep(Options options) throws Exception {
         LockStepRun masl = new MaslLockStep();
         LockStepRun pool = new TaskPoolWaves();
         LockStepRun threads = new PhaserThreads();
-        System.out.println("1. Lock-step: N agents in one synchronous block, steps per second (one barrier trip = one step)");
+        System.out.println("1. Lock-step: N agents in one synchronous block, steps per second (one barrier trip = one step),");
+        System.out.println("   timed from the end of the first step to the end of the last (start-up left out)");
         System.out.printf(Locale.ROOT, "%8s | %14s | %14s | %14s | %12s | %12s%n",
                 "N", "MASL (pool)", pool.name().replace("Java tasks, ", ""), "threads+Phaser", "MASL/pool", "MASL/threads");
         for (int agents : options.sizes) {
@@ -48,11 +75,8 @@ public final class Bench {
             }
             for (int round = 0; round < ROUNDS; round++) {
                 for (LockStepRun run : runs) {
-                    Callable<Long> prepared = run.prepare(agents, steps);
-                    long start = System.nanoTime();
-                    long made = prepared.call();
-                    double perSecond = made / ((System.nanoTime() - start) / 1e9);
-                    best.merge(run, perSecond, Math::max);
+                    Callable<Double> prepared = run.prepare(agents, steps);
+                    best.merge(run, prepared.call(), Math::max);
                 }
             }
             Double maslRate = best.get(masl);

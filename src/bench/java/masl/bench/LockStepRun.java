@@ -9,7 +9,8 @@ interface LockStepRun {
 
     /**
      * Everything that is not the run itself (translating, compiling, allocating), done before the
-     * clock starts; the returned call runs the agents and returns the number of steps made.
+     * clock starts; the returned call runs the agents and returns their steps per second, timed by
+     * a {@link StepClock}.
      */
-    Callable<Long> prepare(int agents, int steps) throws Exception;
+    Callable<Double> prepare(int agents, int steps) throws Exception;
 }

@@ -2,7 +2,6 @@ package masl.bench;
 
 import java.time.Duration;
 import java.util.concurrent.Callable;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
 import masl.runtime.Mission;
@@ -17,7 +16,7 @@ import masl.translator.source.SourceFile;
 /**
  * MASL itself: a program of N agents in one synchronous block looping over a trivial instruction,
  * translated and compiled as {@code masl run} does, run on the default pool (one worker per core).
- * Steps are counted as barrier trips in the mission's trace.
+ * Steps are the barrier trips of the mission's trace.
  */
 final class MaslLockStep implements LockStepRun {
 
@@ -27,21 +26,21 @@ final class MaslLockStep implements LockStepRun {
     }
 
     @Override
-    public Callable<Long> prepare(int agents, int steps) throws Exception {
+    public Callable<Double> prepare(int agents, int steps) throws Exception {
         MissionLoader program = compile(source(agents, steps));
-        AtomicLong trips = new AtomicLong();
+        StepClock clock = new StepClock();
         Mission mission = program.newMission()
                 .scheduler(new PoolScheduler())
                 .journal(new StringBuilder())
                 .trace(event -> {
                     if (event instanceof TraceEvent.BarrierTripped) {
-                        trips.incrementAndGet();
+                        clock.stepEnded();
                     }
                 })
                 .build();
         return () -> {
             mission.run(Duration.ofMinutes(10)).requireCompleted();
-            return trips.get();
+            return clock.stepsPerSecond();
         };
     }
 

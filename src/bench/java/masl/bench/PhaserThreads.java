@@ -17,12 +17,19 @@ final class PhaserThreads implements LockStepRun {
     }
 
     @Override
-    public Callable<Long> prepare(int agents, int steps) {
+    public Callable<Double> prepare(int agents, int steps) {
         return () -> run(agents, steps);
     }
 
-    private static long run(int agents, int steps) throws Exception {
-        Phaser barrier = new Phaser(agents);
+    private static double run(int agents, int steps) throws Exception {
+        StepClock clock = new StepClock();
+        Phaser barrier = new Phaser(agents) {
+            @Override
+            protected boolean onAdvance(int phase, int parties) {
+                clock.stepEnded();
+                return false;
+            }
+        };
         int[] counters = new int[agents];
         List<Thread> threads = new ArrayList<>(agents);
         for (int agent = 0; agent < agents; agent++) {
@@ -40,6 +47,6 @@ final class PhaserThreads implements LockStepRun {
         for (Thread thread : threads) {
             thread.join();
         }
-        return steps;
+        return clock.stepsPerSecond();
     }
 }

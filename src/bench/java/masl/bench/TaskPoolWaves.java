@@ -22,16 +22,17 @@ final class TaskPoolWaves implements LockStepRun {
     }
 
     @Override
-    public Callable<Long> prepare(int agents, int steps) {
+    public Callable<Double> prepare(int agents, int steps) {
         return () -> run(agents, steps);
     }
 
-    private static long run(int agents, int steps) throws Exception {
+    private static double run(int agents, int steps) throws Exception {
         ExecutorService pool = Executors.newFixedThreadPool(WORKERS);
         try {
             int[] counters = new int[agents];
             AtomicInteger pending = new AtomicInteger();
             AtomicInteger stepsDone = new AtomicInteger();
+            StepClock clock = new StepClock();
             CompletableFuture<Void> finished = new CompletableFuture<>();
             Runnable[] wave = new Runnable[1];
             wave[0] = () -> {
@@ -41,6 +42,7 @@ final class TaskPoolWaves implements LockStepRun {
                     pool.execute(() -> {
                         counters[self]++;
                         if (pending.decrementAndGet() == 0) {
+                            clock.stepEnded();
                             if (stepsDone.incrementAndGet() == steps) {
                                 finished.complete(null);
                             } else {
@@ -52,7 +54,7 @@ final class TaskPoolWaves implements LockStepRun {
             };
             wave[0].run();
             finished.get();
-            return (long) stepsDone.get();
+            return clock.stepsPerSecond();
         } finally {
             pool.shutdown();
             pool.awaitTermination(10, TimeUnit.SECONDS);

@@ -27,11 +27,7 @@ class ScaleTest {
     @Test
     @Timeout(300)
     void aThousandAgentsTakeAThousandLockStepSteps() throws IOException {
-        String agents = IntStream.range(0, 1000).mapToObj(i -> "a" + i).collect(Collectors.joining(", "));
-        Path program = folder.resolve("thousand.masl");
-        Files.writeString(program, "import Default.xml as Default;\n"
-                + "Default " + agents + " = newAgent(Default);\n"
-                + """
+        Path program = team("thousand.masl", 1000, """
                 synchronous entry main (true) {
                   shared int steps = 0;
                   local int i = 0;
@@ -48,11 +44,7 @@ class ScaleTest {
     @Test
     @Timeout(300)
     void tenThousandAgentsTakeTenLockStepSteps() throws IOException {
-        String agents = IntStream.range(0, 10_000).mapToObj(i -> "robot" + i).collect(Collectors.joining(", "));
-        Path program = folder.resolve("ten-thousand.masl");
-        Files.writeString(program, "import Default.xml as Default;\n"
-                + "Default " + agents + " = newAgent(Default);\n"
-                + """
+        Path program = team("ten-thousand.masl", 10_000, """
                 synchronous entry main (true) {
                   shared int arrived = 0;
                   local int i = 0;
@@ -65,6 +57,14 @@ class ScaleTest {
                 }
                 """);
         assertEquals("10000 agents, 10 steps each\n", run(program));
+    }
+
+    /** A program of {@code size} Default agents, a0, a1, ..., running {@code blocks}. */
+    private Path team(String name, int size, String blocks) throws IOException {
+        String agents = IntStream.range(0, size).mapToObj(i -> "a" + i).collect(Collectors.joining(", "));
+        Path program = folder.resolve(name);
+        Files.writeString(program, "import Default.xml as Default;\nDefault " + agents + " = newAgent(Default);\n" + blocks);
+        return program;
     }
 
     private static String run(Path program) {

@@ -45,6 +45,7 @@ public final class JadeLauncher {
     private AcceptPolicy acceptPolicy = AcceptPolicy.INITIAL_STATE;
     private Appendable journal;
     private Trace trace = Trace.NONE;
+    private Runnable whenReady = () -> { };
 
     private JadeLauncher(MissionProgram program) {
         this.program = Objects.requireNonNull(program, "program");
@@ -80,6 +81,15 @@ public final class JadeLauncher {
 
     public JadeLauncher trace(Trace missionTrace) {
         this.trace = Objects.requireNonNull(missionTrace, "missionTrace");
+        return this;
+    }
+
+    /**
+     * Called on the launching thread once every JADE agent of a mission exists and is registered with
+     * the DF, just before the mission starts: from then on FIPA agents can find and invoke them.
+     */
+    public JadeLauncher whenReady(Runnable action) {
+        this.whenReady = Objects.requireNonNull(action, "action");
         return this;
     }
 
@@ -120,6 +130,10 @@ public final class JadeLauncher {
             return implementation;
         });
         Mission mission = builder.build();
+        if (created.size() != specs.size()) {
+            throw new IllegalStateException(program.getClass().getName() + " declares " + specs.size()
+                    + " agents but made " + created.size() + " through the implementation factory");
+        }
         List<PrimitiveTable> tables = new ArrayList<>();
         for (int id = 0; id < specs.size(); id++) {
             tables.add(new PrimitiveTable(types.apply(specs.get(id)), created.get(id).getClass()));
@@ -149,6 +163,7 @@ public final class JadeLauncher {
                 }
             }
             scheduler.attach(hosts);
+            whenReady.run();
             return mission.run(timeout);
         } catch (StaleProxyException e) {
             throw new JadeException("the JADE container ended before the mission", e);

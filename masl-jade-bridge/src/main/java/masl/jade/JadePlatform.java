@@ -1,6 +1,8 @@
 package masl.jade;
 
+import jade.content.lang.Codec;
 import jade.content.lang.sl.SLCodec;
+import jade.content.onto.OntologyException;
 import jade.content.onto.basic.Action;
 import jade.core.Agent;
 import jade.core.Profile;
@@ -13,6 +15,7 @@ import jade.lang.acl.ACLMessage;
 import jade.wrapper.AgentContainer;
 import jade.wrapper.ControllerException;
 import jade.wrapper.StaleProxyException;
+import java.io.File;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.net.InetAddress;
@@ -22,6 +25,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Comparator;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -56,14 +60,17 @@ public final class JadePlatform implements AutoCloseable {
     private final JadeOptions options;
     private final AgentContainer container;
     private final int port;
+    private final String httpAddress;
     private final Path fileDir;
     private final CountDownLatch terminated = new CountDownLatch(1);
     private boolean closed;
 
-    private JadePlatform(JadeOptions options, AgentContainer container, int port, Path fileDir) {
+    private JadePlatform(JadeOptions options, AgentContainer container, int port, String httpAddress,
+            Path fileDir) {
         this.options = options;
         this.container = container;
         this.port = port;
+        this.httpAddress = httpAddress;
         this.fileDir = fileDir;
     }
 
@@ -99,12 +106,15 @@ public final class JadePlatform implements AutoCloseable {
         }
         for (int attempt = 1; ; attempt++) {
             int port = choosePort ? freePort(options.localHost()) : options.localPort();
-            Profile profile = profile(options, port, fileDir);
+            String httpAddress = options.httpTransport()
+                    ? "http://" + options.localHost() + ":" + freePort(options.localHost()) + "/acc"
+                    : null;
+            Profile profile = profile(options, port, httpAddress, fileDir);
             AgentContainer container = options.joins()
                     ? Runtime.instance().createAgentContainer(profile)
                     : Runtime.instance().createMainContainer(profile);
             if (container != null) {
-                return new JadePlatform(options, container, port, fileDir);
+                return new JadePlatform(options, container, port, httpAddress, fileDir);
             }
             // JADE logs the reason and returns null; a port taken meanwhile is worth another try.
             if (options.joins() || !choosePort || attempt == PORT_ATTEMPTS) {
@@ -121,7 +131,7 @@ public final class JadePlatform implements AutoCloseable {
                         + " (is the port free?)");
     }
 
-    private static Profile profile(JadeOptions options, int port, Path fileDir) {
+    private static Profile profile(JadeOptions options, int port, String httpAddress, Path fileDir) {
         ProfileImpl profile = new ProfileImpl(false);
         profile.setParameter(Profile.MAIN, Boolean.toString(!options.joins()));
         profile.setParameter(Profile.LOCAL_HOST, options.localHost());
@@ -133,15 +143,14 @@ public final class JadePlatform implements AutoCloseable {
         if (isLoopback(options.localHost())) {
             profile.setParameter("jade_imtp_leap_JICP_JICPServer_acceptlocalhostonly", "true");
         }
-        if (options.httpTransport()) {
-            profile.setParameter(Profile.MTPS, "jade.mtp.http.MessageTransportProtocol(http://"
-                    + options.localHost() + ":" + freePort(options.localHost()) + "/acc)");
+        if (httpAddress != null) {
+            profile.setParameter(Profile.MTPS, "jade.mtp.http.MessageTransportProtocol(" + httpAddress + ")");
         } else {
             profile.setParameter(Profile.NO_MTP, "true");
         }
         profile.setParameter(Profile.DETECT_MAIN, "false");
         profile.setParameter(Profile.GUI, "false");
-        profile.setParameter(Profile.FILE_DIR, fileDir.toString() + java.io.File.separator);
+        profile.setParameter(Profile.FILE_DIR, fileDir.toString() + File.separator);
         if (options.containerName() != null) {
             profile.setParameter(Profile.CONTAINER_NAME, options.containerName());
         }
@@ -169,6 +178,11 @@ public final class JadePlatform implements AutoCloseable {
     /** The port this container listens on: for a main container, the port other containers join. */
     public int port() {
         return port;
+    }
+
+    /** The address of the HTTP transport ({@code http://127.0.0.1:PORT/acc}) if it was asked for. */
+    public Optional<String> httpAddress() {
+        return Optional.ofNullable(httpAddress);
     }
 
     /** The platform's name, as in agents' global names ({@code name@platform}). */
@@ -204,13 +218,14 @@ public final class JadePlatform implements AutoCloseable {
                 return;
             }
             closed = true;
+            boolean last = OPEN.decrementAndGet() == 0;
             try {
                 if (isMain()) {
                     shutDownPlatform();
                 } else {
                     killContainer();
                 }
-                if (OPEN.decrementAndGet() == 0) {
+                if (last) {
                     List<Thread> left = JadeThreads.awaitNone(SHUTDOWN_TIMEOUT);
                     if (!left.isEmpty()) {
                         throw new JadeException("JADE threads still alive after shutdown: " + left);
@@ -260,7 +275,7 @@ public final class JadePlatform implements AutoCloseable {
             request.setOntology(JADEManagementOntology.NAME);
             try {
                 getContentManager().fillContent(request, new Action(getAMS(), new ShutdownPlatform()));
-            } catch (jade.content.lang.Codec.CodecException | jade.content.onto.OntologyException e) {
+            } catch (Codec.CodecException | OntologyException e) {
                 throw new IllegalStateException("JADE cannot encode its own shutdown request", e);
             }
             send(request);

@@ -137,12 +137,23 @@ final class MaslJadeAgent extends Agent {
                     + getLocalName() + " denies others invoking " + call.primitive().name())));
             return;
         }
+        Object result;
         try {
-            Object result = call.invoke(implementation);
-            send(AclInvocations.reply(request, Reply.Kind.RESULT, JsonContent.result(result)));
+            result = call.invoke(implementation);
         } catch (InvocationTargetException thrown) {
             send(AclInvocations.reply(request, Reply.Kind.FAILED, JsonContent.failure(thrown.getCause())));
+            return;
         }
+        String content;
+        try {
+            content = JsonContent.result(result);
+        } catch (RuntimeException | StackOverflowError unwritable) {
+            // A result whose toString throws, or a collection holding itself: the requester's
+            // failure, not the mission's.
+            send(AclInvocations.reply(request, Reply.Kind.FAILED, JsonContent.failure(unwritable)));
+            return;
+        }
+        send(AclInvocations.reply(request, Reply.Kind.RESULT, content));
     }
 
     /** Takes every message addressed to this agent. */

@@ -3,6 +3,7 @@ package masl.jade;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.fasterxml.jackson.databind.node.IntNode;
 import jade.core.AID;
 import jade.domain.DFService;
 import jade.domain.FIPAAgentManagement.DFAgentDescription;
@@ -66,7 +67,7 @@ class FipaRequestTest {
             assertEquals(ACLMessage.INFORM, logged.getPerformative());
             assertEquals("{\"result\":null}", logged.getContent());
             ACLMessage sum = invoke("add", List.of(2, 3));
-            assertEquals(new Reply.Result(new com.fasterxml.jackson.databind.node.IntNode(5)),
+            assertEquals(new Reply.Result(new IntNode(5)),
                     AclInvocations.readReply(sum));
             assertEquals("json", sum.getLanguage());
             assertEquals("masl", sum.getOntology());
@@ -75,12 +76,15 @@ class FipaRequestTest {
     }
 
     @Test
-    void aPrimitiveThatThrowsAnswersFailure() throws Exception {
+    void aPrimitiveThatThrowsOrAResultThatCannotBeWrittenAnswersFailure() throws Exception {
         runWhile(() -> {
             ACLMessage failed = invoke("divide", List.of(1, 0));
             assertEquals(ACLMessage.FAILURE, failed.getPerformative());
             assertEquals(new Reply.Failed("java.lang.ArithmeticException", "/ by zero"),
                     AclInvocations.readReply(failed));
+            assertEquals(new Reply.Failed("java.lang.IllegalStateException", "no text for this"),
+                    AclInvocations.readReply(invoke("unwritable", List.of())));
+            assertEquals(ACLMessage.INFORM, invoke("nop", List.of()).getPerformative(), "the agent still serves");
         });
     }
 
@@ -103,9 +107,10 @@ class FipaRequestTest {
     void malformedAndUnknownRequestsAnswerNotUnderstood() throws Exception {
         runWhile(() -> {
             assertNotUnderstood("content:1:20: error: malformed JSON: Unexpected character ('}' (code 125)): "
-                    + "was expecting double-quote to start field name", raw(ACLMessage.REQUEST, "{\"primitive\":\"log\",}"));
+                    + "was expecting double-quote to start field name",
+                    raw(ACLMessage.REQUEST, "{\"primitive\":\"log\",}"));
             assertNotUnderstood("content:1:14: error: unknown primitive \"fly\": ServiceAgent has getProxyID, nop, "
-                    + "log, logln, add, divide, release", raw(ACLMessage.REQUEST, "{\"primitive\":\"fly\"}"));
+                    + "log, logln, add, divide, unwritable, release", raw(ACLMessage.REQUEST, "{\"primitive\":\"fly\"}"));
             assertNotUnderstood("content:1:14: error: int add(int, int) takes 2 arguments, got 1",
                     raw(ACLMessage.REQUEST, "{\"primitive\":\"add\",\"args\":[1]}"));
             assertNotUnderstood("content:1:30: error: argument 2 of add: expected an int, got \"two\"",
@@ -163,13 +168,14 @@ class FipaRequestTest {
         return outcome;
     }
 
-    /** Waits until {@code b} is registered: its requests are served from then on. */
+    /**
+     * Waits until {@code b} is registered (it exists, and its requests are served from then on):
+     * {@code searchUntilFound} subscribes to the DF and returns on the notification.
+     */
     private static void awaitRegistered() throws Exception {
-        while (providers(MaslJadeAgent.PRIMITIVE_SERVICE, "release").isEmpty()) {
-            DFAgentDescription template = template(MaslJadeAgent.PRIMITIVE_SERVICE, "release");
-            // A subscription would be the event-driven way; a blocking search with a wait suffices here.
-            DFService.searchUntilFound(probe, probe.getDefaultDF(), template, null, 20_000);
-        }
+        DFAgentDescription[] found = DFService.searchUntilFound(probe, probe.getDefaultDF(),
+                template(MaslJadeAgent.PRIMITIVE_SERVICE, "release"), null, 20_000);
+        assertTrue(found != null && found.length == 1, "b registered with the DF within 20 s");
     }
 
     private static List<String> providers(String serviceType, String serviceName) throws Exception {

@@ -9,8 +9,11 @@ import java.time.Duration;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import masl.runtime.AgentContext;
+import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
+import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.TestAgent;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -26,9 +29,9 @@ class JadeLauncherTest {
     void aMissionOnItsOwnPlatformLeavesNoThreadBehind() throws Exception {
         Set<Thread> before = new HashSet<>(Thread.getAllStackTraces().keySet());
         StringWriter journal = new StringWriter();
-        MissionProgram program = TestPrograms.of(null, 2, self -> new masl.runtime.testing.CompactProgram(self) {
+        MissionProgram program = TestPrograms.of(null, 2, self -> new CompactProgram(self) {
             @Override
-            protected void resume(masl.runtime.AgentContext ctx) {
+            protected void resume(AgentContext ctx) {
                 self.logln("agent " + self.getProxyID());
                 ctx.finish();
             }
@@ -82,6 +85,26 @@ class JadeLauncherTest {
                 .run((JadePlatform) null, Duration.ofSeconds(30)));
         assertEquals("masl.runtime.testing.TestAgent has no public method int add(int, int) that ServiceAgent "
                 + "declares", failure.getMessage());
+    }
+
+    @Test
+    void aProgramMustMakeItsAgentsThroughTheFactory() {
+        MissionProgram bypassing = new MissionProgram() {
+            @Override
+            public List<AgentSpec> agents() {
+                return WAITER.agents();
+            }
+
+            @Override
+            public Mission.Builder configure(Mission.Builder builder,
+                    ImplementationFactory implementations) {
+                return builder.agent("w", new ServiceAgent(), TestPrograms.UntilReleased::new);
+            }
+        };
+        IllegalStateException failure = assertThrows(IllegalStateException.class, () -> JadeLauncher.of(bypassing)
+                .types(TestPrograms::type).run((JadePlatform) null, Duration.ofSeconds(1)));
+        assertTrue(failure.getMessage().endsWith("declares 1 agents but made 0 through the implementation factory"),
+                failure.getMessage());
     }
 
     @Test

@@ -13,9 +13,11 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.net.URI;
 import java.nio.file.Files;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -69,6 +71,22 @@ class JadePlatformTest {
     }
 
     @Test
+    void theHttpTransportStartsOnlyWhenAskedAndOnLoopback() throws Exception {
+        Set<Thread> before = new HashSet<>(Thread.getAllStackTraces().keySet());
+        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer().withHttpTransport(true))) {
+            URI address = URI.create(platform.httpAddress().orElseThrow());
+            assertEquals("127.0.0.1", address.getHost());
+            try (Socket socket = new Socket()) {
+                socket.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), address.getPort()), 5000);
+            }
+        }
+        assertEquals(List.of(), newThreads(before));
+        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
+            assertEquals(Optional.empty(), platform.httpAddress());
+        }
+    }
+
+    @Test
     void aTakenPortIsReportedNotRetried() throws IOException {
         try (ServerSocket taken = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
             JadeException failure = assertThrows(JadeException.class,
@@ -93,7 +111,8 @@ class JadePlatformTest {
     /** Threads alive now that were not alive before, but JUnit's own: what a platform left behind. */
     static List<String> newThreads(Set<Thread> before) {
         return Thread.getAllStackTraces().keySet().stream()
-                .filter(thread -> thread.isAlive() && !before.contains(thread) && !thread.getName().startsWith("junit-"))
+                .filter(thread -> thread.isAlive() && !before.contains(thread)
+                        && !thread.getName().startsWith("junit-"))
                 .map(Thread::getName)
                 .toList();
     }

@@ -16,6 +16,16 @@ public class ServiceAgent extends TestAgent {
         return a / b;
     }
 
+    /** A result that cannot be written as JSON: its {@code toString} throws. */
+    public Object unwritable() {
+        return new Object() {
+            @Override
+            public String toString() {
+                throw new IllegalStateException("no text for this");
+            }
+        };
+    }
+
     /** Lets the agent's program ({@link TestPrograms.UntilReleased}) finish. */
     public void release() {
         released.complete(null);

@@ -8,6 +8,7 @@ import java.lang.reflect.Array;
 import java.math.BigDecimal;
 import java.math.BigInteger;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -157,7 +158,7 @@ public final class JsonValues {
             return list;
         }
         if (node.isObject()) {
-            Map<String, Object> map = new java.util.LinkedHashMap<>();
+            Map<String, Object> map = new LinkedHashMap<>();
             node.fields().forEachRemaining(field -> map.put(field.getKey(), natural(field.getValue())));
             return map;
         }

@@ -1,11 +1,8 @@
 package masl.jade.bench;
 
-import jade.core.AID;
 import jade.core.Agent;
 import jade.core.behaviours.CyclicBehaviour;
-import jade.core.behaviours.OneShotBehaviour;
 import jade.lang.acl.ACLMessage;
-import jade.lang.acl.MessageTemplate;
 import jade.wrapper.AgentController;
 import jade.wrapper.StaleProxyException;
 import java.time.Duration;
@@ -14,11 +11,9 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import masl.jade.JadeOptions;
 import masl.jade.JadePlatform;
-import masl.jade.acl.AclInvocations;
 
 /**
  * The baseline of issue 13: raw JADE {@code REQUEST}/{@code INFORM} round trips per second between
@@ -46,7 +41,6 @@ public final class AclPingPong {
         }
     }
 
-    private static final Duration AGENTS_TIMEOUT = Duration.ofSeconds(30);
     private static int measurements;
 
     private AclPingPong() {
@@ -64,8 +58,9 @@ public final class AclPingPong {
                 for (int run = 0; run < runs; run++) {
                     Result result = measure(platform, pairs, warmUp, window);
                     rates[run] = result.roundTripsPerSecond();
-                    System.out.printf(Locale.ROOT, "pairs=%-3d run=%d  %,10.0f round trips/s  %7.1f us per round trip%n",
-                            pairs, run + 1, result.roundTripsPerSecond(), result.microsPerRoundTrip());
+                    System.out.printf(Locale.ROOT,
+                            "pairs=%-3d run=%d  %,10.0f round trips/s  %7.1f us per round trip%n", pairs, run + 1,
+                            result.roundTripsPerSecond(), result.microsPerRoundTrip());
                 }
                 Arrays.sort(rates);
                 double median = rates[runs / 2];
@@ -89,21 +84,22 @@ public final class AclPingPong {
         CountDownLatch go = new CountDownLatch(1);
         CountDownLatch finished = new CountDownLatch(pairs);
         AtomicLong roundTrips = new AtomicLong();
+        Pinger.Run run = new Pinger.Run(started, go, finished, roundTrips, warmUp, window);
         List<AgentController> agents = new ArrayList<>();
         try {
             for (int i = 0; i < pairs; i++) {
                 String pong = "pong-" + measurement + "-" + i;
                 agents.add(platform.container().acceptNewAgent(pong, new Pong(started)));
                 agents.add(platform.container().acceptNewAgent("ping-" + measurement + "-" + i,
-                        new Ping(pong, started, go, finished, roundTrips, warmUp, window)));
+                        new Pinger(pong, run)));
             }
             for (AgentController agent : agents) {
                 agent.start();
             }
             // Exchanges start once every agent exists (platform-notes.md: earlier ones can stall).
-            await(started, "the ping-pong agents did not start");
+            Pinger.await(started, "the ping-pong agents did not start");
             go.countDown();
-            await(finished, "the pingers did not finish");
+            Pinger.await(finished, "the pingers did not finish");
             return new Result(pairs, roundTrips.get(), window);
         } catch (StaleProxyException e) {
             throw new IllegalStateException("the JADE container ended during the benchmark", e);
@@ -115,12 +111,6 @@ public final class AclPingPong {
                     // Deleted with the platform.
                 }
             }
-        }
-    }
-
-    private static void await(CountDownLatch latch, String failure) throws InterruptedException {
-        if (!latch.await(AGENTS_TIMEOUT.toMillis() + 60_000, TimeUnit.MILLISECONDS)) {
-            throw new IllegalStateException(failure);
         }
     }
 
@@ -152,71 +142,6 @@ public final class AclPingPong {
                 }
             });
             started.countDown();
-        }
-    }
-
-    /** Sends a request, waits for its answer, again, until the window has passed. */
-    private static final class Ping extends Agent {
-        private static final long serialVersionUID = 1L;
-        private final transient String pong;
-        private final transient CountDownLatch started;
-        private final transient CountDownLatch go;
-        private final transient CountDownLatch finished;
-        private final transient AtomicLong roundTrips;
-        private final transient Duration warmUp;
-        private final transient Duration window;
-
-        Ping(String pong, CountDownLatch started, CountDownLatch go, CountDownLatch finished, AtomicLong roundTrips,
-                Duration warmUp, Duration window) {
-            this.pong = pong;
-            this.started = started;
-            this.go = go;
-            this.finished = finished;
-            this.roundTrips = roundTrips;
-            this.warmUp = warmUp;
-            this.window = window;
-        }
-
-        @Override
-        protected void setup() {
-            addBehaviour(new OneShotBehaviour(this) {
-                private static final long serialVersionUID = 1L;
-
-                @Override
-                public void action() {
-                    try {
-                        go.await();
-                        play();
-                    } catch (InterruptedException e) {
-                        Thread.currentThread().interrupt();
-                    } finally {
-                        finished.countDown();
-                    }
-                }
-            });
-            started.countDown();
-        }
-
-        /** Runs in this agent's thread: blocking receives are what a plain JADE client does. */
-        private void play() {
-            AID receiver = new AID(pong, AID.ISLOCALNAME);
-            long start = System.nanoTime();
-            long windowStart = start + warmUp.toNanos();
-            long end = windowStart + window.toNanos();
-            long counted = 0;
-            for (long sequence = 0; ; sequence++) {
-                long now = System.nanoTime();
-                if (now >= end) {
-                    break;
-                }
-                String replyWith = getLocalName() + "-" + sequence;
-                send(AclInvocations.request(receiver, "nop", List.of(), replyWith));
-                blockingReceive(MessageTemplate.MatchInReplyTo(replyWith));
-                if (now >= windowStart && System.nanoTime() < end) {
-                    counted++;
-                }
-            }
-            roundTrips.addAndGet(counted);
         }
     }
 }

@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import jade.core.AID;
 import jade.lang.acl.ACLMessage;
+import java.util.ArrayList;
+import java.util.Iterator;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
@@ -68,8 +70,8 @@ class AclInvocationsTest {
     }
 
     private static List<AID> receivers(ACLMessage message) {
-        List<AID> receivers = new java.util.ArrayList<>();
-        for (java.util.Iterator<?> all = message.getAllReceiver(); all.hasNext(); ) {
+        List<AID> receivers = new ArrayList<>();
+        for (Iterator<?> all = message.getAllReceiver(); all.hasNext(); ) {
             receivers.add((AID) all.next());
         }
         return receivers;

@@ -36,26 +36,36 @@ class JsonContentTest {
 
     @Test
     void argsMayBeLeftOutWhenThereAreNone() throws Exception {
-        assertEquals(new InvocationRequest("nop", 1, 14, List.of()), JsonContent.parseRequest("{\"primitive\":\"nop\"}"));
+        assertEquals(new InvocationRequest("nop", 1, 14, List.of()),
+                JsonContent.parseRequest("{\"primitive\":\"nop\"}"));
     }
 
     @ParameterizedTest
     @CsvSource(delimiter = '|', textBlock = """
-            {"primitive":"log","args":["a"]                      | content:1:32: error: malformed JSON: Unexpected end-of-input: expected close marker for Object (start marker at line 1, column 1)
-            {primitive:"log"}                                    | content:1:2: error: malformed JSON: Unexpected character ('p' (code 112)): was expecting double-quote to start field name
-            ["log"]                                              | content:1:1: error: expected an object {"primitive": name, "args": [...]}
-            "log"                                                | content:1:1: error: expected an object {"primitive": name, "args": [...]}
-            {"args":[]}                                          | content:1:1: error: missing field "primitive": the name of the primitive to invoke
-            {"primitive":7}                                      | content:1:14: error: "primitive" must be a primitive's name, a non-empty string
-            {"primitive":""}                                     | content:1:14: error: "primitive" must be a primitive's name, a non-empty string
-            {"primitive":"log","args":"a"}                       | content:1:27: error: "args" must be an array of the arguments
-            {"primitive":"log","member":"x"}                     | content:1:20: error: unknown field "member": a request has only "primitive" and "args"
-            {"primitive":"log","primitive":"nop"}                | content:1:20: error: duplicate field "primitive"
-            {"primitive":"log"} {"primitive":"nop"}              | content:1:21: error: unexpected content after the request object
+            {primitive:"log"} | content:1:2: error: malformed JSON: Unexpected character ('p' (code 112)): \
+            was expecting double-quote to start field name
+            ["log"] | content:1:1: error: expected an object {"primitive": name, "args": [...]}
+            "log" | content:1:1: error: expected an object {"primitive": name, "args": [...]}
+            {"args":[]} | content:1:1: error: missing field "primitive": the name of the primitive to invoke
+            {"primitive":7} | content:1:14: error: "primitive" must be a primitive's name, a non-empty string
+            {"primitive":""} | content:1:14: error: "primitive" must be a primitive's name, a non-empty string
+            {"primitive":"log","args":"a"} | content:1:27: error: "args" must be an array of the arguments
+            {"primitive":"log","member":"x"} | content:1:20: error: unknown field "member": \
+            a request has only "primitive" and "args"
+            {"primitive":"log","primitive":"nop"} | content:1:20: error: duplicate field "primitive"
+            {"primitive":"log"} {"primitive":"nop"} | content:1:21: error: unexpected content after the request object
             """)
     void malformedRequestsArePositioned(String content, String error) {
-        ContentException problem = assertThrows(ContentException.class, () -> JsonContent.parseRequest(content.strip()));
+        ContentException problem = assertThrows(ContentException.class,
+                () -> JsonContent.parseRequest(content.strip()));
         assertEquals(error, problem.describe());
+    }
+
+    @Test
+    void truncatedContentNamesWhereTheOpenObjectStarts() {
+        assertEquals("content:1:32: error: malformed JSON: Unexpected end-of-input: expected close marker for "
+                + "Object (start marker at line 1, column 1)", assertThrows(ContentException.class,
+                        () -> JsonContent.parseRequest("{\"primitive\":\"log\",\"args\":[\"a\"]")).describe());
     }
 
     @Test
@@ -135,16 +145,16 @@ class JsonContentTest {
 
     @ParameterizedTest
     @CsvSource(delimiter = '|', textBlock = """
-            "7"          | int      | content:1:5: error: argument 1 of f: expected an int, got "7"
-            2.5          | int      | content:1:5: error: argument 1 of f: expected an int, got 2.5
-            3000000000   | int      | content:1:5: error: argument 1 of f: expected an int, got 3000000000
-            200          | byte     | content:1:5: error: argument 1 of f: expected a byte, got 200
-            null         | double   | content:1:5: error: argument 1 of f: expected a double, got null
-            1            | boolean  | content:1:5: error: argument 1 of f: expected a boolean, got 1
-            "ab"         | char     | content:1:5: error: argument 1 of f: expected a char (a one-character string), got "ab"
-            [1]          | String   | content:1:5: error: argument 1 of f: expected a string (or number or boolean), got [1]
-            [1,"x"]      | int[]    | content:1:5: error: argument 1 of f: expected an array of int values, got [1,"x"]
-            {}           | Thread   | content:1:5: error: argument 1 of f: expected a Thread, got {}
+            "7" | int      | content:1:5: error: argument 1 of f: expected an int, got "7"
+            2.5 | int      | content:1:5: error: argument 1 of f: expected an int, got 2.5
+            3000000000 | int      | content:1:5: error: argument 1 of f: expected an int, got 3000000000
+            200 | byte     | content:1:5: error: argument 1 of f: expected a byte, got 200
+            null | double   | content:1:5: error: argument 1 of f: expected a double, got null
+            1            | boolean | content:1:5: error: argument 1 of f: expected a boolean, got 1
+            "ab" | char     | content:1:5: error: argument 1 of f: expected a char (a one-character string), got "ab"
+            [1] | String   | content:1:5: error: argument 1 of f: expected a string (or number or boolean), got [1]
+            [1,"x"] | int[]    | content:1:5: error: argument 1 of f: expected an array of int values, got [1,"x"]
+            {} | Thread   | content:1:5: error: argument 1 of f: expected a Thread, got {}
             """)
     void argumentsOfTheWrongTypeArePositioned(String json, String typeName, String error) throws Exception {
         Class<?> type = switch (typeName) {

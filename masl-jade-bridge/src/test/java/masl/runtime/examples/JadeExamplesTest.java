@@ -72,6 +72,12 @@ class JadeExamplesTest {
     }
 
     @Test
+    void e4EventsLookUpInTheParentAndResume() throws Exception {
+        List<String> journals = assertSameJournalEveryTime(E4Events.MAIN, 4, E4Events::new, Order.ANY);
+        journals.forEach(journal -> assertTrue(journal.startsWith("heard now\n"), journal));
+    }
+
+    @Test
     void e6OneAtATimeThroughALockedBlock() throws Exception {
         assertSameJournalEveryTime(E6OneAtATime.MAIN, 4, E6OneAtATime::new, Order.FIXED);
     }

@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.ExpressionContext;
 import masl.translator.analysis.AnalyzedProgram;
@@ -56,9 +55,8 @@ final class AssignmentWriter {
     /**
      * An assignment. A shared variable is written atomically: {@code set} when the value does not
      * read it, otherwise {@code update} with the read-modify-write as a function of the old value.
-     * Empty when the write is ignored ({@code limited} to a type this agent is not of, §7).
      */
-    Optional<String> assignment(MASLParser.AssignExprContext assignment, boolean isStatement) {
+    String assignment(MASLParser.AssignExprContext assignment, boolean isStatement) {
         String operator = assignment.op.getText();
         ExpressionContext target = assignment.target;
         ExpressionContext value = assignment.value;
@@ -66,37 +64,37 @@ final class AssignmentWriter {
         Symbol symbol = program.symbolOf(target).orElse(null);
         if (symbol instanceof Variable variable) {
             if (!maySelfWrite(variable)) {
-                return ignoredWrite(assignment, isStatement);
+                return ignoredWrite(assignment, isStatement, variable);
             }
             if (variable.sharing() == Sharing.LOCAL) {
-                return Optional.of(expressions.local(variable) + " " + operator + " "
-                        + (operator.equals("=") ? expressions.converted(type, value) : expressions.expr(value)));
+                return expressions.local(variable) + " " + operator + " "
+                        + (operator.equals("=") ? expressions.converted(type, value) : expressions.expr(value));
             }
             String shared = "ctx.shared(" + structure.shared(variable) + ")";
             if (operator.equals("=") && isStatement && !queries.mentions(value, variable)) {
-                return Optional.of(shared + ".set(" + expressions.convertedBoxed(type, value) + ")");
+                return shared + ".set(" + expressions.convertedBoxed(type, value) + ")";
             }
             String parameter = lambdaParameter(variable);
             String binary = operator.substring(0, operator.length() - 1);
             if (isStatement && !operator.equals("=") && !queries.mentions(value, variable) && !isSimple(value)) {
                 // Only what reads the variable runs under its monitor (x += .sense() calls the primitive first).
                 String temporary = hoist(value);
-                return Optional.of(shared + ".update(" + parameter + " -> "
-                        + compound(type, parameter, binary, temporary, program.typeOf(value)) + ")");
+                return shared + ".update(" + parameter + " -> "
+                        + compound(type, parameter, binary, temporary, program.typeOf(value)) + ")";
             }
             String function = expressions.whileUpdating(variable, parameter, () -> operator.equals("=") ? expressions.convertedBoxed(type, value)
                     : compound(type, parameter, binary, expressions.expr(value), program.typeOf(value)));
-            return Optional.of(shared + ".update(" + parameter + " -> " + function + ")");
+            return shared + ".update(" + parameter + " -> " + function + ")";
         }
         if (target instanceof MASLParser.FieldAccessContext access && symbol instanceof Member member
                 && member.kind() == Member.Kind.ATTRIBUTE && !TreeQueries.isThis(access.expression())) {
-            return Optional.of(unsupported.report(target, "an attribute of another agent"));
+            return unsupported.report(target, "an attribute of another agent");
         }
         if (symbol instanceof Member member && member.kind() == Member.Kind.DYNAMIC) {
-            return Optional.of(unsupported.report(target, "an assignment to a field of an Object-typed value"));
+            return unsupported.report(target, "an assignment to a field of an Object-typed value");
         }
         String left = expressions.expr(target);
-        return Optional.of(left + " " + operator + " " + (operator.equals("=") ? expressions.converted(type, value) : expressions.expr(value)));
+        return left + " " + operator + " " + (operator.equals("=") ? expressions.converted(type, value) : expressions.expr(value));
     }
 
     /** Evaluates {@code value} into a new temporary, before the statement; returns the temporary. */
@@ -131,37 +129,41 @@ final class AssignmentWriter {
     }
 
     /** {@code x++}, {@code --x}, …; on a shared variable an atomic update returning the old or new value. */
-    Optional<String> increment(ExpressionContext target, String operator, boolean prefix, boolean isStatement) {
+    String increment(ExpressionContext target, String operator, boolean prefix, boolean isStatement) {
         Symbol symbol = program.symbolOf(target).orElse(null);
         if (symbol instanceof Variable variable) {
             if (!maySelfWrite(variable)) {
-                return ignoredWrite(target, isStatement);
+                return ignoredWrite(target, isStatement, variable);
             }
             if (variable.sharing() == Sharing.SHARED) {
                 String parameter = lambdaParameter(variable);
                 Class<?> type = JavaTypes.unboxed(variable.type());
                 String step = parameter + (operator.equals("++") ? " + 1" : " - 1");
                 String function = needsCast(type) ? "(" + type.getName() + ") (" + step + ")" : step;
-                return Optional.of("ctx.shared(" + structure.shared(variable) + ")."
-                        + (prefix ? "update(" : "getAndUpdate(") + parameter + " -> " + function + ")");
+                return "ctx.shared(" + structure.shared(variable) + ")."
+                        + (prefix ? "update(" : "getAndUpdate(") + parameter + " -> " + function + ")";
             }
         }
         if (symbol instanceof Member member && member.kind() == Member.Kind.DYNAMIC) {
-            return Optional.of(unsupported.report(target, "an assignment to a field of an Object-typed value"));
+            return unsupported.report(target, "an assignment to a field of an Object-typed value");
         }
         String operand = expressions.expr(target);
-        return Optional.of(prefix ? operator + operand : operand + operator);
+        return prefix ? operator + operand : operand + operator;
     }
 
     private boolean maySelfWrite(Variable variable) {
         return variable.limitedTo() == null || queries.selfType().isSubtypeOf(variable.limitedTo());
     }
 
-    private Optional<String> ignoredWrite(ParserRuleContext where, boolean isStatement) {
+    /**
+     * A write to a variable {@code limited} to a type this agent is not of: ignored, and the writer
+     * perceives {@code forbidden_access} with the variable's name as message (MASL 7, 8).
+     */
+    private String ignoredWrite(ParserRuleContext where, boolean isStatement, Variable variable) {
         if (isStatement) {
-            return Optional.empty();
+            return "ctx.emit(Event.FORBIDDEN_ACCESS, " + JavaText.quote(variable.name()) + ")";
         }
-        return Optional.of(unsupported.report(where, "a write to a limited variable inside an expression"));
+        return unsupported.report(where, "a write to a limited variable inside an expression");
     }
 
     private static String lambdaParameter(Variable variable) {

@@ -15,7 +15,8 @@ final class CaseWriter {
     static final class Point {
         private Case target;
 
-        private int number() {
+        /** The case number, once the cases are rendered. */
+        int number() {
             if (target == null) {
                 throw new IllegalStateException("a resumption point was used but never placed");
             }
@@ -62,6 +63,11 @@ final class CaseWriter {
         }
         point.target = current;
         terminated = false;
+    }
+
+    /** Whether the code written last jumped away or returned: what follows it is never reached. */
+    boolean isTerminated() {
+        return terminated;
     }
 
     /** A line of code in the current case, starting an (unreachable) case if the previous code jumped away. */

@@ -5,8 +5,7 @@ import java.util.List;
 /**
  * The helper methods a program class gets when it uses members of {@code Object}-typed values
  * (MASL §3: typed at run time): a method or field is looked up by name on the value's class when
- * the statement runs. A failure would raise {@code uncaught_exception} (§8); with no reaction to
- * it the occurrence is dropped and the value is {@code null}.
+ * the statement runs. A failure raises {@code uncaught_exception} (§8) and the value is {@code null}.
  */
 final class DynamicMembers {
 
@@ -14,7 +13,7 @@ final class DynamicMembers {
     }
 
     static String call(String receiver, String name, List<String> arguments) {
-        StringBuilder call = new StringBuilder("dynamic$call(").append(receiver).append(", ")
+        StringBuilder call = new StringBuilder("dynamic$call(ctx, ").append(receiver).append(", ")
                 .append(JavaText.quote(name));
         for (String argument : arguments) {
             call.append(", ").append(argument);
@@ -23,32 +22,39 @@ final class DynamicMembers {
     }
 
     static String field(String receiver, String name) {
-        return "dynamic$field(" + receiver + ", " + JavaText.quote(name) + ")";
+        return "dynamic$field(ctx, " + receiver + ", " + JavaText.quote(name) + ")";
     }
 
     /** The helpers' source, indented as members of the program class. */
     static List<String> helpers() {
         return List.of(
                 "    /** A method of an Object-typed value, found at run time (MASL 3); null if it fails. */",
-                "    private static Object dynamic$call(Object receiver, String name, Object... arguments) {",
+                "    private static Object dynamic$call(AgentContext ctx, Object receiver, String name, Object... arguments) {",
                 "        if (receiver == null) {",
+                "            ctx.uncaughtException(new NullPointerException(name + \" called on null\"));",
                 "            return null;",
                 "        }",
                 "        for (java.lang.reflect.Method method : receiver.getClass().getMethods()) {",
                 "            if (method.getName().equals(name) && accepts(method.getParameterTypes(), arguments)) {",
                 "                try {",
                 "                    return publicDeclaration(method, receiver.getClass()).invoke(receiver, arguments);",
+                "                } catch (java.lang.reflect.InvocationTargetException thrown) {",
+                "                    ctx.uncaughtException(thrown.getCause());",
+                "                    return null;",
                 "                } catch (ReflectiveOperationException | RuntimeException failed) {",
+                "                    ctx.uncaughtException(failed);",
                 "                    return null;",
                 "                }",
                 "            }",
                 "        }",
+                "        ctx.uncaughtException(new NoSuchMethodException(receiver.getClass().getName() + \".\" + name));",
                 "        return null;",
                 "    }",
                 "",
                 "    /** A field of an Object-typed value, found at run time (MASL 3); null if there is none. */",
-                "    private static Object dynamic$field(Object receiver, String name) {",
+                "    private static Object dynamic$field(AgentContext ctx, Object receiver, String name) {",
                 "        if (receiver == null) {",
+                "            ctx.uncaughtException(new NullPointerException(name + \" read on null\"));",
                 "            return null;",
                 "        }",
                 "        if (receiver.getClass().isArray() && name.equals(\"length\")) {",
@@ -57,6 +63,7 @@ final class DynamicMembers {
                 "        try {",
                 "            return receiver.getClass().getField(name).get(receiver);",
                 "        } catch (ReflectiveOperationException | RuntimeException failed) {",
+                "            ctx.uncaughtException(failed);",
                 "            return null;",
                 "        }",
                 "    }",

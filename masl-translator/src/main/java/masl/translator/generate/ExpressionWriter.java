@@ -10,6 +10,7 @@ import masl.runtime.descriptor.Parameter;
 import masl.runtime.descriptor.Primitive;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.EntryRef;
+import masl.translator.analysis.EventDecl;
 import masl.translator.analysis.ImportedType;
 import masl.translator.analysis.MaslType;
 import masl.translator.analysis.Member;
@@ -195,11 +196,11 @@ final class ExpressionWriter {
         } else if (expression instanceof MASLParser.ArrayAccessContext access) {
             return expr(access.expression(0)) + "[" + expr(access.index) + "]";
         } else if (expression instanceof MASLParser.PostfixExprContext postfix) {
-            return assignments.increment(postfix.expression(), postfix.op.getText(), false, false).orElse("null");
+            return assignments.increment(postfix.expression(), postfix.op.getText(), false, false);
         } else if (expression instanceof MASLParser.PrefixExprContext prefix) {
             String operator = prefix.op.getText();
             if (operator.equals("++") || operator.equals("--")) {
-                return assignments.increment(prefix.expression(), operator, true, false).orElse("null");
+                return assignments.increment(prefix.expression(), operator, true, false);
             }
             return unary(operator, expr(prefix.expression()));
         } else if (expression instanceof MASLParser.NotExprContext not) {
@@ -215,7 +216,7 @@ final class ExpressionWriter {
             return truth(conditional.condition) + " ? " + expr(conditional.whenTrue) + " : "
                     + expr(conditional.whenFalse);
         } else if (expression instanceof MASLParser.AssignExprContext assignment) {
-            return assignments.assignment(assignment, false).orElse("null");
+            return assignments.assignment(assignment, false);
         } else if (expression instanceof MASLParser.InstanceofExprContext test) {
             // An agent type is its implementation class; type arguments are erased, as the analysis does.
             return expr(test.expression()) + " instanceof " + JavaTypes.name(program.typeOf(test.javaType()));
@@ -269,8 +270,8 @@ final class ExpressionWriter {
             return unsupported.report(expression, "a label member");
         } else if (primary instanceof MASLParser.GetAcceptStateExprContext) {
             return unsupported.report(expression, "getAcceptState (permeability)");
-        } else if (primary instanceof MASLParser.GetMessageExprContext) {
-            return unsupported.report(expression, "getMessageFromEvent (events)");
+        } else if (primary instanceof MASLParser.GetMessageExprContext message) {
+            return "ctx.messageOf(" + event(message.event) + ")";
         }
         return unsupported.report(expression, "this expression");
     }
@@ -298,6 +299,14 @@ final class ExpressionWriter {
             updated = outer;
             updatedParameter = outerParameter;
         }
+    }
+
+    /** The expression of the event an identifier names (as the analysis bound it). */
+    String event(MASLParser.IdentifierContext name) {
+        if (program.symbolOf(name).orElse(null) instanceof EventDecl event) {
+            return structure.event(event);
+        }
+        return unsupported.report(name, "this event");
     }
 
     /** The value of a variable. */
@@ -422,7 +431,7 @@ final class ExpressionWriter {
         String joined = String.join(", ", java);
         if (!primitive.get().exceptions().isEmpty()) {
             throwingPrimitives.put(name, primitive.get());
-            return "primitive$" + name + "(" + joined + ")";
+            return "primitive$" + name + "(ctx" + (joined.isEmpty() ? "" : ", " + joined) + ")";
         }
         return "self." + name + "(" + joined + ")";
     }

@@ -6,6 +6,7 @@ import masl.grammar.MASLParser.ExpressionContext;
 import masl.grammar.MASLParser.StatementContext;
 import masl.runtime.descriptor.Primitive;
 import masl.translator.analysis.AnalyzedProgram;
+import masl.translator.analysis.MaslType;
 import masl.translator.analysis.Member;
 import masl.translator.analysis.TypeRef;
 import org.antlr.v4.runtime.ParserRuleContext;
@@ -23,6 +24,8 @@ final class InstructionWriter {
     private final TreeQueries queries;
     private final AssignmentWriter assignments;
     private final String file;
+    /** Whether the statements being written are a reaction's: they run in one go, with no step boundary. */
+    private boolean inReaction;
 
     InstructionWriter(AnalyzedProgram program, CaseWriter cases, ExpressionWriter expressions, String file) {
         this.program = program;
@@ -31,6 +34,37 @@ final class InstructionWriter {
         this.queries = expressions.queries();
         this.assignments = expressions.assignments();
         this.file = file;
+    }
+
+    void inReaction(boolean reaction) {
+        inReaction = reaction;
+    }
+
+    boolean isInReaction() {
+        return inReaction;
+    }
+
+    /** {@code emit e;} or {@code emitWithMessage(e, message);}: an instruction (MASL 8). */
+    void emit(ParserRuleContext statement, MASLParser.IdentifierContext event, ExpressionContext message) {
+        cases.note(at(statement) + ": " + JavaText.snippet(statement));
+        String constant = expressions.event(event);
+        if (message != null && queries.usesAbsentMember(message)) {
+            cases.comment("a nop() for " + expressions.selfType().name()
+                    + ": its type lacks a member this statement uses (MASL 4)");
+        } else if (message == null) {
+            cases.line("ctx.emit(" + constant + ");");
+        } else {
+            writeGuarded(message, "ctx.emit(" + constant + ", " + expressions.converted(MaslType.STRING, message)
+                    + ");");
+        }
+        stepBoundary();
+    }
+
+    /** The step boundary after an instruction (MASL 5); none inside a reaction (MASL 8). */
+    private void stepBoundary() {
+        if (!inReaction) {
+            cases.suspending("ctx.stepBoundary()", cases.point());
+        }
     }
 
     private String at(ParserRuleContext tree) {
@@ -47,41 +81,38 @@ final class InstructionWriter {
         } else if (isSleep(expression)) {
             ExpressionContext duration = ExpressionWriter.arguments(sleepArguments(expression)).get(0);
             cases.suspending("ctx.sleep(" + expressions.expr(duration) + ")", cases.point());
-            cases.note(at(statement) + ": the step boundary after the sleep");
-        } else {
-            String java = statementJava(expression);
-            if (java != null) {
-                writeGuarded(expression, java + ";");
-            } else {
-                cases.comment("the write is ignored: the variable is limited to another type (MASL 7)");
+            if (!inReaction) {
+                cases.note(at(statement) + ": the step boundary after the sleep");
             }
+        } else {
+            writeGuarded(expression, statementJava(expression) + ";");
         }
         if (!isZeroDuration(expression)) {
-            cases.suspending("ctx.stepBoundary()", cases.point());
+            stepBoundary();
         }
     }
 
     private String statementJava(ExpressionContext expression) {
         if (expression instanceof MASLParser.AssignExprContext assignment) {
-            return assignments.assignment(assignment, true).orElse(null);
+            return assignments.assignment(assignment, true);
         }
         if (expression instanceof MASLParser.PostfixExprContext postfix) {
-            return assignments.increment(postfix.expression(), postfix.op.getText(), false, true).orElse(null);
+            return assignments.increment(postfix.expression(), postfix.op.getText(), false, true);
         }
         if (expression instanceof MASLParser.PrefixExprContext prefix
                 && (prefix.op.getText().equals("++") || prefix.op.getText().equals("--"))) {
-            return assignments.increment(prefix.expression(), prefix.op.getText(), true, true).orElse(null);
+            return assignments.increment(prefix.expression(), prefix.op.getText(), true, true);
         }
         return expressions.expr(expression);
     }
 
     /**
-     * A statement calling Java code that declares checked exceptions: the exception would raise
-     * {@code uncaught_exception} (MASL 8); with no reaction to it, the occurrence is dropped.
+     * A statement, preceded by the values hoisted out of it; wrapped in {@code try} when it calls
+     * code that may throw: the exception raises {@code uncaught_exception} (MASL 8, 9).
      */
     private void writeGuarded(ExpressionContext expression, String java) {
         List<String> before = assignments.takeHoisted();
-        if (!queries.throwsChecked(expression)) {
+        if (!queries.mayThrow(expression)) {
             before.forEach(cases::line);
             cases.line(java);
             return;
@@ -89,9 +120,8 @@ final class InstructionWriter {
         cases.open("try {");
         before.forEach(cases::line);
         cases.line(java);
-        cases.reopen("} catch (Exception uncaught) {");
-        cases.line("// uncaught_exception (MASL 8): no reaction handles it, so the occurrence is dropped");
-        cases.line("if (uncaught instanceof InterruptedException) Thread.currentThread().interrupt();");
+        cases.reopen("} catch (Exception thrown) {");
+        cases.line("ctx.uncaughtException(thrown); // the statement's call threw: uncaught_exception (MASL 8)");
         cases.close("}");
     }
 
@@ -154,7 +184,7 @@ final class InstructionWriter {
         }
         if (statement instanceof MASLParser.ExpressionStmtContext expression) {
             return isZeroDuration(expression.expression()) && !queries.usesAbsentMember(expression)
-                    && !queries.throwsChecked(expression);
+                    && !queries.mayThrow(expression);
         }
         if (statement instanceof MASLParser.BlockStmtContext block) {
             return block.block().statement().stream().allMatch(this::isZeroDuration);
@@ -173,10 +203,7 @@ final class InstructionWriter {
                         + JavaText.snippet(part) + " (MASL 4)");
                 continue;
             }
-            String java = statementJava(part);
-            if (java != null) {
-                writeGuarded(part, java + ";");
-            }
+            writeGuarded(part, statementJava(part) + ";");
         }
     }
 }

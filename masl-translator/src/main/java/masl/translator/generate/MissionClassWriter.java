@@ -32,9 +32,11 @@ final class MissionClassWriter {
         out.add("import masl.runtime.AgentImplementation;");
         out.add("import masl.runtime.ESequence;");
         out.add("import masl.runtime.EntryDefinition;");
+        out.add("import masl.runtime.Event;");
         out.add("import masl.runtime.Mission;");
         out.add("import masl.runtime.MissionProgram;");
         out.add("import masl.runtime.Mode;");
+        out.add("import masl.runtime.Reaction;");
         out.add("import masl.runtime.SharedDeclaration;");
         out.add("");
         out.add("/**");

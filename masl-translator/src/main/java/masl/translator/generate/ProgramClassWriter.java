@@ -9,6 +9,7 @@ import masl.runtime.descriptor.Primitive;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.Block;
 import masl.translator.analysis.ImportedType;
+import masl.translator.analysis.Reaction;
 import masl.translator.analysis.Sharing;
 import masl.translator.analysis.Variable;
 
@@ -49,6 +50,8 @@ final class ProgramClassWriter {
         out.add("import java.util.Objects;");
         out.add("import masl.runtime.AgentContext;");
         out.add("import masl.runtime.AgentProgram;");
+        out.add("import masl.runtime.Event;");
+        out.add("import masl.runtime.Reaction;");
         out.add("");
         out.add("/**");
         out.add(" * The program of " + file + " for agents of type " + type.name() + " (" + implementation
@@ -76,6 +79,18 @@ final class ProgramClassWriter {
         out.add("        this.self = self;");
         out.add("    }");
         out.add("");
+        if (!statements.reactionPoints().isEmpty()) {
+            out.add("    @Override");
+            out.add("    protected int reactionPc(Reaction reaction) {");
+            for (Map.Entry<Reaction, CaseWriter.Point> reaction : statements.reactionPoints().entrySet()) {
+                out.add("        if (reaction == " + structure.reaction(reaction.getKey()) + ") {");
+                out.add("            return " + reaction.getValue().number() + ";");
+                out.add("        }");
+            }
+            out.add("        return super.reactionPc(reaction);");
+            out.add("    }");
+            out.add("");
+        }
         out.add("    @Override");
         out.add("    @SuppressWarnings(\"fallthrough\") // resumption points fall through into the next one");
         out.add("    protected void resume(AgentContext ctx) {");
@@ -119,18 +134,23 @@ final class ProgramClassWriter {
         String call = "self." + primitive.name() + "(" + String.join(", ", names) + ");";
         List<String> out = new ArrayList<>();
         out.add("    /** " + primitive.signature() + ", whose exceptions become uncaught_exception (MASL 9). */");
-        out.add("    private " + returnType + " primitive$" + primitive.name() + "(" + String.join(", ", parameters)
-                + ") {");
+        out.add("    private " + returnType + " primitive$" + primitive.name() + "(" + String.join(", ",
+                concat("AgentContext ctx", parameters)) + ") {");
         out.add("        try {");
         out.add("            " + (isVoid ? call : "return " + call));
-        out.add("        } catch (Exception uncaught) {");
-        out.add("            if (uncaught instanceof InterruptedException) {");
-        out.add("                Thread.currentThread().interrupt();");
-        out.add("            }");
+        out.add("        } catch (Exception thrown) {");
+        out.add("            ctx.uncaughtException(thrown);");
         out.add(isVoid ? "            return;" : "            return " + defaultOf(returnType) + ";");
         out.add("        }");
         out.add("    }");
         return out;
+    }
+
+    private static List<String> concat(String first, List<String> rest) {
+        List<String> all = new ArrayList<>();
+        all.add(first);
+        all.addAll(rest);
+        return all;
     }
 
     private static String defaultOf(String javaType) {

@@ -13,6 +13,7 @@ import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.Block;
 import masl.translator.analysis.ESequence;
 import masl.translator.analysis.EntryRef;
+import masl.translator.analysis.Reaction;
 import masl.translator.analysis.Sharing;
 import masl.translator.analysis.Variable;
 import org.antlr.v4.runtime.ParserRuleContext;
@@ -39,6 +40,7 @@ final class StatementWriter {
     private final Map<Block, CaseWriter.Point> tests = new IdentityHashMap<>();
     private final Map<Block, CaseWriter.Point> afters = new IdentityHashMap<>();
     private final Map<Block, CaseWriter.Point> firsts = new IdentityHashMap<>();
+    private final Map<Reaction, CaseWriter.Point> reactionPoints = new java.util.LinkedHashMap<>();
     private final Set<Block> keptOnReelect;
     private final LoopClassifier loops;
     private final InstructionWriter instructions;
@@ -82,7 +84,55 @@ final class StatementWriter {
         }
         cases.line("ctx.finish();");
         cases.end("return;");
+        if (root != null) {
+            reactions(root);
+        }
         return cases;
+    }
+
+    /** Where the code of each reaction starts, for {@code reactionPc} (contract §7.3). */
+    Map<Reaction, CaseWriter.Point> reactionPoints() {
+        return reactionPoints;
+    }
+
+    // ------------------------------------------------------------------ reactions (§8)
+
+    /** The reactions of {@code block} and of the blocks in it, each from its own case, after the body. */
+    private void reactions(Block block) {
+        for (Reaction reaction : block.reactions()) {
+            reaction(reaction);
+        }
+        block.children().forEach(this::reactions);
+    }
+
+    /**
+     * A reaction runs in one go: its instructions have no step boundary; it ends with its ending
+     * statement or, at the end of its body, by leaving its block as {@code break} would.
+     */
+    private void reaction(Reaction reaction) {
+        MASLParser.ReactionContext tree = reaction.tree();
+        CaseWriter.Point start = cases.point();
+        reactionPoints.put(reaction, start);
+        cases.place(start, at(tree) + ": " + JavaText.header(tree));
+        current = reaction.block();
+        loopStack = new ArrayDeque<>();
+        instructions.inReaction(true);
+        statements(tree.statement());
+        if (!cases.isTerminated()) {
+            cases.note(file + ":" + tree.getStop().getLine() + ": the end of the reaction leaves " + current.name());
+            endReaction();
+            cases.line("ctx.breakOut(" + structure.block(current) + ");");
+            cases.jump(afters.get(current));
+        }
+        instructions.inReaction(false);
+        current = null;
+    }
+
+    /** In a reaction, before its ending: another reaction may follow, then this one does not decide. */
+    private void endReaction() {
+        if (instructions.isInReaction()) {
+            cases.line("if (!ctx.endReaction()) return;");
+        }
     }
 
     private String at(ParserRuleContext tree) {
@@ -131,9 +181,7 @@ final class StatementWriter {
         firsts.put(block, first);
         cases.place(first, null);
         for (MASLParser.BlockItemContext item : tree.blockItem()) {
-            if (item.reaction() != null) {
-                unsupported.report(item.reaction(), "a reaction (react, events)");
-            } else if (item.statement() != null) {
+            if (item.statement() != null) {
                 statementInList(item.statement());
             }
         }
@@ -151,9 +199,7 @@ final class StatementWriter {
 
     private void declarations(Block block, boolean keeps) {
         for (MASLParser.BlockItemContext item : block.tree().blockItem()) {
-            if (item.declaration() instanceof MASLParser.EventDeclContext event) {
-                unsupported.report(event, "an event declaration");
-            } else if (item.declaration() instanceof MASLParser.LabelDeclContext label) {
+            if (item.declaration() instanceof MASLParser.LabelDeclContext label) {
                 unsupported.report(label, "a label declaration");
             }
         }
@@ -229,11 +275,13 @@ final class StatementWriter {
         } else if (statement instanceof MASLParser.BreakStmtContext breakStmt) {
             Block target = jumpTarget(breakStmt.jumpTarget());
             cases.note(at(breakStmt) + ": " + JavaText.snippet(breakStmt));
+            endReaction();
             cases.line("ctx.breakOut(" + structure.block(target) + ");");
             cases.jump(afters.get(target));
         } else if (statement instanceof MASLParser.ReelectStmtContext reelect) {
             Block target = jumpTarget(reelect.jumpTarget());
             cases.note(at(reelect) + ": " + JavaText.snippet(reelect));
+            endReaction();
             cases.line("ctx.reelect(" + structure.block(target) + ");");
             if (keptOnReelect.contains(target) && hasLocals(target)) {
                 cases.line("keep$" + target.name() + " = true;");
@@ -241,13 +289,22 @@ final class StatementWriter {
             cases.jump(test(target));
         } else if (statement instanceof MASLParser.RestartStmtContext restart) {
             cases.note(at(restart) + ": restart;");
+            endReaction();
             cases.line("ctx.restart(" + structure.block(current) + ");");
             cases.jump(firsts.get(current));
-        } else if (statement instanceof MASLParser.ResumeStmtContext
-                || statement instanceof MASLParser.ClearEventsStmtContext
-                || statement instanceof MASLParser.EmitStmtContext
-                || statement instanceof MASLParser.EmitWithMessageStmtContext) {
-            unsupported.report(statement, statement.getStart().getText() + " (events)");
+        } else if (statement instanceof MASLParser.ResumeStmtContext resume) {
+            // Back to where the reactions interrupted the agent, completing the boundary it was at.
+            cases.note(at(resume) + ": resume;");
+            endReaction();
+            cases.line("if (!ctx.resumeInterrupted()) return;");
+            cases.end("continue;");
+        } else if (statement instanceof MASLParser.ClearEventsStmtContext clear) {
+            cases.note(at(clear) + ": " + JavaText.snippet(clear));
+            cases.line("ctx.clearEvents();");
+        } else if (statement instanceof MASLParser.EmitStmtContext emit) {
+            instructions.emit(emit, emit.event, null);
+        } else if (statement instanceof MASLParser.EmitWithMessageStmtContext emit) {
+            instructions.emit(emit, emit.event, emit.message);
         } else if (statement instanceof MASLParser.SetAcceptStateStmtContext
                 || statement instanceof MASLParser.WaitStmtContext) {
             unsupported.report(statement, statement.getStart().getText() + " (permeability)");

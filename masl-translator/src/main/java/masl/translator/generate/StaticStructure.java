@@ -1,18 +1,22 @@
 package masl.translator.generate;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 import masl.translator.analysis.Block;
 import masl.translator.analysis.ESequence;
+import masl.translator.analysis.EventDecl;
+import masl.translator.analysis.Reaction;
 import masl.translator.analysis.Sharing;
 import masl.translator.analysis.Variable;
 
 /**
  * The static structure of a program (generated-code contract §1.1): one {@code EntryDefinition}
  * constant per block, one {@code ESequence} per e-sequence of several blocks, one
- * {@code SharedDeclaration} per shared variable, built in program order in the mission class.
+ * {@code SharedDeclaration} per shared variable, one {@code Event} per event and one {@code Reaction}
+ * per {@code react} (contract §7.1), built in program order in the mission class.
  */
 final class StaticStructure {
 
@@ -21,6 +25,8 @@ final class StaticStructure {
     private final Map<Block, String> blocks = new IdentityHashMap<>();
     private final Map<ESequence, String> sequences = new IdentityHashMap<>();
     private final Map<Variable, String> shared = new IdentityHashMap<>();
+    private final Map<EventDecl, String> events = new HashMap<>();
+    private final Map<Reaction, String> reactions = new HashMap<>();
     private final List<String> declarations = new ArrayList<>();
 
     StaticStructure(Block root, String sourceName) {
@@ -56,6 +62,19 @@ final class StaticStructure {
         return shared.get(variable);
     }
 
+    /** The expression of an event: its constant, or {@code Event.TIMEOUT} and the like for a system event. */
+    String event(EventDecl event) {
+        if (event.isSystemEvent()) {
+            return "Event." + JavaNames.constant(event.name());
+        }
+        return events.get(event);
+    }
+
+    /** The constant of a reaction. */
+    String reaction(Reaction reaction) {
+        return reactions.get(reaction);
+    }
+
     /** The field declarations, in program order. */
     List<String> declarations() {
         return declarations;
@@ -71,6 +90,20 @@ final class StaticStructure {
                         + " = " + owner + ".declareShared(" + JavaText.quote(variable.name()) + ", "
                         + JavaTypes.defaultValue(variable.type()) + ");");
             }
+        }
+        for (EventDecl event : block.events()) {
+            String name = names.take(owner + "_" + JavaNames.constant(event.name()));
+            events.put(event, name);
+            declarations.add("static final Event " + name + " = " + owner + (event.sharing() == Sharing.SHARED
+                    ? ".declareSharedEvent(" : ".declareLocalEvent(") + JavaText.quote(event.name()) + ");");
+        }
+        // In the order they are written: their priority (MASL 8).
+        for (Reaction reaction : block.reactions()) {
+            String name = names.take(owner + "_REACT_" + (reaction.isDefault() ? "DEFAULT"
+                    : JavaNames.constant(reaction.event().name())));
+            reactions.put(reaction, name);
+            declarations.add("static final Reaction " + name + " = " + owner + (reaction.isDefault()
+                    ? ".reactToDefault();" : ".react(" + event(reaction.event()) + ");"));
         }
         for (ESequence sequence : block.sequences()) {
             List<Block> members = sequence.blocks();

@@ -1,6 +1,7 @@
 package masl.translator.generate;
 
 import masl.grammar.MASLParser;
+import masl.runtime.descriptor.AgentType;
 import masl.grammar.MASLParser.ExpressionContext;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.ImportedType;
@@ -82,6 +83,37 @@ final class TreeQueries {
     }
 
     /** Whether {@code tree} calls Java code declaring checked exceptions (a primitive's are wrapped instead). */
+    /**
+     * Whether {@code tree} calls code that may throw: a Java method or constructor, a member of an
+     * {@code Object}-typed value, or a primitive other than the root type's own (which never throw).
+     * A statement doing so catches the exception as {@code uncaught_exception} (MASL 8, 9).
+     */
+    boolean mayThrow(ParseTree tree) {
+        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
+                && (member.kind() == Member.Kind.JAVA_METHOD && member.javaMember() != null
+                || member.kind() == Member.Kind.DYNAMIC
+                || member.kind() == Member.Kind.PRIMITIVE && !isRootPrimitive(member.name()))) {
+            return true;
+        }
+        for (int i = 0; i < tree.getChildCount(); i++) {
+            if (mayThrow(tree.getChild(i))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** A primitive of the root type ({@code getProxyID}, {@code log}, …) that no type below redeclares. */
+    private boolean isRootPrimitive(String name) {
+        for (AgentType type = selfType.descriptor(); type != null; type = type.supertype()) {
+            boolean declared = type.declaredPrimitives().stream().anyMatch(p -> p.name().equals(name));
+            if (declared) {
+                return type.supertype() == null;
+            }
+        }
+        return false;
+    }
+
     boolean throwsChecked(ParseTree tree) {
         if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
                 && member.javaMember() != null) {

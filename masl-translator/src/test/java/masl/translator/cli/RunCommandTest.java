@@ -52,14 +52,15 @@ class RunCommandTest {
 
     @Test
     void aConstructNotTranslatedYetIsAPositionedErrorWithStatusOne() throws IOException {
-        Run run = Run.of("run", write("events.masl", HEADER + """
+        Run run = Run.of("run", write("closed.masl", HEADER + """
                 asynchronous entry main (true) {
-                  local event ping;
-                  emit ping;
+                  .nop();
+                  setAcceptState("nothing");
                 }
                 """));
         assertEquals(1, run.status());
-        assertTrue(run.err().contains("events.masl:5:3: error: emit (events) is not supported yet by the translator"),
+        assertTrue(run.err().contains(
+                "closed.masl:5:3: error: setAcceptState (permeability) is not supported yet by the translator"),
                 run.err());
     }
 

@@ -73,6 +73,29 @@ class ConstructsTest {
     }
 
     @Test
+    void siblingSynchronousChildrenKeepLockStepWithEachOther() {
+        String program = "import Default.xml;\nDefault a, b, c = newAgent(Default);\n" + """
+                synchronous entry main (true) {
+                  synchronous entry right (.getProxyID() != 0) { .log("R"); .log("R"); }
+                  synchronous entry left (.getProxyID() == 0) { .log("L"); .log("L"); }
+                  scalar entry end (true) { .logln(""); }
+                }
+                """;
+        for (String journal : Programs.journals(program, RUNS)) {
+            assertEquals(7, journal.length(), journal);
+            assertEquals("LRR", sorted(journal.substring(0, 3)), journal);
+            assertEquals("LRR", sorted(journal.substring(3, 6)), journal);
+            assertEquals("\n", journal.substring(6), journal);
+        }
+    }
+
+    private static String sorted(String text) {
+        char[] characters = text.toCharArray();
+        java.util.Arrays.sort(characters);
+        return new String(characters);
+    }
+
+    @Test
     void restartBreakNAndReelectKeepingLocals() {
         assertJournal("tries=4\ntries=4\n", "import Default.xml;\nDefault a, b = newAgent(Default);\n" + """
                 asynchronous entry main (true) {
@@ -133,6 +156,51 @@ class ConstructsTest {
     }
 
     @Test
+    void aReactionThatRestartsItsBlock() {
+        assertJournal("ping 1\nping 2\nafter 3\ndone 3\n", ONE + """
+                asynchronous entry main (true) {
+                  local event ping;
+                  local int tries = 0;
+                  asynchronous entry work (true) {
+                    tries++;
+                    if (tries < 3) emit ping;
+                    .logln("after " + tries);
+                    react (ping) { .logln("ping " + tries); restart; }
+                  }
+                  .logln("done " + tries);
+                }
+                """);
+    }
+
+    @Test
+    void aCallThatThrowsRaisesUncaughtExceptionAndAReactionWithoutEndingLeavesItsBlock() {
+        assertJournal("before\ncaught java.lang.ArrayIndexOutOfBoundsException\nafter\n", ONE + """
+                asynchronous entry main (true) {
+                  local java.util.Vector v = new java.util.Vector();
+                  asynchronous entry risky (true) {
+                    .logln("before");
+                    v.get(3);
+                    .logln("never");
+                    react (uncaught_exception) { .logln("caught " + getMessageFromEvent(uncaught_exception)); }
+                  }
+                  .logln("after");
+                }
+                """);
+    }
+
+    @Test
+    void aDefaultReactionResumesWhereTheAgentWas() {
+        assertJournal("default 42\nresumed\n", ONE + """
+                asynchronous entry main (true) {
+                  local event e;
+                  emitWithMessage(e, 42);
+                  .logln("resumed");
+                  react (default) { .logln("default " + getMessageFromEvent(e)); resume; }
+                }
+                """);
+    }
+
+    @Test
     void sleepSuspendsOnTheMissionClock() {
         assertJournal("slept\n", ONE + """
                 asynchronous entry main (true) {
@@ -159,6 +227,22 @@ class ConstructsTest {
         for (String journal : Programs.journals(program, RUNS)) {
             assertEquals(List.of("battery", "far 0", "near 1"), Programs.sortedLines(journal), journal);
         }
+    }
+
+    @Test
+    void aWriteToALimitedVariableByAnotherTypeIsIgnoredAndRaisesForbiddenAccess() {
+        assertJournal("forbidden owned\nowned 1\n", """
+                import Default.xml;
+                import robots/Khepera.xml;
+                Default d = newAgent(Default);
+                Khepera k = newAgent(Khepera);
+                synchronous entry main (true) {
+                  shared int owned limited(Khepera) = 0;
+                  owned = owned + 1;
+                  scalar entry report (true) { .logln("owned " + owned); }
+                  react (forbidden_access) { .logln("forbidden " + getMessageFromEvent(forbidden_access)); resume; }
+                }
+                """);
     }
 
     @Test

@@ -74,6 +74,25 @@ class GeneratorTest {
     }
 
     @Test
+    void eachReactionHasACaseThatReactionPcNames() throws IOException {
+        Translation e4 = Programs.translate("e4.masl", Files.readString(CORPUS.resolve(
+                "e4-events-lookup-in-the-parent-resume.masl")));
+        String mission = e4.javaSources().get("masl.generated.e4.E4Mission");
+        assertTrue(mission.contains("static final Event MAIN_GO = MAIN.declareSharedEvent(\"go\");"), mission);
+        assertTrue(mission.contains("static final Reaction MAIN_REACT_GO = MAIN.react(MAIN_GO);"), mission);
+        String program = e4.javaSources().get("masl.generated.e4.DefaultProgram");
+        Matcher reactionPc = Pattern.compile("if \\(reaction == MAIN_REACT_GO\\) \\{\\s+return (\\d+);").matcher(program);
+        assertTrue(reactionPc.find(), program);
+        String reaction = program.substring(program.indexOf("case " + reactionPc.group(1) + ": // e4.masl:"));
+        assertTrue(reaction.startsWith("case " + reactionPc.group(1) + ": // e4.masl:17: react (go)"), reaction);
+        assertTrue(reaction.contains("self.logln(\"heard \" + ctx.messageOf(MAIN_GO));"), reaction);
+        assertTrue(reaction.contains("if (!ctx.endReaction()) return;\n"), reaction);
+        assertTrue(reaction.contains("if (!ctx.resumeInterrupted()) return;\n"), reaction);
+        assertEquals(0, occurrences(reaction.substring(0, reaction.indexOf("default:")), "ctx.stepBoundary()"),
+                "no step boundary in a reaction: " + reaction);
+    }
+
+    @Test
     void theMissionClassBuildsTheBlocksInProgramOrderAndDeclaresTheAgents() {
         String mission = Programs.translate("e2.masl", E2).javaSources().get("masl.generated.e2.E2Mission");
         int main = mission.indexOf("static final EntryDefinition MAIN = EntryDefinition.main(\"main\", Mode.SYNCHRONOUS);");
@@ -146,8 +165,8 @@ class GeneratorTest {
 
     @Test
     void unsupportedConstructsArePositionedErrors() throws IOException {
-        Translation translation = Programs.translate("e4.masl", Files.readString(CORPUS.resolve(
-                "e4-events-lookup-in-the-parent-resume.masl")));
+        Translation translation = Programs.translate("e5.masl", Files.readString(CORPUS.resolve(
+                "e5-permeability-a-denied-invocation-becomes-timeout.masl")));
         assertFalse(translation.succeeded());
         assertNull(translation.missionClassName());
         assertTrue(translation.javaSources().isEmpty());
@@ -157,8 +176,8 @@ class GeneratorTest {
             assertTrue(error.message().endsWith(" is not supported yet by the translator"), error.headline());
             assertTrue(error.line() > 0 && error.column() > 0, error.headline());
         }
-        assertTrue(errors.stream().anyMatch(error -> error.headline().startsWith("e4.masl:")
-                && error.message().startsWith("emitWithMessage")), errors.toString());
+        assertTrue(errors.stream().anyMatch(error -> error.headline().startsWith("e5.masl:")
+                && error.message().startsWith("setAcceptState")), errors.toString());
     }
 
     static Stream<Path> corpus() throws IOException {
