@@ -16,7 +16,7 @@ final class CommandLine {
             "check", Set.of("--agent-path"),
             "compile", Set.of("--agent-path", "-d"),
             "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--trace", "--platform", "--main-host",
-                    "--main-port"),
+                    "--main-port", "--sim", "--out"),
             "timeline", Set.of("-o"));
     private static final Set<String> FLAGS = Set.of("--threads");
 
@@ -32,6 +32,7 @@ final class CommandLine {
     String platform = "inproc";
     String mainHost;
     Integer mainPort;
+    String scenarioFile;
 
     private CommandLine(String command) {
         this.command = command;
@@ -77,7 +78,8 @@ final class CommandLine {
     private void set(String option, String value) throws UsageException {
         switch (option) {
             case "--agent-path" -> agentPath = value;
-            case "-d" -> outputFolder = value;
+            case "-d", "--out" -> outputFolder = value;
+            case "--sim" -> scenarioFile = value;
             case "-o" -> outputFile = value;
             case "--trace" -> traceFile = value;
             case "--seed" -> seed = number(option, value, Long.MIN_VALUE);

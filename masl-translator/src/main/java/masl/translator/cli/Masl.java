@@ -31,11 +31,14 @@ public final class Masl {
     static final String USAGE_TEXT = """
             usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE]
                            [--platform inproc|jade] [--main-host HOST --main-port PORT]
+                   masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH]
                    masl compile FILE -d DIR [--agent-path PATH]
                    masl check FILE [--agent-path PATH]
                    masl timeline TRACE -o FILE.html
               run       translate a MASL program, compile it in memory and run its mission in this process;
                         the journal (and only the journal) goes to standard output
+                        with --sim, the mission the scenario names runs on its simulated robots; trajectories,
+                        events, trace, journal and a picture go to --out (default: NAME.out beside NAME.scenario.xml)
               compile   translate a MASL program into Java sources under DIR (one folder per package)
               check     report every error of a MASL program and of the descriptors it imports
               timeline  draw a trace written by run --trace as a self-contained HTML page: one lane per
@@ -75,7 +78,8 @@ public final class Masl {
             return switch (line.command) {
                 case "check" -> check(line);
                 case "compile" -> compile(line);
-                case "run" -> new RunCommand(out, err).run(line, readProgram(line.singleFile()));
+                case "run" -> line.scenarioFile != null ? new SimRun(out, err).run(line)
+                        : new RunCommand(out, err).run(line, readProgram(line.singleFile()));
                 case "timeline" -> new TimelineCommand(err).run(line);
                 default -> throw new UsageException("unknown command '" + line.command + "'");
             };
