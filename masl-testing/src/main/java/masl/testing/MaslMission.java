@@ -1,10 +1,7 @@
 package masl.testing;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -123,9 +120,6 @@ public final class MaslMission {
     }
 
     private String diagnostics(Translation translation) {
-        ByteArrayOutputStream report = new ByteArrayOutputStream();
-        new DiagnosticPrinter(Map.of(source.name(), source.text()))
-                .print(translation.diagnostics().sorted(), new PrintStream(report, true, StandardCharsets.UTF_8));
-        return report.toString(StandardCharsets.UTF_8);
+        return new DiagnosticPrinter(Map.of(source.name(), source.text())).report(translation.diagnostics().sorted());
     }
 }

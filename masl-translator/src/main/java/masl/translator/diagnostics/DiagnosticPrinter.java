@@ -1,5 +1,6 @@
 package masl.translator.diagnostics;
 
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -32,6 +33,13 @@ public final class DiagnosticPrinter {
             }
         }
         return out.toString();
+    }
+
+    /** What {@link #print} writes, as text: for callers that report through an exception. */
+    public String report(Iterable<Diagnostic> diagnostics) {
+        ByteArrayOutputStream text = new ByteArrayOutputStream();
+        print(diagnostics, new PrintStream(text, true, StandardCharsets.UTF_8));
+        return text.toString(StandardCharsets.UTF_8);
     }
 
     public void print(Iterable<Diagnostic> diagnostics, PrintStream err) {

@@ -1,9 +1,7 @@
 package masl.translator.gradle;
 
-import java.io.ByteArrayOutputStream;
 import java.io.File;
 import java.io.IOException;
-import java.io.PrintStream;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -77,9 +75,7 @@ public class MaslCompile extends SourceTask {
             }
         }
         if (!errors.isEmpty()) {
-            ByteArrayOutputStream report = new ByteArrayOutputStream();
-            new DiagnosticPrinter(texts).print(errors, new PrintStream(report, true, StandardCharsets.UTF_8));
-            throw new GradleException("MASL translation failed:\n" + report.toString(StandardCharsets.UTF_8));
+            throw new GradleException("MASL translation failed:\n" + new DiagnosticPrinter(texts).report(errors));
         }
     }
 
