@@ -252,6 +252,23 @@ class AgentApiTest {
                 """, run -> run.assertJournal("0 false\n1 false\n2 false\nra=10 rb=20 c=30\n"));
     }
 
+    @ParameterizedTest
+    @MethodSource("schedules")
+    void aSharedLabelCollectsTheWholeWavesInvocations(Schedule schedule) {
+        everyRun(schedule, "slabel", """
+                Worker a, b, c = newAgent(Worker);
+                synchronous entry main (true) {
+                  SLabel s;
+                  local int mine = 0;
+                  s.this.battery = .twice(.getProxyID());
+                  s.mine = .slow(.getProxyID() + 1);
+                  .open(this);
+                  while (!s.isFinished()) {}
+                  .logln(.getProxyID() + ": " + .battery + " " + mine);
+                }
+                """, run -> run.assertLinesInAnyOrder("0: 0 10", "1: 2 20", "2: 4 30"));
+    }
+
     private static void everyRun(Schedule schedule, String name, String program, Consumer<MissionRun> property) {
         MaslMission mission = MaslMission.fromString(name + ".masl", HEADER + program);
         for (int run = 0; run < RUNS; run++) {
