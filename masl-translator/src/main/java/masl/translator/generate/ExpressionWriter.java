@@ -70,7 +70,7 @@ final class ExpressionWriter {
      * A wait for a result inside an expression: {@code start} (null when the future is already
      * held) gives {@code future}, which the program awaits before evaluating the expression.
      */
-    record Suspension(String start, String future) {
+    record Suspension(String start, String future, String what) {
     }
 
     /** Takes the suspension points of the expressions written since the last call, in evaluation order. */
@@ -201,7 +201,8 @@ final class ExpressionWriter {
         if (primitive.synchronous()) {
             String future = assignments.temporary(AgentCalls.futureType(primitive));
             String invoke = calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeType.fullClassName(), callee, java);
-            suspensions.add(new Suspension(future + " = " + register + invoke + tail + ";", future));
+            suspensions.add(new Suspension(future + " = " + register + invoke + tail + ";", future,
+                    "the result of " + JavaText.snippet(where)));
             return future + ".join()";
         }
         Primitive countermeasure = primitive.countermeasure() == null ? null
@@ -509,7 +510,7 @@ final class ExpressionWriter {
         }
         if (futures.contains(variable)) {
             // Holding a future does not block; reading it waits for the result (MASL 9).
-            suspensions.add(new Suspension(null, local(variable)));
+            suspensions.add(new Suspension(null, local(variable), "the result " + variable.name() + " holds"));
             return local(variable) + ".join()";
         }
         return local(variable);
@@ -642,12 +643,13 @@ final class ExpressionWriter {
             return calls.call(AgentCalls.Kind.INVOKE_SELF, primitive, null, calleeClass, callee, java);
         }
         if (primitive.synchronous()) {
-            return awaited(calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeClass, callee, java), primitive);
+            return awaited(calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeClass, callee, java), primitive,
+                    where);
         }
         Primitive countermeasure = primitive.countermeasure() == null ? null
                 : calleeType.findPrimitive(primitive.countermeasure()).orElse(null);
         String launch = calls.call(AgentCalls.Kind.LAUNCH, primitive, countermeasure, calleeClass, callee, java);
-        return where == unawaited ? launch : awaited(launch, primitive);
+        return where == unawaited ? launch : awaited(launch, primitive, where);
     }
 
     /** The arguments of a call, converted for the primitive's parameters (§3). */
@@ -662,9 +664,9 @@ final class ExpressionWriter {
     }
 
     /** A future started before the statement, awaited, and read where the call stood. */
-    private String awaited(String start, Primitive primitive) {
+    private String awaited(String start, Primitive primitive, ParserRuleContext call) {
         String future = assignments.temporary(AgentCalls.futureType(primitive));
-        suspensions.add(new Suspension(future + " = " + start + ";", future));
+        suspensions.add(new Suspension(future + " = " + start + ";", future, "the result of " + JavaText.snippet(call)));
         return future + ".join()";
     }
 
