@@ -628,8 +628,19 @@ final class ExpressionWriter {
     private String primitiveCall(ExpressionContext receiver, String name, List<ExpressionContext> arguments,
             ParserRuleContext where) {
         boolean internal = receiver == null || TreeQueries.isThis(receiver);
-        var calleeType = internal ? selfType.descriptor() : queries.descriptorOf(program.typeOf(receiver));
+        var receiverType = internal ? selfType.descriptor() : queries.descriptorOf(program.typeOf(receiver));
+        var calleeType = receiverType;
         Optional<Primitive> found = calleeType == null ? Optional.empty() : calleeType.findPrimitive(name);
+        if (found.isEmpty() && !internal && receiverType != null) {
+            // Polymorphism (MASL 4): a type the receiver may be of declares it.
+            for (ImportedType declaring : declaringTypes(where)) {
+                if (declaring.isLoaded() && declaring.descriptor().isSubtypeOf(receiverType)) {
+                    calleeType = declaring.descriptor();
+                    found = calleeType.findPrimitive(name);
+                    break;
+                }
+            }
+        }
         if (found.isEmpty()) {
             return unsupported.report(where, internal
                     ? "a primitive call the agent's type lacks, inside an expression,"
@@ -639,17 +650,23 @@ final class ExpressionWriter {
         String callee = internal ? "self" : expr(receiver);
         List<String> java = arguments(primitive, arguments);
         String calleeClass = calleeType.fullClassName();
+        String receiverClass = receiverType.fullClassName();
         if (primitive.synchronous() && internal) {
             return calls.call(AgentCalls.Kind.INVOKE_SELF, primitive, null, calleeClass, callee, java);
         }
         if (primitive.synchronous()) {
-            return awaited(calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeClass, callee, java), primitive,
-                    where);
+            return awaited(calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeClass, receiverClass, callee, java),
+                    primitive, where);
         }
         Primitive countermeasure = primitive.countermeasure() == null ? null
                 : calleeType.findPrimitive(primitive.countermeasure()).orElse(null);
-        String launch = calls.call(AgentCalls.Kind.LAUNCH, primitive, countermeasure, calleeClass, callee, java);
+        String launch = calls.call(AgentCalls.Kind.LAUNCH, primitive, countermeasure, calleeClass, receiverClass,
+                callee, java);
         return where == unawaited ? launch : awaited(launch, primitive, where);
+    }
+
+    private List<ImportedType> declaringTypes(ParserRuleContext call) {
+        return program.symbolOf(call).orElse(null) instanceof Member member ? member.declaringTypes() : List.of();
     }
 
     /** The arguments of a call, converted for the primitive's parameters (§3). */
