@@ -161,8 +161,7 @@ final class InstructionWriter {
      * A statement, preceded by the values hoisted out of it; wrapped in {@code try} when it calls
      * code that may throw: the exception raises {@code uncaught_exception} (MASL 8, 9).
      */
-    private void writeGuarded(ExpressionContext statement, String java) {
-        ExpressionContext expression = statement;
+    private void writeGuarded(ExpressionContext expression, String java) {
         List<ExpressionWriter.Suspension> waits = expressions.takeSuspensions();
         List<String> before = assignments.takeHoisted();
         boolean guarded = queries.mayThrow(expression);
@@ -181,7 +180,7 @@ final class InstructionWriter {
             } else if (wait.start() != null) {
                 cases.line(wait.start());
             }
-            awaitResult(wait, statement);
+            awaitResult(wait, expression);
         }
         if (!guarded) {
             before.forEach(cases::line);
