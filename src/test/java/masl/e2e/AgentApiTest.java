@@ -282,6 +282,18 @@ class AgentApiTest {
                 """, run -> run.assertJournal("w=0 s=7\n"));
     }
 
+    @ParameterizedTest
+    @MethodSource("schedules")
+    void aPrimitivesExceptionGivesTheDefaultValueAndUncaughtException(Schedule schedule) {
+        everyRun(schedule, "broken", """
+                Worker a, b = newAgent(Worker);
+                synchronous entry main (true) {
+                  if (.getProxyID() == 0) .logln("got " + b.broken() + " and " + .broken());
+                  react (uncaught_exception) { .logln("caught " + getMessageFromEvent(uncaught_exception)); resume; }
+                }
+                """, run -> run.assertJournal("got 0 and 0\n" + "caught java.lang.IllegalStateException\n".repeat(2)));
+    }
+
     private static void everyRun(Schedule schedule, String name, String program, Consumer<MissionRun> property) {
         MaslMission mission = MaslMission.fromString(name + ".masl", HEADER + program);
         for (int run = 0; run < RUNS; run++) {

@@ -28,6 +28,11 @@ public class Worker extends Default {
         return 2 * value;
     }
 
+    /** Synchronous: always throws. */
+    public int broken() {
+        throw new IllegalStateException("broken");
+    }
+
     /** Asynchronous: ten times {@code value}, once {@link #open} opened this agent's gate. */
     public int slow(int value) throws InterruptedException {
         gate.await();
