@@ -294,6 +294,24 @@ class AgentApiTest {
                 """, run -> run.assertJournal("got 0 and 0\n" + "caught java.lang.IllegalStateException\n".repeat(2)));
     }
 
+    @ParameterizedTest
+    @MethodSource("schedules")
+    void agentVariablesAndEntryListElementsAreReceivers(Schedule schedule) {
+        everyRun(schedule, "receivers", """
+                Worker a, b, c = newAgent(Worker);
+                synchronous entry main (true) {
+                  scalar entry ask (true) {
+                    local Worker w = c;
+                    local Worker[] all = main.getList();
+                    local int sum = 0;
+                    local int i = 0;
+                    for (i = 0; i < all.length; i++) { sum += all[i].twice(all[i].getProxyID()); }
+                    .logln("w=" + w.twice(5) + " sum=" + sum);
+                  }
+                }
+                """, run -> run.assertJournal("w=10 sum=6\n"));
+    }
+
     private static void everyRun(Schedule schedule, String name, String program, Consumer<MissionRun> property) {
         MaslMission mission = MaslMission.fromString(name + ".masl", HEADER + program);
         for (int run = 0; run < RUNS; run++) {
