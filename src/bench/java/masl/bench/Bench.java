@@ -30,8 +30,12 @@ public final class Bench {
         System.out.printf(Locale.ROOT, "MASL benchmarks on %d cores, %s %s, max heap %d MiB%n%n",
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.vm.name"),
                 System.getProperty("java.version"), Runtime.getRuntime().maxMemory() >> 20);
-        lockStep(options);
-        invocations(options);
+        if (options.runs("lockstep")) {
+            lockStep(options);
+        }
+        if (options.runs("invocations")) {
+            invocations(options);
+        }
     }
 
     /**
@@ -101,20 +105,27 @@ public final class Bench {
         return value == null || baseline == null ? "-" : String.format(Locale.ROOT, "%.2fx", value / baseline);
     }
 
-    private record Options(List<Integer> sizes, double seconds, int threadLimit) {
+    private record Options(List<Integer> sizes, double seconds, int threadLimit, List<String> only) {
+
+        boolean runs(String benchmark) {
+            return only.isEmpty() || only.contains(benchmark);
+        }
+
         static Options parse(String[] args) {
             List<Integer> sizes = List.of(10, 100, 1_000, 10_000);
             double seconds = 1;
             int threadLimit = 1_000;
+            List<String> only = List.of();
             for (int i = 0; i + 1 < args.length; i += 2) {
                 switch (args[i]) {
                     case "--sizes" -> sizes = java.util.Arrays.stream(args[i + 1].split(",")).map(Integer::valueOf).toList();
                     case "--seconds" -> seconds = Double.parseDouble(args[i + 1]);
                     case "--thread-limit" -> threadLimit = Integer.parseInt(args[i + 1]);
+                    case "--only" -> only = List.of(args[i + 1].split(","));
                     default -> throw new IllegalArgumentException("unknown option " + args[i]);
                 }
             }
-            return new Options(sizes, seconds, threadLimit);
+            return new Options(sizes, seconds, threadLimit, only);
         }
     }
 }
