@@ -10,11 +10,12 @@ import java.util.concurrent.Callable;
 import masl.jade.JadeOptions;
 import masl.jade.JadePlatform;
 import masl.jade.bench.AclPingPong;
+import masl.jade.bench.BridgePingPong;
 
 /**
  * {@code gradle bench}: runs MASL and its baselines side by side in one JVM and prints tables of
- * throughput with ratios against the baselines (issue 13). Every measurement is the best of
- * {@value #ROUNDS} rounds after one warm-up round, the runs of one row interleaved, so that a
+ * throughput with ratios against the baselines (issue 13). Every figure is the median of
+ * {@value #RUNS} runs after one warm-up run, the runs of one row interleaved, so that a
  * disturbance of the machine hits every column alike. Not a test: nothing is asserted.
  *
  * <p>Arguments: {@code --sizes 10,100,1000,10000} (agent counts), {@code --seconds S} (rough time
@@ -23,7 +24,8 @@ import masl.jade.bench.AclPingPong;
  */
 public final class Bench {
 
-    private static final int ROUNDS = 3;
+    /** Measurements per figure, after a warm-up: the figure is their median. */
+    static final int RUNS = 5;
 
     public static void main(String[] args) throws Exception {
         Options options = Options.parse(args);
@@ -39,24 +41,62 @@ public final class Bench {
     }
 
     /**
-     * The JADE baseline of the invocation benchmarks: ACL REQUEST/INFORM round trips in one
-     * container. MASL's in-process and bridged invocations join this table when external
-     * invocations are translated (issue 7).
+     * Synchronous round trips between agent pairs: MASL in-process against JADE's ACL ping-pong in
+     * one container (item 2), and JADE pingers invoking MASL agents through the bridge against the
+     * same raw JADE figure (item 3, as a ratio of round-trip times).
      */
     private static void invocations(Options options) throws Exception {
-        System.out.println("2. Invocations: synchronous round trips per second between agent pairs");
-        System.out.printf(Locale.ROOT, "%8s | %20s | %20s%n", "pairs", "JADE ACL ping-pong", "MASL in-process");
+        System.out.println("2. Invocations: synchronous round trips per second between agent pairs (median of " + RUNS + ")");
+        System.out.println("3. Bridge: JADE pingers invoking MASL agents through --platform jade, against raw JADE");
+        System.out.printf(Locale.ROOT, "%6s | %14s | %14s | %10s | %14s | %18s%n", "pairs", "JADE ACL",
+                "MASL in-proc", "MASL/JADE", "JADE->bridge", "bridge/JADE time");
         Duration window = Duration.ofMillis((long) (options.seconds * 1000));
+        Duration warmUp = window.dividedBy(2);
         try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
             for (int pairs : new int[] {1, 10}) {
-                double best = 0;
-                for (int round = 0; round < ROUNDS; round++) {
-                    best = Math.max(best, AclPingPong.measure(platform, pairs, window.dividedBy(2), window).roundTripsPerSecond());
-                }
-                System.out.printf(Locale.ROOT, "%8d | %20s | %20s%n", pairs, rate(best), "not translated yet");
+                Map<String, double[]> runs = interleaved(RUNS, List.of(
+                        new Measure("jade", () -> AclPingPong.measure(platform, pairs, warmUp, window).roundTripsPerSecond()),
+                        new Measure("masl", () -> MaslPingPong.measure(pairs, warmUp, window)),
+                        new Measure("bridge", () -> BridgePingPong.measure(platform, pairs, warmUp, window).roundTripsPerSecond())));
+                double jade = median(runs.get("jade"));
+                double masl = median(runs.get("masl"));
+                double bridge = median(runs.get("bridge"));
+                System.out.printf(Locale.ROOT, "%6d | %14s | %14s | %10s | %14s | %18s%n", pairs, rate(jade),
+                        rate(masl), ratio(masl, jade), rate(bridge), ratio(jade, bridge));
             }
         }
+        System.out.println("   (goals: MASL/JADE >= 3x; bridge/JADE round-trip time <= 1.2x)");
         System.out.println();
+    }
+
+    /** One kind of measurement of a row. */
+    private record Measure(String name, Callable<Double> run) { }
+
+    /**
+     * Runs every measure once as a warm-up, then {@code runs} rounds of all of them in turn, so that a
+     * disturbance of the machine hits every column alike; the figures of each measure by name.
+     */
+    private static Map<String, double[]> interleaved(int runs, List<Measure> measures) throws Exception {
+        for (Measure measure : measures) {
+            measure.run().call();
+        }
+        Map<String, double[]> figures = new LinkedHashMap<>();
+        for (Measure measure : measures) {
+            figures.put(measure.name(), new double[runs]);
+        }
+        for (int round = 0; round < runs; round++) {
+            for (Measure measure : measures) {
+                figures.get(measure.name())[round] = measure.run().call();
+            }
+        }
+        return figures;
+    }
+
+    static double median(double[] figures) {
+        double[] sorted = figures.clone();
+        java.util.Arrays.sort(sorted);
+        int middle = sorted.length / 2;
+        return sorted.length % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2;
     }
 
     private static void lockStep(Options options) throws Exception {
@@ -64,32 +104,29 @@ public final class Bench {
         LockStepRun pool = new TaskPoolWaves();
         LockStepRun threads = new PhaserThreads();
         System.out.println("1. Lock-step: N agents in one synchronous block, steps per second (one barrier trip = one step),");
-        System.out.println("   timed from the end of the first step to the end of the last (start-up left out)");
+        System.out.println("   timed from the end of the first step to the end of the last (start-up left out), median of " + RUNS);
         System.out.printf(Locale.ROOT, "%8s | %14s | %14s | %14s | %12s | %12s%n",
                 "N", "MASL (pool)", pool.name().replace("Java tasks, ", ""), "threads+Phaser", "MASL/pool", "MASL/threads");
         for (int agents : options.sizes) {
             int steps = stepsFor(agents, options.seconds);
-            Map<LockStepRun, Double> best = new LinkedHashMap<>();
             List<LockStepRun> runs = new ArrayList<>(List.of(masl, pool));
             if (agents <= options.threadLimit) {
                 runs.add(threads);
             }
+            List<Measure> measures = new ArrayList<>();
             for (LockStepRun run : runs) {
-                run.prepare(agents, Math.max(2, steps / 10)).call();
+                // Translating and compiling MASL's program is left out of the timing: prepare() does it.
+                measures.add(new Measure(run.name(), () -> run.prepare(agents, steps).call()));
             }
-            for (int round = 0; round < ROUNDS; round++) {
-                for (LockStepRun run : runs) {
-                    Callable<Double> prepared = run.prepare(agents, steps);
-                    best.merge(run, prepared.call(), Math::max);
-                }
-            }
-            Double maslRate = best.get(masl);
-            Double poolRate = best.get(pool);
-            Double threadRate = best.get(threads);
+            Map<String, double[]> figures = interleaved(RUNS, measures);
+            Double maslRate = median(figures.get(masl.name()));
+            Double poolRate = median(figures.get(pool.name()));
+            Double threadRate = figures.containsKey(threads.name()) ? median(figures.get(threads.name())) : null;
             System.out.printf(Locale.ROOT, "%8d | %14s | %14s | %14s | %12s | %12s%n", agents,
                     rate(maslRate), rate(poolRate), rate(threadRate), ratio(maslRate, poolRate), ratio(maslRate, threadRate));
         }
-        System.out.printf(Locale.ROOT, "   (threads+Phaser not run above N=%d: one platform thread per agent)%n%n", options.threadLimit);
+        System.out.printf(Locale.ROOT, "   (threads+Phaser not run above N=%d: one platform thread per agent; goal: MASL/pool >= 0.5x at N=1000)%n%n",
+                options.threadLimit);
     }
 
     /** Enough steps for about {@code seconds} at the rates seen on a 2-core machine. */

@@ -947,9 +947,10 @@ final class Agent implements AgentContext, AgentTask {
     /** Whether {@code state} of this agent lets the invocation run, its requester's relation decided now (§11). */
     private boolean permits(PermeabilityState state, PendingInvocation invocation) {
         String primitive = invocation.primitive();
-        if (primitive == null) {
+        if (primitive == null || state == null) {
             return true;
         }
+        // The relation needs the coordinator's lock: decided only when a state's rights depend on it.
         return Permeability.allows(state, permeability.primitiveId(primitive),
                 relationOf(invocation.requester(), permeability.isStaticPrimitive(primitive)),
                 PermeabilityState.INVOKE);
