@@ -45,6 +45,9 @@ public final class Bench {
         if (options.runs("translation")) {
             translation();
         }
+        if (options.runs("simulation")) {
+            simulation();
+        }
     }
 
     /**
@@ -104,6 +107,21 @@ public final class Bench {
         Map<String, double[]> figures = interleaved(RUNS, List.of(new Measure("elapsed", elapsed), new Measure("cpu", cpu)));
         System.out.printf(Locale.ROOT, "%26s | %14s | %14s | %12s%n%n", "warm, median of " + RUNS,
                 rate(median(figures.get("elapsed"))), rate(median(figures.get("cpu"))), ">= 50,000");
+    }
+
+    /** Item 6: robots driven by MASL against a bare ode4j loop over the same bodies. */
+    private static void simulation() throws Exception {
+        System.out.println("6. Simulation: " + MaslSimulation.ROBOTS + " wheeled robots, step 0.01 s, lock-step, "
+                + "simulated seconds per elapsed second (median of " + RUNS + ")");
+        System.out.printf(Locale.ROOT, "%8s | %14s | %14s | %12s%n", "robots", "MASL", "bare ode4j", "MASL/bare");
+        MaslSimulation simulation = MaslSimulation.prepare();
+        Map<String, double[]> figures = interleaved(RUNS, List.of(new Measure("masl", simulation.masl()),
+                new Measure("bare", simulation.bare())));
+        double masl = median(figures.get("masl"));
+        double bare = median(figures.get("bare"));
+        System.out.printf(Locale.ROOT, "%8d | %14.2f | %14.2f | %12s%n", MaslSimulation.ROBOTS, masl, bare, ratio(masl, bare));
+        System.out.println("   (goal: MASL/bare >= 0.8x)");
+        System.out.println();
     }
 
     /** One kind of measurement of a row. */
