@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import masl.jade.JadeException;
 import masl.jade.JadeOptions;
 import masl.jade.JadePlatform;
 import masl.jade.bench.AclPingPong;
@@ -62,7 +63,8 @@ public final class Bench {
                 "MASL in-proc", "MASL/JADE", "JADE->bridge", "bridge/JADE time");
         Duration window = Duration.ofMillis((long) (options.seconds * 1000));
         Duration warmUp = window.dividedBy(2);
-        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
+        JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer());
+        try {
             for (int pairs : new int[] {1, 10}) {
                 Map<String, double[]> runs = interleaved(RUNS, List.of(
                         new Measure("jade", () -> AclPingPong.measure(platform, pairs, warmUp, window).roundTripsPerSecond()),
@@ -74,6 +76,8 @@ public final class Bench {
                 System.out.printf(Locale.ROOT, "%6d | %14s | %14s | %10s | %14s | %18s%n", pairs, rate(jade),
                         rate(masl), ratio(masl, jade), rate(bridge), ratio(jade, bridge));
             }
+        } finally {
+            closeQuietly(platform);
         }
         System.out.println("   (goals: MASL/JADE >= 3x; bridge/JADE round-trip time <= 1.2x)");
         System.out.println();
@@ -122,6 +126,15 @@ public final class Bench {
         System.out.printf(Locale.ROOT, "%8d | %14.2f | %14.2f | %12s%n", MaslSimulation.ROBOTS, masl, bare, ratio(masl, bare));
         System.out.println("   (goal: MASL/bare >= 0.8x)");
         System.out.println();
+    }
+
+    /** JADE 4.3 sometimes fails to shut its platform down: the figures are printed by then, and the other benchmarks still run. */
+    private static void closeQuietly(JadePlatform platform) {
+        try {
+            platform.close();
+        } catch (JadeException e) {
+            System.out.println("   (JADE did not shut down cleanly: " + e.getMessage() + ")");
+        }
     }
 
     /** One kind of measurement of a row. */
