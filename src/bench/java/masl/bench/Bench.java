@@ -115,15 +115,20 @@ public final class Bench {
 
     /** Item 6: robots driven by MASL against a bare ode4j loop over the same bodies. */
     private static void simulation() throws Exception {
-        System.out.println("6. Simulation: " + MaslSimulation.ROBOTS + " wheeled robots, step 0.01 s, lock-step, "
-                + "simulated seconds per elapsed second (median of " + RUNS + ")");
-        System.out.printf(Locale.ROOT, "%8s | %14s | %14s | %12s%n", "robots", "MASL", "bare ode4j", "MASL/bare");
+        System.out.println("6. Simulation: " + MaslSimulation.ROBOTS + " wheeled robots, step 0.01 s, lock-step, simulated seconds "
+                + "per second of elapsed time and of process CPU time (median of " + RUNS + ")");
+        System.out.printf(Locale.ROOT, "%8s | %14s | %14s | %12s | %14s | %14s | %12s%n", "robots", "MASL", "bare ode4j",
+                "MASL/bare", "MASL (cpu)", "bare (cpu)", "MASL/bare");
         MaslSimulation simulation = MaslSimulation.prepare();
-        Map<String, double[]> figures = interleaved(RUNS, List.of(new Measure("masl", simulation.masl()),
-                new Measure("bare", simulation.bare())));
+        Map<String, double[]> figures = interleaved(RUNS, List.of(new Measure("masl", simulation.masl(false)),
+                new Measure("bare", simulation.bare(false)), new Measure("masl-cpu", simulation.masl(true)),
+                new Measure("bare-cpu", simulation.bare(true))));
         double masl = median(figures.get("masl"));
         double bare = median(figures.get("bare"));
-        System.out.printf(Locale.ROOT, "%8d | %14.2f | %14.2f | %12s%n", MaslSimulation.ROBOTS, masl, bare, ratio(masl, bare));
+        double maslCpu = median(figures.get("masl-cpu"));
+        double bareCpu = median(figures.get("bare-cpu"));
+        System.out.printf(Locale.ROOT, "%8d | %14.2f | %14.2f | %12s | %14.2f | %14.2f | %12s%n", MaslSimulation.ROBOTS,
+                masl, bare, ratio(masl, bare), maslCpu, bareCpu, ratio(maslCpu, bareCpu));
         System.out.println("   (goal: MASL/bare >= 0.8x)");
         System.out.println();
     }
