@@ -68,7 +68,7 @@ public final class Bench {
             for (int pairs : new int[] {1, 10}) {
                 Map<String, double[]> runs = interleaved(RUNS, List.of(
                         new Measure("jade", () -> AclPingPong.measure(platform, pairs, warmUp, window).roundTripsPerSecond()),
-                        new Measure("masl", () -> MaslPingPong.measure(pairs, warmUp, window)),
+                        new Measure("masl", MaslPingPong.prepare(pairs, (int) (options.seconds * 400_000 / pairs))),
                         new Measure("bridge", () -> BridgePingPong.measure(platform, pairs, warmUp, window).roundTripsPerSecond())));
                 double jade = median(runs.get("jade"));
                 double masl = median(runs.get("masl"));
