@@ -120,7 +120,8 @@ public final class Bench {
         System.out.printf(Locale.ROOT, "%8s | %14s | %14s | %12s | %14s | %14s | %12s%n", "robots", "MASL", "bare ode4j",
                 "MASL/bare", "MASL (cpu)", "bare (cpu)", "MASL/bare");
         MaslSimulation simulation = MaslSimulation.prepare();
-        Map<String, double[]> figures = interleaved(RUNS, List.of(new Measure("masl", simulation.masl(false)),
+        // ode4j's code is still being compiled after one run of each: the first runs would measure the JIT.
+        Map<String, double[]> figures = interleaved(3, RUNS, List.of(new Measure("masl", simulation.masl(false)),
                 new Measure("bare", simulation.bare(false)), new Measure("masl-cpu", simulation.masl(true)),
                 new Measure("bare-cpu", simulation.bare(true))));
         double masl = median(figures.get("masl"));
@@ -150,8 +151,15 @@ public final class Bench {
      * disturbance of the machine hits every column alike; the figures of each measure by name.
      */
     private static Map<String, double[]> interleaved(int runs, List<Measure> measures) throws Exception {
-        for (Measure measure : measures) {
-            measure.run().call();
+        return interleaved(1, runs, measures);
+    }
+
+    /** As {@link #interleaved(int, List)} after {@code warmUps} rounds of warm-up. */
+    private static Map<String, double[]> interleaved(int warmUps, int runs, List<Measure> measures) throws Exception {
+        for (int round = 0; round < warmUps; round++) {
+            for (Measure measure : measures) {
+                measure.run().call();
+            }
         }
         Map<String, double[]> figures = new LinkedHashMap<>();
         for (Measure measure : measures) {
