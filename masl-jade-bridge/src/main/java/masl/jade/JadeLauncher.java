@@ -43,7 +43,6 @@ public final class JadeLauncher {
     private final MissionProgram program;
     private Function<AgentSpec, AgentType> types;
     private MissionProgram.ImplementationFactory implementations = JadeLauncher::newImplementation;
-    private AcceptPolicy acceptPolicy = AcceptPolicy.INITIAL_STATE;
     private Appendable journal;
     private Trace trace = Trace.NONE;
     private Consumer<Mission> whenReady = mission -> { };
@@ -65,12 +64,6 @@ public final class JadeLauncher {
     /** Makes each agent's implementation; by default the no-argument constructor of its type's class. */
     public JadeLauncher implementations(MissionProgram.ImplementationFactory factory) {
         this.implementations = Objects.requireNonNull(factory, "factory");
-        return this;
-    }
-
-    /** Whether FIPA agents may invoke a primitive; {@link AcceptPolicy#INITIAL_STATE} by default. */
-    public JadeLauncher acceptPolicy(AcceptPolicy policy) {
-        this.acceptPolicy = Objects.requireNonNull(policy, "policy");
         return this;
     }
 
@@ -146,8 +139,7 @@ public final class JadeLauncher {
         List<AgentController> controllers = new ArrayList<>();
         try {
             for (int id = 0; id < specs.size(); id++) {
-                MaslJadeAgent host = new MaslJadeAgent(id, created.get(id), tables.get(id), acceptPolicy, mission,
-                        ready);
+                MaslJadeAgent host = new MaslJadeAgent(id, created.get(id), tables.get(id), mission, ready);
                 controllers.add(create(platform, specs.get(id).name(), host));
                 hosts.add(host);
             }

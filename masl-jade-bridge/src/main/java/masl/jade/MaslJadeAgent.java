@@ -28,7 +28,8 @@ import masl.runtime.descriptor.Primitive;
  * <p>A request is read on this agent's JADE thread: one that is malformed, names an unknown
  * primitive or gives unusable arguments is answered {@code NOT_UNDERSTOOD} at once. A valid one is
  * queued at the MASL agent ({@link Mission#submitInvocation}) and served as MASL §5 says, on the
- * program's thread: {@code REFUSE} if the {@link AcceptPolicy} denies it, else the primitive runs and
+ * program's thread: {@code REFUSE} if the agent's permeability state then denies it to an
+ * <em>other</em>, else the primitive runs and
  * the answer is {@code INFORM} with its result or {@code FAILURE} with what it threw.
  */
 final class MaslJadeAgent extends Agent {
@@ -42,18 +43,16 @@ final class MaslJadeAgent extends Agent {
     private final transient int proxyId;
     private final transient AgentImplementation implementation;
     private final transient PrimitiveTable primitives;
-    private final transient AcceptPolicy policy;
     private final transient Mission mission;
     private final transient CountDownLatch ready;
     private transient volatile Thread thread;
     private transient volatile FIPAException registrationFailure;
 
-    MaslJadeAgent(int proxyId, AgentImplementation implementation, PrimitiveTable primitives, AcceptPolicy policy,
-            Mission mission, CountDownLatch ready) {
+    MaslJadeAgent(int proxyId, AgentImplementation implementation, PrimitiveTable primitives, Mission mission,
+            CountDownLatch ready) {
         this.proxyId = proxyId;
         this.implementation = implementation;
         this.primitives = primitives;
-        this.policy = policy;
         this.mission = mission;
         this.ready = ready;
     }
@@ -127,16 +126,16 @@ final class MaslJadeAgent extends Agent {
             send(AclInvocations.notUnderstood(message, problem));
             return;
         }
-        mission.submitInvocation(proxyId, () -> serve(message, call));
+        String primitive = call.primitive().name();
+        // A FIPA agent is an "other" (MASL §11): the runtime filters the request by the agent's state
+        // when the agent serves it, and runs either the primitive or the refusal.
+        mission.submitInvocation(proxyId, primitive, () -> serve(message, call),
+                () -> send(AclInvocations.reply(message, Reply.Kind.REFUSED, JsonContent.refusal(
+                        "the permeability of " + getLocalName() + " denies others invoking " + primitive))));
     }
 
-    /** Runs on the MASL agent's thread, when it serves its invocations. */
+    /** Runs on the MASL agent's thread, when it serves its invocations and its state allows this one. */
     private void serve(ACLMessage request, PrimitiveTable.Call call) {
-        if (!policy.allowsOther(getLocalName(), primitives.type(), call.primitive())) {
-            send(AclInvocations.reply(request, Reply.Kind.REFUSED, JsonContent.refusal("the permeability of "
-                    + getLocalName() + " denies others invoking " + call.primitive().name())));
-            return;
-        }
         Object result;
         try {
             result = call.invoke(implementation);

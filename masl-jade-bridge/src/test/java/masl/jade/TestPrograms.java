@@ -49,7 +49,7 @@ public final class TestPrograms {
                 }
                 for (AgentSpec agent : agents) {
                     try {
-                        builder.agent(agent.name(), (TestAgent) implementations.create(agent), program);
+                        builder.agent(agent.name(), (TestAgent) implementations.create(agent), type(agent), program);
                     } catch (ReflectiveOperationException e) {
                         throw new IllegalStateException("cannot create agent " + agent.name(), e);
                     }
@@ -84,6 +84,46 @@ public final class TestPrograms {
                         if (!ctx.await(((ServiceAgent) self).released())) return;
                         continue;
                     case 1:
+                        ctx.finish();
+                        return;
+                    default:
+                        throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    /**
+     * Java-driven: once the test asks ({@link ServiceAgent#closeRequested}), sets the state
+     * {@code nothing}, which denies others every primitive, tells the test ({@link ServiceAgent#closed}),
+     * and finishes when the test says ({@link ServiceAgent#finishRequested}); blocked meanwhile, so
+     * requests are served on its behalf at once, filtered by its state.
+     */
+    static final class ClosesWhenAsked extends CompactProgram {
+        ClosesWhenAsked(TestAgent self) {
+            super(self);
+        }
+
+        @Override
+        protected void resume(AgentContext ctx) {
+            ServiceAgent service = (ServiceAgent) self;
+            while (true) {
+                switch (pc) {
+                    case 0:
+                        pc = 1;
+                        if (!ctx.await(service.closeRequested)) return;
+                        continue;
+                    case 1:
+                        ctx.setAcceptState("nothing");
+                        pc = 2;
+                        if (!ctx.stepBoundary()) return;
+                        continue;
+                    case 2:
+                        service.closed.complete(null);
+                        pc = 3;
+                        if (!ctx.await(service.finishRequested)) return;
+                        continue;
+                    case 3:
                         ctx.finish();
                         return;
                     default:
