@@ -168,10 +168,10 @@ class FipaRequestTest {
     @Test
     void theAgentIsRegisteredWithTheDfWhileItsMissionRuns() throws Exception {
         runWhile(() -> {
-            assertEquals(List.of("b"), providers(MaslJadeAgent.PRIMITIVE_SERVICE, "divide"));
-            assertEquals(List.of("b"), providers(MaslJadeAgent.TYPE_SERVICE, "ServiceAgent"));
+            assertEquals(List.of("b"), providers(DfEntries.PRIMITIVE_SERVICE, "divide"));
+            assertEquals(List.of("b"), providers(DfEntries.TYPE_SERVICE, "ServiceAgent"));
         });
-        assertEquals(List.of(), providers(MaslJadeAgent.PRIMITIVE_SERVICE, "divide"), "deregistered at the end");
+        assertEquals(List.of(), providers(DfEntries.PRIMITIVE_SERVICE, "divide"), "deregistered at the end");
     }
 
     /** What the test does while the mission runs; may throw. */
@@ -212,7 +212,7 @@ class FipaRequestTest {
      */
     private static void awaitRegistered() throws Exception {
         DFAgentDescription[] found = DFService.searchUntilFound(probe, probe.getDefaultDF(),
-                template(MaslJadeAgent.PRIMITIVE_SERVICE, "release"), null, 20_000);
+                template(DfEntries.PRIMITIVE_SERVICE, "release"), null, 20_000);
         assertTrue(found != null && found.length == 1, "b registered with the DF within 20 s");
     }
 
