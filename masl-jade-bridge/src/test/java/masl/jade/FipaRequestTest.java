@@ -111,14 +111,13 @@ class FipaRequestTest {
      */
     @Test
     void afterTheAgentSetsAStateDenyingOthersTheSameRequestIsRefused() throws Exception {
+        TestPrograms.Signals signals = new TestPrograms.Signals();
         MissionProgram program = TestPrograms.of(null,
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
-                TestPrograms.ClosesWhenAsked::new);
-        ServiceAgent service = new ServiceAgent();
+                self -> new TestPrograms.ClosesWhenAsked(self, signals));
         CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
             try {
-                return JadeLauncher.of(program).types(TestPrograms::type).implementations(spec -> service)
-                        .run(platform, TIMEOUT);
+                return JadeLauncher.of(program).types(TestPrograms::type).run(platform, TIMEOUT);
             } catch (InterruptedException e) {
                 throw new IllegalStateException(e);
             }
@@ -126,8 +125,8 @@ class FipaRequestTest {
         try {
             awaitRegistered();
             assertEquals(ACLMessage.INFORM, invoke("log", List.of("before ")).getPerformative());
-            service.closeRequested.complete(null);
-            service.closed.get(20, TimeUnit.SECONDS);
+            signals.closeRequested().complete(null);
+            signals.closed().get(20, TimeUnit.SECONDS);
             ACLMessage refused = invoke("log", List.of("denied "));
             assertEquals(ACLMessage.REFUSE, refused.getPerformative());
             assertEquals(new Reply.Refused("the permeability of b denies others invoking log"),
@@ -136,8 +135,8 @@ class FipaRequestTest {
                     + "was expecting double-quote to start field name",
                     raw(ACLMessage.REQUEST, "{\"primitive\":\"log\",}"));
         } finally {
-            service.closeRequested.complete(null);
-            service.finishRequested.complete(null);
+            signals.closeRequested().complete(null);
+            signals.finishRequested().complete(null);
         }
         MissionOutcome outcome = mission.get();
         assertTrue(outcome.completed(), outcome::toString);

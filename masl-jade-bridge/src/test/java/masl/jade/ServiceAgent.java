@@ -7,10 +7,6 @@ import masl.runtime.testing.TestAgent;
 public class ServiceAgent extends TestAgent {
 
     private final CompletableFuture<Void> released = new CompletableFuture<>();
-    /** Completed by a test (Java, not FIPA) to drive {@link TestPrograms.ClosesWhenAsked}. */
-    final CompletableFuture<Void> closeRequested = new CompletableFuture<>();
-    final CompletableFuture<Void> closed = new CompletableFuture<>();
-    final CompletableFuture<Void> finishRequested = new CompletableFuture<>();
 
     public int add(int a, int b) {
         return a + b;

@@ -3,6 +3,7 @@ package masl.jade;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import java.util.function.Function;
 import masl.runtime.AgentContext;
 import masl.runtime.AgentProgram;
@@ -93,25 +94,35 @@ public final class TestPrograms {
         }
     }
 
+    /** What a test and {@link ClosesWhenAsked} tell each other, in the coordinator's JVM. */
+    public record Signals(CompletableFuture<Void> closeRequested, CompletableFuture<Void> closed,
+            CompletableFuture<Void> finishRequested) {
+        public Signals() {
+            this(new CompletableFuture<>(), new CompletableFuture<>(), new CompletableFuture<>());
+        }
+    }
+
     /**
-     * Java-driven: once the test asks ({@link ServiceAgent#closeRequested}), sets the state
-     * {@code nothing}, which denies others every primitive, tells the test ({@link ServiceAgent#closed}),
-     * and finishes when the test says ({@link ServiceAgent#finishRequested}); blocked meanwhile, so
+     * Java-driven: once the test asks ({@link Signals#closeRequested}), sets the state
+     * {@code nothing}, which denies others every primitive, tells the test ({@link Signals#closed}),
+     * and finishes when the test says ({@link Signals#finishRequested}); blocked meanwhile, so
      * requests are served on its behalf at once, filtered by its state.
      */
-    static final class ClosesWhenAsked extends CompactProgram {
-        ClosesWhenAsked(TestAgent self) {
+    public static final class ClosesWhenAsked extends CompactProgram {
+        private final Signals signals;
+
+        public ClosesWhenAsked(TestAgent self, Signals signals) {
             super(self);
+            this.signals = signals;
         }
 
         @Override
         protected void resume(AgentContext ctx) {
-            ServiceAgent service = (ServiceAgent) self;
             while (true) {
                 switch (pc) {
                     case 0:
                         pc = 1;
-                        if (!ctx.await(service.closeRequested)) return;
+                        if (!ctx.await(signals.closeRequested())) return;
                         continue;
                     case 1:
                         ctx.setAcceptState("nothing");
@@ -119,9 +130,9 @@ public final class TestPrograms {
                         if (!ctx.stepBoundary()) return;
                         continue;
                     case 2:
-                        service.closed.complete(null);
+                        signals.closed().complete(null);
                         pc = 3;
-                        if (!ctx.await(service.finishRequested)) return;
+                        if (!ctx.await(signals.finishRequested())) return;
                         continue;
                     case 3:
                         ctx.finish();

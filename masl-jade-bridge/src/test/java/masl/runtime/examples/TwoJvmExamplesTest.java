@@ -3,14 +3,11 @@ package masl.runtime.examples;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
-import masl.jade.BodyContainerMain;
+import masl.jade.BodyContainerProcess;
 import masl.jade.JadeLauncher;
 import masl.jade.JadeOptions;
 import masl.jade.JadePlatform;
@@ -30,7 +27,7 @@ import org.junit.jupiter.api.Timeout;
 /**
  * The hand-translated E2, E4 and E6 with their agents split across two containers in two JVMs:
  * this JVM's main container runs the mission (the coordinator), a second JVM
- * ({@link BodyContainerMain}) hosts the bodies of some agents. Journals as in-process.
+ * ({@link BodyContainerProcess}) hosts the bodies of some agents. Journals as in-process.
  */
 @Timeout(120)
 class TwoJvmExamplesTest {
@@ -87,24 +84,11 @@ class TwoJvmExamplesTest {
 
     private static Split split(EntryDefinition main, int agents, Function<TestAgent, AgentProgram> program,
             Map<String, String> placement) throws Exception {
-        Path output = Files.createTempFile("masl-body-container-", ".log");
-        Process container = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), BodyContainerMain.class.getName(),
-                platform.host(), Integer.toString(platform.port()), "c2")
-                .redirectErrorStream(true)
-                .redirectOutput(output.toFile())
-                .start();
-        try {
+        try (BodyContainerProcess container = BodyContainerProcess.start(platform, "c2")) {
             MissionOutcome outcome = JadeLauncher.of(TestPrograms.of(main, agents, program))
                     .types(TestPrograms::type).place(placement).run(platform, TIMEOUT);
-            assertTrue(outcome.completed(), outcome + "\n" + Files.readString(output));
-            assertTrue(container.waitFor(30, TimeUnit.SECONDS), "the container's JVM did not end:\n"
-                    + Files.readString(output));
-            assertEquals(0, container.exitValue(), Files.readString(output));
-            return new Split(outcome.journal(), Files.readString(output));
-        } finally {
-            container.destroyForcibly();
-            Files.deleteIfExists(output);
+            assertTrue(outcome.completed(), outcome + "\n" + container.output());
+            return new Split(outcome.journal(), container.assertEndsByItself());
         }
     }
 }
