@@ -79,7 +79,7 @@ class TwoJvmJadeExamplesTest {
                     "src/test/resources/examples/" + example, "--platform", "jade", "--port", String.valueOf(port),
                     "--place", placement, "--timeout", "60");
             assertEquals("", err.toString(StandardCharsets.UTF_8), Files.readString(output));
-            assertEquals(0, status);
+            assertEquals(0, status, Files.readString(output));
             assertEquals(List.of(), JadeThreads.live(), "JADE threads left in this JVM after the mission");
             assertTrue(container.waitFor(30, TimeUnit.SECONDS), "the container's JVM did not end:\n"
                     + Files.readString(output));

@@ -1,6 +1,10 @@
 package masl.translator.cli;
 
+import java.io.IOException;
+import java.io.OutputStream;
 import java.io.PrintStream;
+import java.net.InetSocketAddress;
+import java.net.Socket;
 import java.time.Duration;
 import masl.jade.JadeException;
 import masl.jade.JadeOptions;
@@ -12,8 +16,8 @@ import masl.runtime.descriptor.DescriptorLoader;
  * {@code masl container --main-host H --main-port P --name C}: joins a JADE platform as container
  * {@code C}, hosts the bodies of the agents that a {@code masl run --platform jade --place …} places
  * on it (their implementations' primitives run here, their programs in the coordinator's JVM), and
- * ends when the coordinator says the mission ended. The main container may start later: joining is
- * retried for {@value #JOIN_SECONDS} s. Standard output shows each shared event the coordinator
+ * ends when the coordinator says the mission ended. The main container may start later: it is
+ * waited for for {@value #JOIN_SECONDS} s. Standard output shows each shared event the coordinator
  * sends ({@code masl-event {"event": …}}) and, at the end, the bodies hosted
  * ({@code masl-ended hosted b,d}); exit 0 once the mission ended, 2 if {@code --timeout} elapsed first or the
  * platform cannot be joined.
@@ -60,20 +64,43 @@ final class ContainerCommand {
         }
     }
 
-    /** Joins, retrying while no main container answers yet. */
+    /**
+     * Joins once the main container listens and answers: its port opens a moment before it accepts
+     * containers, so joining is retried until {@value #JOIN_SECONDS} s have passed. A JADE join that
+     * fails prints stack traces of its own on standard error: they are kept out of sight while
+     * retrying (this command's JVM runs nothing else), and the last failure is reported in one line.
+     */
     private MaslContainer join(CommandLine line, DescriptorLoader descriptors) throws InterruptedException {
         long deadline = System.nanoTime() + Duration.ofSeconds(JOIN_SECONDS).toNanos();
         while (true) {
-            try {
-                return MaslContainer.start(JadeOptions.join(line.mainHost, line.mainPort), line.containerName,
-                        descriptors::loadByClassName, descriptors.implementationClasses(),
-                        event -> out.println("masl-event " + event.getContent()));
-            } catch (JadeException notYet) {
-                if (System.nanoTime() - deadline > 0) {
-                    throw notYet;
+            if (listening(line.mainHost, line.mainPort)) {
+                PrintStream standardError = System.err;
+                System.setErr(new PrintStream(OutputStream.nullOutputStream()));
+                try {
+                    return MaslContainer.start(JadeOptions.join(line.mainHost, line.mainPort), line.containerName,
+                            descriptors::loadByClassName, descriptors.implementationClasses(),
+                            event -> out.println("masl-event " + event.getContent()));
+                } catch (JadeException notYet) {
+                    if (System.nanoTime() - deadline > 0) {
+                        throw notYet;
+                    }
+                } finally {
+                    System.setErr(standardError);
                 }
-                Thread.sleep(200);
+            } else if (System.nanoTime() - deadline > 0) {
+                throw new JadeException("no main container listens on " + line.mainHost + ":" + line.mainPort
+                        + " (waited " + JOIN_SECONDS + " s)");
             }
+            Thread.sleep(200);
+        }
+    }
+
+    private static boolean listening(String host, int port) {
+        try (Socket socket = new Socket()) {
+            socket.connect(new InetSocketAddress(host, port), 1000);
+            return true;
+        } catch (IOException notYet) {
+            return false;
         }
     }
 }
