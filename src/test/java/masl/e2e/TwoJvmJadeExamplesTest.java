@@ -53,6 +53,13 @@ class TwoJvmJadeExamplesTest {
         assertTrue(run.containerOutput().contains(event), run.containerOutput());
     }
 
+    /** b, whose body is away, denies a's invocation: the coordinator decides, a perceives timeout. */
+    @Test
+    void e5DeniedInvocationOfAnAgentInAnotherJvmBecomesTimeout() throws Exception {
+        Run run = split("e5_permeability.masl", "b=c2");
+        assertEquals("timeout\nseen=0\n", run.journal());
+    }
+
     @Test
     void e6LockedBlockAdmitsOneAgentPerWave() throws Exception {
         Run run = split("e6_one_at_a_time.masl", "keeper=c2,p2=c2");

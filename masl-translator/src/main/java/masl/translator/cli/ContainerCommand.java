@@ -1,10 +1,7 @@
 package masl.translator.cli;
 
-import java.io.IOException;
 import java.io.OutputStream;
 import java.io.PrintStream;
-import java.net.InetSocketAddress;
-import java.net.Socket;
 import java.time.Duration;
 import masl.jade.JadeException;
 import masl.jade.JadeOptions;
@@ -65,42 +62,29 @@ final class ContainerCommand {
     }
 
     /**
-     * Joins once the main container listens and answers: its port opens a moment before it accepts
-     * containers, so joining is retried until {@value #JOIN_SECONDS} s have passed. A JADE join that
-     * fails prints stack traces of its own on standard error: they are kept out of sight while
-     * retrying (this command's JVM runs nothing else), and the last failure is reported in one line.
+     * Joins, retrying for {@value #JOIN_SECONDS} s while the main container does not answer yet (it
+     * may start after this command, and its port opens a moment before it accepts containers). A
+     * JADE join that fails prints stack traces of its own on standard error: they are kept out of
+     * sight while retrying (this command's JVM runs nothing else), and the last failure is reported
+     * in one line. The port is not probed with a bare connection: JADE would log that as an error.
      */
     private MaslContainer join(CommandLine line, DescriptorLoader descriptors) throws InterruptedException {
         long deadline = System.nanoTime() + Duration.ofSeconds(JOIN_SECONDS).toNanos();
         while (true) {
-            if (listening(line.mainHost, line.mainPort)) {
-                PrintStream standardError = System.err;
-                System.setErr(new PrintStream(OutputStream.nullOutputStream()));
-                try {
-                    return MaslContainer.start(JadeOptions.join(line.mainHost, line.mainPort), line.containerName,
-                            descriptors::loadByClassName, descriptors.implementationClasses(),
-                            event -> out.println("masl-event " + event.getContent()));
-                } catch (JadeException notYet) {
-                    if (System.nanoTime() - deadline > 0) {
-                        throw notYet;
-                    }
-                } finally {
-                    System.setErr(standardError);
+            PrintStream standardError = System.err;
+            System.setErr(new PrintStream(OutputStream.nullOutputStream()));
+            try {
+                return MaslContainer.start(JadeOptions.join(line.mainHost, line.mainPort), line.containerName,
+                        descriptors::loadByClassName, descriptors.implementationClasses(),
+                        event -> out.println("masl-event " + event.getContent()));
+            } catch (JadeException notYet) {
+                if (System.nanoTime() - deadline > 0) {
+                    throw notYet;
                 }
-            } else if (System.nanoTime() - deadline > 0) {
-                throw new JadeException("no main container listens on " + line.mainHost + ":" + line.mainPort
-                        + " (waited " + JOIN_SECONDS + " s)");
+            } finally {
+                System.setErr(standardError);
             }
             Thread.sleep(200);
-        }
-    }
-
-    private static boolean listening(String host, int port) {
-        try (Socket socket = new Socket()) {
-            socket.connect(new InetSocketAddress(host, port), 1000);
-            return true;
-        } catch (IOException notYet) {
-            return false;
         }
     }
 }
