@@ -13,6 +13,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
 import masl.jade.acl.JsonContent;
@@ -46,14 +47,14 @@ final class BodyAgent extends Agent {
     private final transient AID coordinator;
     private final transient ExecutorService primitiveThreads;
     private final transient CountDownLatch ready;
-    private final transient java.util.function.Consumer<ACLMessage> events;
+    private final transient Consumer<ACLMessage> events;
     private final transient Map<String, ACLMessage> relayed = new ConcurrentHashMap<>();
     private final transient AtomicLong relays = new AtomicLong();
     private transient volatile Thread thread;
     private transient volatile FIPAException registrationFailure;
 
     BodyAgent(AgentImplementation implementation, BodyJournal journal, PrimitiveTable primitives, AID coordinator,
-            ExecutorService primitiveThreads, CountDownLatch ready, java.util.function.Consumer<ACLMessage> events) {
+            ExecutorService primitiveThreads, CountDownLatch ready, Consumer<ACLMessage> events) {
         this.implementation = implementation;
         this.journal = journal;
         this.primitives = primitives;

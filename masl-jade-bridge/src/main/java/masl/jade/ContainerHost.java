@@ -10,6 +10,7 @@ import jade.wrapper.AgentController;
 import jade.wrapper.StaleProxyException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -45,7 +46,7 @@ final class ContainerHost extends Agent {
     private final transient List<AgentController> controllers = new ArrayList<>();
     private final transient List<BodyAgent> bodies = new ArrayList<>();
     private transient ExecutorService primitiveThreads;
-    private final transient List<String> hosted = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private final transient List<String> hosted = new CopyOnWriteArrayList<>();
 
     ContainerHost(String containerName, Function<String, AgentType> types, ClassLoader classes,
             Consumer<ACLMessage> events) {

@@ -7,6 +7,7 @@ import jade.domain.FIPAException;
 import jade.lang.acl.ACLMessage;
 import jade.wrapper.AgentController;
 import jade.wrapper.StaleProxyException;
+import java.lang.reflect.Method;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -92,7 +93,7 @@ final class Distribution {
      */
     AgentImplementation stub(int proxyId, String name, String container, AgentType type,
             Class<? extends AgentImplementation> implementation) {
-        List<java.lang.reflect.Method> methods = new PrimitiveTable(type, implementation).methods();
+        List<Method> methods = new PrimitiveTable(type, implementation).methods();
         RemoteBody body = new RemoteBody(name, new AID(name, AID.ISLOCALNAME), methods, coordinator,
                 implementation.getClassLoader());
         remotes.put(proxyId, new Remote(name, container, implementation.getName(), body));
