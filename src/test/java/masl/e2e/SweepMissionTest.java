@@ -38,6 +38,8 @@ class SweepMissionTest {
     private static final double HULL_AHEAD = 0.0045;
     /** The largest stretch of a lane no hull passed over: where a robot stopped short of a failed one. */
     private static final double GAP = 0.03;
+    /** A robot's control tick in sweep.masl (simulated nanoseconds). */
+    private static final long TICK = 50_000_000;
     private static final Pattern REELECTED = Pattern.compile("leader k(\\d): lane (\\d) re-elected to k(\\d)");
     private static final Pattern TRACE = Pattern.compile(
             "\\{\"nanos\":(\\d+),\"event\":\"(entered|left)\",\"agent\":(\\d),\"block\":\"(\\w+)\".*");
@@ -66,13 +68,14 @@ class SweepMissionTest {
         assertTrue(largestGap(trajectories, failed, List.of("k" + failed, rescuer)) <= GAP,
                 "the failed robot and " + rescuer + " left a stretch of lane " + failed + " unswept");
         assertTrue(journal.contains("k" + failed + " failed and dropped out\n"), journal);
-        assertTrue(journal.endsWith("4 of 4 lanes swept\n"), journal);
+        assertTrue(journal.endsWith("4 of 4 lanes swept, 4.0 of 4.0 m\n"), journal);
 
         List<String[]> trace = membership(folder.resolve("trace.jsonl"));
         long fault = Math.round(faultTime * 1e9);
         long lastTick = trace.stream().filter(e -> is(e, "entered", failed, "robot"))
                 .mapToLong(SweepMissionTest::nanos).max().orElseThrow();
-        assertTrue(lastTick < fault, "the failed robot ran a tick at " + lastTick + " ns");
+        assertTrue(lastTick >= fault && lastTick <= fault + TICK,
+                "the failed robot's last tick (in which it reads its battery and drops out) at " + lastTick + " ns");
         assertTrue(trace.stream().anyMatch(e -> is(e, "left", failed, "main") && nanos(e) >= fault),
                 "the failed robot did not leave the mission after its fault");
         List<Integer> leadersAfter = trace.stream().filter(e -> e[1].equals("entered") && e[3].equals("lead")
