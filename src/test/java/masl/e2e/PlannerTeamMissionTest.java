@@ -16,8 +16,9 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * Issue 11, mission 3: {@code missions/planner-team.masl}, three wheeled robots and a software
  * planner through {@code masl run --sim}, lock-step. Two boxes the robots do not know about stand
- * across the paths of k0 and k2; they report them, drive around them on the planner's way-points,
- * and every robot ends at its goal without touching a box.
+ * across the paths of k0 and k2; they report them to the planner by events, drive around them on
+ * the way-points the planner returns to their asynchronous invocations (collected by labels), and
+ * every robot ends at its goal without touching a box.
  */
 class PlannerTeamMissionTest {
 
@@ -53,8 +54,9 @@ class PlannerTeamMissionTest {
                 }
             }
         }
-        assertEquals(List.of("k0", "k2"), Pattern.compile("planner: (k\\d) saw an obstacle").matcher(journal)
+        assertEquals(List.of("k0", "k2"), Pattern.compile("(k\\d) saw an obstacle").matcher(journal)
                 .results().map(match -> match.group(1)).sorted().toList(), journal);
+        assertTrue(journal.contains("), 1 known\n") && journal.contains("), 2 known\n"), journal);
     }
 
     private static String masl(Path scenario, Path out) {
