@@ -24,7 +24,8 @@ import org.junit.jupiter.params.provider.CsvSource;
  * Issue 11, mission 2: {@code missions/sweep.masl}, four wheeled robots sweeping four lanes through
  * {@code masl run --sim}, lock-step. One robot fails mid-lane (in the second scenario, the leader):
  * the whole arena is still swept, the failed robot's lane by another robot, and the trace shows the
- * failed robot dropping out and the lead passing on.
+ * failed robot dropping out, the lead passing on, and the leader asking the robot it re-elects the
+ * lane to where it is.
  */
 class SweepMissionTest {
 
@@ -82,6 +83,10 @@ class SweepMissionTest {
                 && nanos(e) > fault).map(e -> Integer.parseInt(e[2])).distinct().toList();
         assertFalse(leadersAfter.contains(failed), "the failed robot still leads");
         assertEquals(1, leadersAfter.size(), "leaders after the fault: " + leadersAfter);
+        String asked = "\"event\":\"invocation-served\",\"requester\":" + leadersAfter.get(0) + ",\"callee\":"
+                + reelected.group(3) + ",\"member\":\"getY\"";
+        assertTrue(Files.readAllLines(folder.resolve("trace.jsonl")).stream().anyMatch(line -> line.contains(asked)),
+                "the leader did not ask " + rescuer + " where it is");
         if (failed == firstLeader) {
             assertTrue(journal.contains("k" + leadersAfter.get(0) + " leads\n"), journal);
         } else {
