@@ -271,15 +271,20 @@ class AgentApiTest {
 
     @ParameterizedTest
     @MethodSource("schedules")
-    void aCallTheReceiversTypeLacksIsANopForIt(Schedule schedule) {
+    void aMemberTheReceiversTypeLacksIsANopForIt(Schedule schedule) {
         everyRun(schedule, "polymorphic", """
                 import workers/Scout.xml;
                 Worker w = newAgent(Worker);
                 Worker s = newAgent(Scout);
                 synchronous entry main (true) {
-                  scalar entry ask (true) { .logln("w=" + w.scan() + " s=" + s.scan()); }
+                  scalar entry ask (true) {
+                    .logln("w=" + w.scan() + " s=" + s.scan() + " ranges " + w.range + " " + s.range);
+                    w.range = 9;
+                    s.range = s.range + 1;
+                    .logln("ranges " + w.range + " " + s.range);
+                  }
                 }
-                """, run -> run.assertJournal("w=0 s=7\n"));
+                """, run -> run.assertJournal("w=0 s=7 ranges 0 3\nranges 0 4\n"));
     }
 
     @ParameterizedTest

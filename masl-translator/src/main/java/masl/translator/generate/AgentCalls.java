@@ -118,10 +118,8 @@ final class AgentCalls {
         lines.add("    private " + (self ? "" : "static ") + type + " " + name + "(" + String.join(", ", parameters)
                 + ") {");
         if (dispatches) {
-            lines.add("        if (!(receiver instanceof " + calleeClass + " callee)) {");
-            lines.add("            return CompletableFuture.completedFuture(" + defaultValue(primitive.returnType())
-                    + "); // a nop() for an agent whose type lacks " + primitive.name() + " (MASL 4)");
-            lines.add("        }");
+            lines.addAll(dispatch(calleeClass, "callee", "return CompletableFuture.completedFuture("
+                    + defaultValue(primitive.returnType()) + ");", primitive.name()));
         }
         lines.add("        " + (self && isVoid ? "" : "return ") + runtimeCall + ";");
         lines.add("    }");
@@ -139,40 +137,68 @@ final class AgentCalls {
         };
     }
 
-    /** {@code read$x(ctx, owner)}: a read of attribute {@code attribute} of an agent of {@code ownerClass}. */
-    String read(Attribute attribute, String ownerClass, String owner) {
-        String key = "read " + attribute.name() + " " + ownerClass;
+    /**
+     * The lines that make a helper's {@code receiver} the {@code name} of class {@code declaringClass}
+     * it needs, running {@code otherwise} (a nop, §4) for an agent of a type without {@code member}.
+     * A null receiver goes on to the runtime, which raises {@code uncaught_exception} for it.
+     */
+    private static List<String> dispatch(String declaringClass, String name, String otherwise, String member) {
+        return List.of(
+                "        if (receiver != null && !(receiver instanceof " + declaringClass + ")) {",
+                "            " + otherwise + " // a nop() for an agent whose type lacks " + member + " (MASL 4)",
+                "        }",
+                "        final " + declaringClass + " " + name + " = (" + declaringClass + ") receiver;");
+    }
+
+    /**
+     * {@code read$x(ctx, owner)}: a read of attribute {@code attribute}, declared by
+     * {@code ownerClass}, of an agent whose static class is {@code receiverClass}.
+     */
+    String read(Attribute attribute, String ownerClass, String receiverClass, String owner) {
+        String key = "read " + attribute.name() + " " + ownerClass + " " + receiverClass;
         String name = names.get(key);
         if (name == null) {
             name = unique("read$" + attribute.name());
             names.put(key, name);
+            boolean dispatches = !ownerClass.equals(receiverClass);
             String field = (attribute.isStatic() ? ownerClass : "owner") + "." + attribute.name();
-            helpers.put(name, List.of(
-                    "    /** A read of attribute " + attribute.name() + ", filtered by permeability (MASL 9, 11). */",
-                    "    private static " + simple(attribute.type()) + " " + name + "(AgentContext ctx, final " + ownerClass
-                            + " owner) {",
-                    "        return ctx.readAttribute(owner, " + JavaText.quote(attribute.name()) + ", "
-                            + defaultValue(attribute.type()) + ", () -> " + field + ");",
-                    "    }"));
+            List<String> lines = new ArrayList<>();
+            lines.add("    /** A read of attribute " + attribute.name() + ", filtered by permeability (MASL 9, 11). */");
+            lines.add("    private static " + simple(attribute.type()) + " " + name + "(AgentContext ctx, final "
+                    + (dispatches ? receiverClass + " receiver" : ownerClass + " owner") + ") {");
+            if (dispatches) {
+                lines.addAll(dispatch(ownerClass, "owner", "return " + defaultValue(attribute.type()) + ";",
+                        attribute.name()));
+            }
+            lines.add("        return ctx.readAttribute(owner, " + JavaText.quote(attribute.name()) + ", "
+                    + defaultValue(attribute.type()) + ", () -> " + field + ");");
+            lines.add("    }");
+            helpers.put(name, lines);
         }
         return name + "(ctx, " + owner + ")";
     }
 
-    /** {@code write$x(ctx, owner, value)}: a write of attribute {@code attribute}. */
-    String write(Attribute attribute, String ownerClass, String owner, String value) {
-        String key = "write " + attribute.name() + " " + ownerClass;
+    /** {@code write$x(ctx, owner, value)}: a write of attribute {@code attribute}, as {@link #read}. */
+    String write(Attribute attribute, String ownerClass, String receiverClass, String owner, String value) {
+        String key = "write " + attribute.name() + " " + ownerClass + " " + receiverClass;
         String name = names.get(key);
         if (name == null) {
             name = unique("write$" + attribute.name());
             names.put(key, name);
+            boolean dispatches = !ownerClass.equals(receiverClass);
             String field = (attribute.isStatic() ? ownerClass : "owner") + "." + attribute.name();
-            helpers.put(name, List.of(
-                    "    /** A write of attribute " + attribute.name() + ", filtered by permeability (MASL 9, 11). */",
-                    "    private static void " + name + "(AgentContext ctx, final " + ownerClass + " owner, final "
-                            + simple(attribute.type()) + " value) {",
-                    "        ctx.writeAttribute(owner, " + JavaText.quote(attribute.name()) + ", () -> " + field
-                            + " = value);",
-                    "    }"));
+            List<String> lines = new ArrayList<>();
+            lines.add("    /** A write of attribute " + attribute.name() + ", filtered by permeability (MASL 9, 11). */");
+            lines.add("    private static void " + name + "(AgentContext ctx, final "
+                    + (dispatches ? receiverClass + " receiver" : ownerClass + " owner") + ", final "
+                    + simple(attribute.type()) + " value) {");
+            if (dispatches) {
+                lines.addAll(dispatch(ownerClass, "owner", "return;", attribute.name()));
+            }
+            lines.add("        ctx.writeAttribute(owner, " + JavaText.quote(attribute.name()) + ", () -> " + field
+                    + " = value);");
+            lines.add("    }");
+            helpers.put(name, lines);
         }
         return name + "(ctx, " + owner + ", " + value + ")";
     }

@@ -629,18 +629,9 @@ final class ExpressionWriter {
             ParserRuleContext where) {
         boolean internal = receiver == null || TreeQueries.isThis(receiver);
         var receiverType = internal ? selfType.descriptor() : queries.descriptorOf(program.typeOf(receiver));
-        var calleeType = receiverType;
+        // Polymorphism (MASL 4): for another agent, a type the receiver may be of may declare it.
+        var calleeType = declaringType(receiverType, internal, where, type -> type.findPrimitive(name).isPresent());
         Optional<Primitive> found = calleeType == null ? Optional.empty() : calleeType.findPrimitive(name);
-        if (found.isEmpty() && !internal && receiverType != null) {
-            // Polymorphism (MASL 4): a type the receiver may be of declares it.
-            for (ImportedType declaring : declaringTypes(where)) {
-                if (declaring.isLoaded() && declaring.descriptor().isSubtypeOf(receiverType)) {
-                    calleeType = declaring.descriptor();
-                    found = calleeType.findPrimitive(name);
-                    break;
-                }
-            }
-        }
         if (found.isEmpty()) {
             return unsupported.report(where, internal
                     ? "a primitive call the agent's type lacks, inside an expression,"
@@ -690,27 +681,49 @@ final class ExpressionWriter {
     /** A read of attribute {@code name} of {@code owner}'s agent (the current one when null or {@code this}), §8.4. */
     private String attributeRead(ExpressionContext owner, String name, ParserRuleContext where) {
         boolean own = owner == null || TreeQueries.isThis(owner);
-        var ownerType = own ? selfType.descriptor() : queries.descriptorOf(program.typeOf(owner));
-        Optional<Attribute> attribute = ownerType == null ? Optional.empty() : ownerType.findAttribute(name);
-        if (attribute.isEmpty()) {
+        var receiverType = own ? selfType.descriptor() : queries.descriptorOf(program.typeOf(owner));
+        var ownerType = declaringType(receiverType, own, where, type -> type.findAttribute(name).isPresent());
+        if (ownerType == null) {
             return unsupported.report(where, "an attribute that the owner's declared type lacks");
         }
-        String constant = constant(attribute.get());
+        Attribute attribute = ownerType.findAttribute(name).orElseThrow();
+        String constant = constant(attribute);
         if (constant != null) {
             return constant;
         }
-        return calls.read(attribute.get(), ownerType.fullClassName(), own ? "self" : expr(owner));
+        return calls.read(attribute, ownerType.fullClassName(), receiverType.fullClassName(), own ? "self" : expr(owner));
     }
 
     /** A write of attribute {@code name} of {@code owner}'s agent, §8.4; {@code value} is Java. */
     String attributeWrite(ExpressionContext owner, String name, String value, ParserRuleContext where) {
         boolean own = owner == null || TreeQueries.isThis(owner);
-        var ownerType = own ? selfType.descriptor() : queries.descriptorOf(program.typeOf(owner));
-        Optional<Attribute> attribute = ownerType == null ? Optional.empty() : ownerType.findAttribute(name);
-        if (attribute.isEmpty()) {
+        var receiverType = own ? selfType.descriptor() : queries.descriptorOf(program.typeOf(owner));
+        var ownerType = declaringType(receiverType, own, where, type -> type.findAttribute(name).isPresent());
+        if (ownerType == null) {
             return unsupported.report(where, "an attribute that the owner's declared type lacks");
         }
-        return calls.write(attribute.get(), ownerType.fullClassName(), own ? "self" : expr(owner), value);
+        return calls.write(ownerType.findAttribute(name).orElseThrow(), ownerType.fullClassName(),
+                receiverType.fullClassName(), own ? "self" : expr(owner), value);
+    }
+
+    /**
+     * The type whose member an access uses: the receiver's static type if it has it; for another
+     * agent, else a subtype some imported type declaring the member is (§4); null if none.
+     */
+    private masl.runtime.descriptor.AgentType declaringType(masl.runtime.descriptor.AgentType receiverType,
+            boolean own, ParserRuleContext where, java.util.function.Predicate<masl.runtime.descriptor.AgentType> has) {
+        if (receiverType == null || has.test(receiverType)) {
+            return receiverType;
+        }
+        if (own) {
+            return null;
+        }
+        for (ImportedType declaring : declaringTypes(where)) {
+            if (declaring.isLoaded() && declaring.descriptor().isSubtypeOf(receiverType) && has.test(declaring.descriptor())) {
+                return declaring.descriptor();
+            }
+        }
+        return null;
     }
 
     /** The consumer storing a label's result in attribute {@code name} of an agent (§10): no permeability filter. */
