@@ -40,6 +40,7 @@ final class ExpressionWriter {
     private final Map<Variable, String> locals = new java.util.LinkedHashMap<>();
     private final Map<String, Primitive> throwingPrimitives = new java.util.LinkedHashMap<>();
     private boolean usesDynamicMembers;
+    private final TypeTests typeTests;
     /** Inside the function of an atomic update: the variable updated and the function's parameter. */
     private Variable updated;
     private String updatedParameter;
@@ -51,6 +52,7 @@ final class ExpressionWriter {
         this.selfType = selfType;
         this.unsupported = unsupported;
         this.queries = new TreeQueries(program, selfType);
+        this.typeTests = new TypeTests(program, selfType);
         this.assignments = new AssignmentWriter(program, structure, this, queries, unsupported);
     }
 
@@ -72,6 +74,11 @@ final class ExpressionWriter {
     /** Whether members of Object-typed values were used: the program class then needs {@link DynamicMembers}. */
     boolean usesDynamicMembers() {
         return usesDynamicMembers;
+    }
+
+    /** Whether a type test on another agent was written: the program class then needs {@link TypeTests#helper()}. */
+    boolean usesAgentTypeTests() {
+        return typeTests.used();
     }
 
     ImportedType selfType() {
@@ -218,7 +225,10 @@ final class ExpressionWriter {
         } else if (expression instanceof MASLParser.AssignExprContext assignment) {
             return assignments.assignment(assignment, false);
         } else if (expression instanceof MASLParser.InstanceofExprContext test) {
-            // An agent type is its implementation class; type arguments are erased, as the analysis does.
+            if (typeTests.isAgentTypeTest(test)) {
+                return typeTests.write(test, expr(test.expression()));
+            }
+            // Type arguments are erased, as the analysis does.
             return expr(test.expression()) + " instanceof " + JavaTypes.name(program.typeOf(test.javaType()));
         }
         return unsupported.report(expression, "this expression");

@@ -108,6 +108,10 @@ final class ProgramClassWriter {
             out.add("");
             out.addAll(DynamicMembers.helpers());
         }
+        if (expressions.usesAgentTypeTests()) {
+            out.add("");
+            out.addAll(TypeTests.helper());
+        }
         for (Primitive primitive : expressions.throwingPrimitives().values()) {
             out.add("");
             out.addAll(wrapper(primitive));
