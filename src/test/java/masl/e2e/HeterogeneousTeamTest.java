@@ -1,0 +1,136 @@
+package masl.e2e;
+
+import masl.testing.MaslMission;
+import masl.testing.MissionRun;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Heterogeneous teams (MASL §4) from MASL source to journal, on the shipped soft robots: one program,
+ * specialised per agent type; subtypes, their redefinitions, members some types lack, types made by
+ * {@code type T use F}, utility classes.
+ */
+class HeterogeneousTeamTest {
+
+    @Test
+    void theSubtypesRedefinitionRunsAndTheMemberItsSupertypeLacksIsANop() {
+        MaslMission team = MaslMission.fromString("team.masl", """
+                import SoftWheeledRobot.xml as Soft;
+                import Scout.xml as Scout;
+                Soft rover = newAgent(Soft);
+                Scout scout = newAgent(Scout);
+                synchronous entry main (true) {
+                    local double moved = .moveForward(20);
+                    .logln(.getProxyID() + " moved " + moved);
+                    .logln(.getProxyID() + " scans " + .scan());
+                    .logln(.getProxyID() + " battery " + .getBattery());
+                }
+                """);
+        // The scout's moveForward (Scout.xml's redefinition) stops short of the wall; the rover bumps
+        // into it. The rover has no scan: that statement is a nop() for it, which still takes its
+        // instruction, so in lock-step its battery line never comes before the scout's scan line.
+        team.run().assertLinesInAnyOrder("0 moved 5.0", "1 moved 4.5", "1 scans 0.5", "0 battery 0.95", "1 battery 0.95");
+        team.explore(100).assertEveryRun(run -> run.assertEveryBefore("1 scans .*", "\\d battery .*"));
+    }
+
+    @Test
+    void aProgramWrittenForRobotsRunsOnEveryRobotTypeWithItsUtilityClass() {
+        MaslMission team = MaslMission.fromString("robots.masl", """
+                import Robot.xml as Robot;
+                import SoftWheeledRobot.xml as Soft;
+                import Scout.xml as Scout;
+                Robot still = newAgent(Robot);
+                Robot rover = newAgent(Soft);
+                Robot scout = newAgent(Scout);
+                asynchronous entry main (true) {
+                    local Position home = new Position(0, 0);
+                    .turnLeft(90);
+                    .moveForward(3);
+                    .logln(.getProxyID() + " at " + .getPosition() + ", " + .getPosition().distanceTo(home) + " m from home");
+                    asynchronous entry spent (.getBattery() < 1) {
+                        .logln(.getProxyID() + " used its battery");
+                    }
+                }
+                """);
+        team.run().assertLinesInAnyOrder("0 at (0.0, 0.0), 0.0 m from home", "1 at (0.0, 3.0), 3.0 m from home",
+                "2 at (0.0, 3.0), 3.0 m from home", "1 used its battery", "2 used its battery");
+    }
+
+    @Test
+    void testsAndConditionsOnAnAbsentMemberAreFalseAndItsInitialiserGivesTheDefault() {
+        MaslMission team = MaslMission.fromString("absent.masl", """
+                import SoftWheeledRobot.xml as Soft;
+                import Scout.xml as Scout;
+                Soft rover = newAgent(Soft);
+                Scout scout = newAgent(Scout);
+                asynchronous entry main (true) {
+                    local double range = .scan();
+                    .logln(.getProxyID() + " range " + range);
+                    asynchronous entry scouting (.scan() > 0) {
+                        .logln(.getProxyID() + " scouts");
+                    }
+                    while (.scan() > 2) {
+                        .moveForward(1);
+                    }
+                    .logln(.getProxyID() + " stopped at " + .getX());
+                }
+                """);
+        team.run().assertLinesInAnyOrder("0 range 0.0", "1 range 5.0", "1 scouts", "0 stopped at 0.0", "1 stopped at 3.0");
+    }
+
+    @Test
+    void aTypeMadeByTypeUseIsDistinctForLimitedAndTypeTestsAndStillARobot() {
+        MaslMission team = MaslMission.fromString("spare.masl", """
+                import Robot.xml as Robot;
+                import SoftWheeledRobot.xml as Soft;
+                type Spare use SoftWheeledRobot.xml;
+                Robot rover = newAgent(Soft);
+                Spare spare = newAgent(Spare);
+                Robot other = newAgent(Spare);
+                synchronous entry main (true) {
+                    shared int written limited(Spare) = 0;
+                    local int i, spares = 0;
+                    local Robot[] all;
+                    react (forbidden_access) {
+                        .logln(.getProxyID() + " may not write " + getMessageFromEvent(forbidden_access));
+                        resume;
+                    }
+                    written++;
+                    all = main.getList();
+                    for (i = 0; i < all.length; i++) {
+                        if (all[i] instanceof Spare) {
+                            spares++;
+                        }
+                    }
+                    .logln(.getProxyID() + ": Soft " + (this instanceof Soft) + ", Spare " + (this instanceof Spare)
+                            + ", Robot " + (this instanceof Robot) + ", sees " + spares + " spares");
+                    scalar entry report (true) {
+                        .logln("written " + written);
+                    }
+                }
+                """);
+        MissionRun run = team.run();
+        run.assertLinesInAnyOrder("0 may not write written", "0: Soft true, Spare false, Robot true, sees 2 spares",
+                "1: Soft false, Spare true, Robot true, sees 2 spares", "2: Soft false, Spare true, Robot true, sees 2 spares",
+                "written 2");
+    }
+
+    @Test
+    void anEmptyBatteryStopsARobotWithAnUncaughtException() {
+        MaslMission drain = MaslMission.fromString("drain.masl", """
+                import SoftWheeledRobot.xml as Soft;
+                Soft rover = newAgent(Soft);
+                asynchronous entry main (true) {
+                    local int moves = 0;
+                    react (uncaught_exception) {
+                        .logln(getMessageFromEvent(uncaught_exception) + " after " + moves + " moves, at " + .getPosition());
+                        break;
+                    }
+                    do {
+                        .moveForward(1);
+                        moves++;
+                    } loop
+                }
+                """);
+        drain.run().assertJournal("masl.agents.BatteryEmptyException after 20 moves, at (5.0, 0.0)\n");
+    }
+}
