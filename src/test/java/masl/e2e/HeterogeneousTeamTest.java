@@ -1,5 +1,6 @@
 package masl.e2e;
 
+import java.nio.file.Path;
 import masl.testing.MaslMission;
 import masl.testing.MissionRun;
 import org.junit.jupiter.api.Test;
@@ -132,5 +133,17 @@ class HeterogeneousTeamTest {
                 }
                 """);
         drain.run().assertJournal("masl.agents.BatteryEmptyException after 20 moves, at (5.0, 0.0)\n");
+    }
+
+    @Test
+    void theMixedTeamMissionReportsTheSameUnderEverySchedule() {
+        MaslMission mixed = MaslMission.fromFile(Path.of("missions/mixed-team.masl"));
+        String journal = """
+                rover 0: 3 laps, 60.0 m, ended at (0.0, 0.0), battery 0.18
+                rover 1: 3 laps, 60.0 m, ended at (0.0, 0.0), battery 0.18
+                scout 2: 3 laps, 59.0 m, ended at (-0.5, -0.5), closest wall 0.5 m, battery 0.18
+                """;
+        mixed.run().assertJournal(journal);
+        mixed.explore(50).assertEveryRun(run -> run.assertJournal(journal));
     }
 }
