@@ -143,6 +143,54 @@ class HeterogeneousTeamTest {
     }
 
     @Test
+    void aDegradedRobotDrivesItselfAndIsStoppedByOthersAndADeadOneDoesNotMove() {
+        // Robot.xml and SoftWheeledRobot.xml: in "degraded" others may read and stop it, not move it;
+        // in "dead" it may not move itself either. A refused invocation raises timeout (MASL 11).
+        MaslMission degraded = MaslMission.fromString("degraded.masl", """
+                import SoftWheeledRobot.xml as Rover;
+                Rover tired, helper = newAgent(Rover);
+                synchronous entry main (true) {
+                    local int refused = 0;
+                    react (timeout) {
+                        refused++;
+                        .logln(.getProxyID() + " refused: " + getMessageFromEvent(timeout));
+                        resume;
+                    }
+                    scalar entry drain (true) {
+                        while (tired.getBattery() >= 0.5) { tired.moveForward(0.2); }
+                    }
+                    .nop(); // one e-sequence of blocks would let tired go on while helper drains it (MASL 6.1)
+                    asynchronous entry tiredRobot (.getProxyID() == 0) {
+                        setAcceptState("degraded");
+                        .moveForward(1);
+                        .logln("degraded, drove itself to " + .getX());
+                    }
+                    .nop();
+                    asynchronous entry helperRobot (.getProxyID() == 1) {
+                        tired.moveForward(1);
+                        tired.stop();
+                        .logln("helper sees " + tired.getX() + " battery " + tired.getBattery() + " state " + getAcceptState(tired));
+                    }
+                    .nop();
+                    asynchronous entry deadRobot (.getProxyID() == 0) {
+                        setAcceptState("dead");
+                        .moveForward(1);
+                        .logln("dead at " + .getX() + ", refused " + refused);
+                    }
+                }
+                """);
+        String journal = """
+                degraded, drove itself to 3.2
+                1 refused: moveForward
+                helper sees 3.2 battery 0.4 state degraded
+                0 refused: moveForward
+                dead at 3.2, refused 1
+                """;
+        degraded.run().assertJournal(journal);
+        degraded.explore(30).assertEveryRun(run -> run.assertJournal(journal));
+    }
+
+    @Test
     void anEmptyBatteryStopsARobotWithAnUncaughtException() {
         MaslMission drain = MaslMission.fromString("drain.masl", """
                 import SoftWheeledRobot.xml as Soft;
