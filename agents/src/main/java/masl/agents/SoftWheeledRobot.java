@@ -83,6 +83,12 @@ public class SoftWheeledRobot extends Robot {
         return y;
     }
 
+    /** Both coordinates read at once, never half-way through a move another thread makes. */
+    @Override
+    public synchronized Position getPosition() {
+        return new Position(x, y);
+    }
+
     @Override
     public synchronized double getHeading() {
         return Math.toRadians(headingDegrees);
