@@ -159,6 +159,24 @@ final class AgentCalls {
         return name + "(ctx, " + owner + ", " + value + ")";
     }
 
+    /** {@code store$x(owner)}: the consumer a label stores a result with into attribute {@code attribute} (§10). */
+    String store(Attribute attribute, String ownerClass, String owner) {
+        String key = "store " + attribute.name() + " " + ownerClass;
+        String name = names.get(key);
+        if (name == null) {
+            name = unique("store$" + attribute.name());
+            names.put(key, name);
+            String field = (attribute.isStatic() ? ownerClass : "owner") + "." + attribute.name();
+            helpers.put(name, List.of(
+                    "    /** Stores a label's result in attribute " + attribute.name() + " of owner (MASL 10). */",
+                    "    private static java.util.function.Consumer<" + simple(boxed(attribute.type())) + "> " + name
+                            + "(final " + ownerClass + " owner) {",
+                    "        return value -> " + field + " = value;",
+                    "    }"));
+        }
+        return name + "(" + owner + ")";
+    }
+
     private String unique(String base) {
         String name = base;
         for (int n = 2; helpers.containsKey(name); n++) {

@@ -62,6 +62,10 @@ final class AssignmentWriter {
         ExpressionContext value = assignment.value;
         MaslType type = program.typeOf(target);
         Symbol symbol = program.symbolOf(target).orElse(null);
+        if (target instanceof MASLParser.FieldAccessContext access
+                && expressions.labelForm(access.expression()) != null) {
+            return labelAssignment(access, symbol, value);
+        }
         if (symbol instanceof Variable variable) {
             if (!maySelfWrite(variable)) {
                 return ignoredWrite(assignment, isStatement, variable);
@@ -104,6 +108,40 @@ final class AssignmentWriter {
         String temporary = "tmp$" + (temporaries.size() + 1);
         temporaries.put(temporary, javaType);
         return temporary;
+    }
+
+    /**
+     * {@code l.x = a.m(…)}, {@code l.a.x = …}, {@code l.this.x = …} (§10): the invocation is
+     * registered with the label, which stores its result in the variable or attribute when it comes.
+     */
+    private String labelAssignment(MASLParser.FieldAccessContext target, Symbol symbol, ExpressionContext value) {
+        ExpressionContext agent = null;
+        String name;
+        List<ExpressionContext> arguments;
+        if (value instanceof MASLParser.MethodCallContext call) {
+            agent = TreeQueries.isThis(call.expression()) ? null : call.expression();
+            name = call.identifier().getText();
+            arguments = ExpressionWriter.arguments(call.arguments());
+        } else {
+            MASLParser.SelfInvocationContext self = (MASLParser.SelfInvocationContext)
+                    ((MASLParser.PrimaryExprContext) value).primary();
+            name = self.identifier().getText();
+            arguments = ExpressionWriter.arguments(self.arguments());
+        }
+        String callee = agent == null ? "self" : expressions.expr(agent);
+        String store;
+        ExpressionWriter.LabelForm form = expressions.labelForm(target.expression());
+        boolean toVariable = expressions.label(target.expression()) != null;
+        if (toVariable && symbol instanceof Variable variable) {
+            String converted = MaslType.STRING.equals(variable.type()) ? "String.valueOf(value)" : "value";
+            store = variable.sharing() == Sharing.SHARED
+                    ? "value -> ctx.shared(" + structure.shared(variable) + ").set(" + converted + ")"
+                    : "value -> " + expressions.local(variable) + " = " + converted;
+        } else {
+            store = expressions.attributeStore(form.agent(), expressions.addressee(form), target.identifier().getText(),
+                    target);
+        }
+        return expressions.labelLaunch(form.label(), agent, callee, name, arguments, store, value);
     }
 
     /**

@@ -13,6 +13,7 @@ import masl.translator.analysis.AgentDecl;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.EntryRef;
 import masl.translator.analysis.EventDecl;
+import masl.translator.analysis.Label;
 import masl.translator.analysis.ImportedType;
 import masl.translator.analysis.MaslType;
 import masl.translator.analysis.Member;
@@ -40,6 +41,7 @@ final class ExpressionWriter {
     private final TreeQueries queries;
     private final AssignmentWriter assignments;
     private final Map<Variable, String> locals = new java.util.LinkedHashMap<>();
+    private final Map<Label, String> localLabels = new java.util.LinkedHashMap<>();
     private final AgentCalls calls = new AgentCalls();
     /** The agents named in the program that it uses, with the program's field holding each. */
     private final Map<AgentDecl, String> agents = new java.util.LinkedHashMap<>();
@@ -82,6 +84,15 @@ final class ExpressionWriter {
 
     /** Whether {@code tree} waits for a result: an external invocation, a read of a future (§3.11). */
     boolean suspends(org.antlr.v4.runtime.tree.ParseTree tree) {
+        if (tree instanceof ExpressionContext expression && isAsynchronousLabelLaunch(expression)) {
+            // Launched and registered with the label, not waited for: only its arguments may wait.
+            ExpressionContext call = expression instanceof MASLParser.AssignExprContext assignment ? assignment.value
+                    : expression;
+            MASLParser.ArgumentsContext arguments = call instanceof MASLParser.MethodCallContext method
+                    ? method.arguments()
+                    : ((MASLParser.SelfInvocationContext) ((MASLParser.PrimaryExprContext) call).primary()).arguments();
+            return arguments(arguments).stream().anyMatch(argument -> queries.suspends(argument, futures));
+        }
         return queries.suspends(tree, futures);
     }
 
@@ -116,6 +127,113 @@ final class ExpressionWriter {
     /** The named agents the program uses: each is a field of the program, set from the population. */
     Map<AgentDecl, String> agents() {
         return agents;
+    }
+
+    /** The field of an {@code LLabel}: {@code block$name}. */
+    String localLabel(Label label) {
+        return localLabels.computeIfAbsent(label, l -> l.block().name() + "$" + l.name());
+    }
+
+    /** The {@code LLabel}s used so far, with their fields. */
+    Map<Label, String> localLabels() {
+        return localLabels;
+    }
+
+    /** The label a name stands for, or null. */
+    Label label(ExpressionContext expression) {
+        return program.symbolOf(expression).orElse(null) instanceof Label label ? label : null;
+    }
+
+    /** The Java value of a label: its field, or the wave's label of an {@code SLabel}. */
+    String labelValue(Label label) {
+        return label.sharing() == Sharing.SHARED ? "ctx.shared(" + structure.sharedLabel(label) + ").get()"
+                : localLabel(label);
+    }
+
+    /**
+     * The label and addressee of a label form's receiver: {@code l.a} (a named agent or a variable
+     * holding one), {@code l.this} or {@code l} (the current agent, agent null); null if it is none.
+     */
+    record LabelForm(Label label, ExpressionContext agent) {
+    }
+
+    LabelForm labelForm(ExpressionContext receiver) {
+        if (receiver instanceof MASLParser.LabelSelfContext self && label(self.expression()) != null) {
+            return new LabelForm(label(self.expression()), null);
+        }
+        if (receiver instanceof MASLParser.FieldAccessContext access && label(access.expression()) != null) {
+            return new LabelForm(label(access.expression()), access);
+        }
+        Label label = label(receiver);
+        return label == null ? null : new LabelForm(label, null);
+    }
+
+    /** The Java of the agent a label form addresses. */
+    String addressee(LabelForm form) {
+        if (form.agent() == null) {
+            return "self";
+        }
+        Symbol symbol = program.symbolOf(form.agent()).orElse(null);
+        if (symbol instanceof AgentDecl agent) {
+            return agent(agent);
+        }
+        if (symbol instanceof Variable variable) {
+            return read(variable);
+        }
+        return unsupported.report(form.agent(), "this label addressee");
+    }
+
+    /**
+     * A launch registered with a label (§10, contract §8.3): {@code l.a.m(…)}, and the value of
+     * {@code l.x = a.m(…)} with {@code store} the Java consumer of the result (null for none). An
+     * asynchronous primitive is launched and the instruction ends at once; a synchronous one is
+     * invoked and awaited, registered as done.
+     */
+    String labelLaunch(Label label, ExpressionContext agent, String callee, String name,
+            List<ExpressionContext> arguments, String store, ParserRuleContext where) {
+        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(program.typeOf(agent));
+        Optional<Primitive> found = calleeType == null ? Optional.empty() : calleeType.findPrimitive(name);
+        if (found.isEmpty()) {
+            return unsupported.report(where, "a label invocation of a primitive that the addressee's declared type lacks");
+        }
+        Primitive primitive = found.get();
+        List<String> java = arguments(primitive, arguments);
+        String register = labelValue(label) + ".register(";
+        String tail = store == null ? ")" : ", " + store + ")";
+        if (primitive.synchronous()) {
+            String future = assignments.temporary(AgentCalls.futureType(primitive));
+            String invoke = calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeType.fullClassName(), callee, java);
+            suspensions.add(new Suspension(future + " = " + register + invoke + tail + ";", future));
+            return future + ".join()";
+        }
+        Primitive countermeasure = primitive.countermeasure() == null ? null
+                : calleeType.findPrimitive(primitive.countermeasure()).orElse(null);
+        return register + calls.call(AgentCalls.Kind.LAUNCH, primitive, countermeasure, calleeType.fullClassName(),
+                callee, java) + tail;
+    }
+
+    /** Whether a statement is a label launch of an asynchronous primitive: zero duration (§5, §10). */
+    boolean isAsynchronousLabelLaunch(ExpressionContext expression) {
+        ExpressionContext call = expression instanceof MASLParser.AssignExprContext assignment ? assignment.value
+                : expression;
+        boolean labelForm = expression instanceof MASLParser.AssignExprContext assignment
+                ? assignment.target instanceof MASLParser.FieldAccessContext access
+                        && labelForm(access.expression()) != null
+                : call instanceof MASLParser.MethodCallContext method && labelForm(method.expression()) != null;
+        if (!labelForm) {
+            return false;
+        }
+        String name = call instanceof MASLParser.MethodCallContext method ? method.identifier().getText()
+                : call instanceof MASLParser.PrimaryExprContext primary
+                        && primary.primary() instanceof MASLParser.SelfInvocationContext self
+                        ? self.identifier().getText() : null;
+        ExpressionContext agent = expression instanceof MASLParser.AssignExprContext
+                ? (call instanceof MASLParser.MethodCallContext method && !TreeQueries.isThis(method.expression())
+                        ? method.expression() : null)
+                : labelForm(((MASLParser.MethodCallContext) call).expression()).agent();
+        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(program.typeOf(agent));
+        Primitive primitive = calleeType == null || name == null ? null : calleeType.findPrimitive(name).orElse(null);
+        return primitive != null && !primitive.synchronous();
     }
 
     /** The field of a local variable: {@code block$name}. */
@@ -341,8 +459,9 @@ final class ExpressionWriter {
             return creation(creation.creator(), expression);
         } else if (primary instanceof MASLParser.PrimitiveClassLiteralContext literal) {
             return literal.getText();
-        } else if (primary instanceof MASLParser.PlainCallContext) {
-            return unsupported.report(expression, "a label member");
+        } else if (primary instanceof MASLParser.PlainCallContext call) {
+            // isFinished(l), the one call without a receiver (MASL 10).
+            return labelValue(label(arguments(call.arguments()).get(0))) + ".isFinished()";
         } else if (primary instanceof MASLParser.GetAcceptStateExprContext state) {
             return state.agent == null ? "ctx.getAcceptState()" : "ctx.getAcceptState(" + expr(state.agent) + ")";
         } else if (primary instanceof MASLParser.GetMessageExprContext message) {
@@ -452,6 +571,10 @@ final class ExpressionWriter {
         Symbol symbol = program.symbolOf(call).orElse(null);
         String name = call.identifier().getText();
         List<ExpressionContext> arguments = arguments(call.arguments());
+        LabelForm form = labelForm(call.expression());
+        if (form != null && !(symbol instanceof Member labelMember && labelMember.kind() == Member.Kind.LABEL_MEMBER)) {
+            return labelLaunch(form.label(), form.agent(), addressee(form), name, arguments, null, call);
+        }
         if (!(symbol instanceof Member member)) {
             return unsupported.report(call, "this call");
         }
@@ -460,7 +583,7 @@ final class ExpressionWriter {
             case ENTRY_MEMBER -> entryCall(call.expression(), name, arguments);
             case JAVA_METHOD -> receiver(call.expression()) + "." + name + "(" + String.join(", ", all(arguments))
                     + ")";
-            case LABEL_MEMBER -> unsupported.report(call, "a label member");
+            case LABEL_MEMBER -> labelValue(label(call.expression())) + "." + name + "()";
             case DYNAMIC -> dynamicCall(call.expression(), name, arguments);
             default -> unsupported.report(call, "this call");
         };
@@ -579,6 +702,16 @@ final class ExpressionWriter {
             return unsupported.report(where, "an attribute that the owner's declared type lacks");
         }
         return calls.write(attribute.get(), ownerType.fullClassName(), own ? "self" : expr(owner), value);
+    }
+
+    /** The consumer storing a label's result in attribute {@code name} of an agent (§10): no permeability filter. */
+    String attributeStore(ExpressionContext owner, String ownerJava, String name, ParserRuleContext where) {
+        var ownerType = owner == null ? selfType.descriptor() : queries.descriptorOf(program.typeOf(owner));
+        Optional<Attribute> attribute = ownerType == null ? Optional.empty() : ownerType.findAttribute(name);
+        if (attribute.isEmpty()) {
+            return unsupported.report(where, "an attribute that the owner's declared type lacks");
+        }
+        return calls.store(attribute.get(), ownerType.fullClassName(), ownerJava);
     }
 
     /** The value of a {@code final} attribute with a {@code value}: a Java constant (§9); null otherwise. */

@@ -41,7 +41,7 @@ final class FutureVariables {
 
     private void collect(ParseTree tree) {
         if (tree instanceof MASLParser.AssignExprContext assignment && assignment.op.getText().equals("=")
-                && isLaunch(assignment.value)
+                && assignment.target instanceof MASLParser.PrimaryExprContext && isLaunch(assignment.value)
                 && program.symbolOf(assignment.target).orElse(null) instanceof Variable variable) {
             add(variable);
         }

@@ -229,11 +229,18 @@ final class InstructionWriter {
 
     /** Entry members and accessor primitives take no time: no step boundary after them (MASL 5). */
     private boolean isZeroDuration(ExpressionContext expression) {
+        if (expressions.isAsynchronousLabelLaunch(expression) && !expressions.suspends(expression)) {
+            return true;
+        }
+        if (expression instanceof MASLParser.PrimaryExprContext primary
+                && primary.primary() instanceof MASLParser.PlainCallContext) {
+            return true;
+        }
         Member member = program.symbolOf(expression).orElse(null) instanceof Member m ? m : null;
         if (member == null) {
             return false;
         }
-        if (member.kind() == Member.Kind.ENTRY_MEMBER) {
+        if (member.kind() == Member.Kind.ENTRY_MEMBER || member.kind() == Member.Kind.LABEL_MEMBER) {
             return true;
         }
         if (member.kind() == Member.Kind.PRIMITIVE && TreeQueries.isInternalCall(expression)) {

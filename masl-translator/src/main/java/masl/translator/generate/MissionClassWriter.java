@@ -34,6 +34,7 @@ final class MissionClassWriter {
         out.add("import masl.runtime.ESequence;");
         out.add("import masl.runtime.EntryDefinition;");
         out.add("import masl.runtime.Event;");
+        out.add("import masl.runtime.Label;");
         out.add("import masl.runtime.Mission;");
         out.add("import masl.runtime.MissionProgram;");
         out.add("import masl.runtime.Mode;");

@@ -52,6 +52,7 @@ final class ProgramClassWriter {
         out.add("import masl.runtime.AgentImplementation;");
         out.add("import masl.runtime.AgentProgram;");
         out.add("import masl.runtime.Event;");
+        out.add("import masl.runtime.Label;");
         out.add("import masl.runtime.Reaction;");
         out.add("");
         out.add("/**");
@@ -66,6 +67,9 @@ final class ProgramClassWriter {
         for (Map.Entry<AgentDecl, String> agent : expressions.agents().entrySet()) {
             out.add("    private final " + agent.getKey().instantiatedType().descriptor().fullClassName() + " "
                     + agent.getValue() + ";");
+        }
+        for (String label : expressions.localLabels().values()) {
+            out.add("    private Label " + label + ";");
         }
         for (Map.Entry<Variable, String> local : expressions.locals().entrySet()) {
             Variable variable = local.getKey();

@@ -200,17 +200,18 @@ final class StatementWriter {
     }
 
     private void declarations(Block block, boolean keeps) {
-        for (MASLParser.BlockItemContext item : block.tree().blockItem()) {
-            if (item.declaration() instanceof MASLParser.LabelDeclContext label) {
-                unsupported.report(label, "a label declaration");
-            }
-        }
         List<Variable> variables = block.variables();
-        if (variables.isEmpty()) {
+        if (variables.isEmpty() && block.labels().isEmpty()) {
             return;
         }
-        cases.note(at(variables.get(0).initializer() != null ? variables.get(0).initializer()
+        cases.note(at(!variables.isEmpty() && variables.get(0).initializer() != null ? variables.get(0).initializer()
                 : block.tree()) + ": declarations of " + block.name());
+        for (masl.translator.analysis.Label label : block.labels()) {
+            // One label per member (LLabel) or per wave (SLabel, the first member of the wave makes it), MASL 10.
+            cases.line(label.sharing() == Sharing.SHARED
+                    ? "ctx.shared(" + structure.sharedLabel(label) + ").initialise(ctx::newLabel);"
+                    : expressions.localLabel(label) + " = ctx.newLabel();");
+        }
         for (Variable variable : variables) {
             if (variable.sharing() == Sharing.SHARED && variable.initializer() != null) {
                 String value = expressions.initializer(variable.type(), variable.initializer());
