@@ -191,7 +191,7 @@ final class ExpressionWriter {
      */
     String labelLaunch(Label label, ExpressionContext agent, String callee, String name,
             List<ExpressionContext> arguments, String store, ParserRuleContext where) {
-        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(program.typeOf(agent));
+        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(agent);
         Optional<Primitive> found = calleeType == null ? Optional.empty() : calleeType.findPrimitive(name);
         if (found.isEmpty()) {
             return unsupported.report(where, "a label invocation of a primitive that the addressee's declared type lacks");
@@ -231,7 +231,7 @@ final class ExpressionWriter {
                 ? (call instanceof MASLParser.MethodCallContext method && !TreeQueries.isThis(method.expression())
                         ? method.expression() : null)
                 : labelForm(((MASLParser.MethodCallContext) call).expression()).agent();
-        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(program.typeOf(agent));
+        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(agent);
         Primitive primitive = calleeType == null || name == null ? null : calleeType.findPrimitive(name).orElse(null);
         return primitive != null && !primitive.synchronous();
     }
@@ -706,7 +706,7 @@ final class ExpressionWriter {
 
     /** The consumer storing a label's result in attribute {@code name} of an agent (§10): no permeability filter. */
     String attributeStore(ExpressionContext owner, String ownerJava, String name, ParserRuleContext where) {
-        var ownerType = owner == null ? selfType.descriptor() : queries.descriptorOf(program.typeOf(owner));
+        var ownerType = owner == null ? selfType.descriptor() : queries.descriptorOf(owner);
         Optional<Attribute> attribute = ownerType == null ? Optional.empty() : ownerType.findAttribute(name);
         if (attribute.isEmpty()) {
             return unsupported.report(where, "an attribute that the owner's declared type lacks");
