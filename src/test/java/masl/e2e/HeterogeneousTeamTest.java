@@ -1,6 +1,13 @@
 package masl.e2e;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
 import java.nio.file.Path;
+import java.util.List;
+import masl.runtime.descriptor.AgentPath;
+import masl.translator.Translation;
+import masl.translator.Translator;
+import masl.translator.source.SourceFile;
 import masl.testing.MaslMission;
 import masl.testing.MissionRun;
 import org.junit.jupiter.api.Test;
@@ -188,6 +195,30 @@ class HeterogeneousTeamTest {
                 """;
         degraded.run().assertJournal(journal);
         degraded.explore(30).assertEveryRun(run -> run.assertJournal(journal));
+    }
+
+    @Test
+    void aTypesConstantsAreReadThroughTheTypeByAnyAgent() {
+        MaslMission constants = MaslMission.fromString("constants.masl", """
+                import Robot.xml as Robot;
+                import SoftWheeledRobot.xml as Soft;
+                import Scout.xml as Scout;
+                Robot still = newAgent(Robot);
+                Soft scout = newAgent(Scout);
+                asynchronous entry main (true) {
+                    .logln(.getProxyID() + ": a move costs " + Soft.MOVE_COST + " %, a scout keeps " + Scout.SAFETY_MARGIN + " m");
+                }
+                """);
+        constants.run().assertLinesInAnyOrder("0: a move costs 5 %, a scout keeps 0.5 m", "1: a move costs 5 %, a scout keeps 0.5 m");
+        Translation other = new Translator(AgentPath.parse("")).translate(new SourceFile("static.masl", Path.of("src/test/resources"), """
+                import workers/Worker.xml;
+                Worker w = newAgent(Worker);
+                asynchronous entry main (true) {
+                    .logln(Worker.made);
+                }
+                """));
+        assertEquals(List.of("4:12: a static attribute read through its type, unless a constant, is not supported yet by the translator"),
+                other.diagnostics().sorted().stream().map(d -> d.line() + ":" + d.column() + ": " + d.message()).toList());
     }
 
     @Test

@@ -690,6 +690,9 @@ final class ExpressionWriter {
         if (constant != null) {
             return constant;
         }
+        if (!own && queries.namedType(owner) != null) {
+            return unsupported.report(where, "a static attribute read through its type, unless a constant,");
+        }
         return calls.read(attribute.get(), ownerType.fullClassName(), own ? "self" : expr(owner));
     }
 
@@ -700,6 +703,9 @@ final class ExpressionWriter {
         Optional<Attribute> attribute = ownerType == null ? Optional.empty() : ownerType.findAttribute(name);
         if (attribute.isEmpty()) {
             return unsupported.report(where, "an attribute that the owner's declared type lacks");
+        }
+        if (!own && queries.namedType(owner) != null) {
+            return unsupported.report(where, "a write of a static attribute through its type");
         }
         return calls.write(attribute.get(), ownerType.fullClassName(), own ? "self" : expr(owner), value);
     }

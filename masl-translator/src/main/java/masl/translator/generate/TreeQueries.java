@@ -5,6 +5,7 @@ import masl.runtime.descriptor.AgentType;
 import masl.runtime.descriptor.Primitive;
 import masl.translator.analysis.MaslType;
 import masl.translator.analysis.Symbol;
+import masl.translator.analysis.TypeRef;
 import masl.grammar.MASLParser.ExpressionContext;
 import masl.translator.analysis.AgentDecl;
 import masl.translator.analysis.AnalyzedProgram;
@@ -99,7 +100,17 @@ final class TreeQueries {
      */
     AgentType descriptorOf(ExpressionContext receiver) {
         AgentType named = namedAgentType(receiver);
+        if (named == null) {
+            named = namedType(receiver);
+        }
         return named != null ? named : descriptorOf(program.typeOf(receiver));
+    }
+
+    /** The agent type {@code receiver} names, as {@code Soft} in {@code Soft.MOVE_COST} (a static member), or null. */
+    AgentType namedType(ExpressionContext receiver) {
+        return program.symbolOf(receiver).orElse(null) instanceof TypeRef ref
+                && ref.type() instanceof MaslType.AgentRef agent && agent.type() != null && agent.type().isLoaded()
+                ? agent.type().descriptor() : null;
     }
 
     /** The descriptor of an agent-typed value's static type: the root type's for "any agent"; null if not an agent. */
