@@ -34,13 +34,13 @@ final class TreeQueries {
     }
 
     /**
-     * Whether {@code tree} uses a primitive or attribute that its agent's type lacks, the agent being
-     * the current one or one named in the program (whose type is known: agents are created at start-up):
-     * the statement is then a {@code nop()} for the current agent, and a test or condition is false (§4).
+     * Whether {@code tree} uses a primitive or attribute of the current agent that this agent's type
+     * lacks: the statement is then a {@code nop()} for it, and a test or condition is false (§4).
+     * Another agent's missing member is the call's business (a polymorphic receiver gives the default).
      */
     boolean usesAbsentMember(ParseTree tree) {
-        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
-                && !has(knownOwner(node), member)) {
+        if (tree instanceof ParserRuleContext node && isSelfAccess(node)
+                && program.symbolOf(node).orElse(null) instanceof Member member && !selfHas(member)) {
             return true;
         }
         for (int i = 0; i < tree.getChildCount(); i++) {
@@ -51,29 +51,10 @@ final class TreeQueries {
         return false;
     }
 
-    /** The type of the agent whose member {@code node} accesses, when known here: this agent's or a named agent's; else null. */
-    private AgentType knownOwner(ParserRuleContext node) {
-        if (isSelfAccess(node)) {
-            return selfType.descriptor();
-        }
-        ExpressionContext receiver = node instanceof MASLParser.MethodCallContext call ? call.expression()
-                : node instanceof MASLParser.FieldAccessContext access ? access.expression() : null;
-        return receiver == null ? null : namedAgentType(receiver);
-    }
-
-    /** The instantiated type of the agent {@code receiver} names ({@code rover} of {@code Robot rover = newAgent(Rover)}), or null. */
-    private AgentType namedAgentType(ExpressionContext receiver) {
-        return program.symbolOf(receiver).orElse(null) instanceof AgentDecl agent && agent.instantiatedType().isLoaded()
-                ? agent.instantiatedType().descriptor() : null;
-    }
-
-    private static boolean has(AgentType owner, Member member) {
-        if (owner == null) {
-            return true;
-        }
+    private boolean selfHas(Member member) {
         return switch (member.kind()) {
-            case PRIMITIVE -> owner.findPrimitive(member.name()).isPresent();
-            case ATTRIBUTE -> owner.findAttribute(member.name()).isPresent();
+            case PRIMITIVE -> selfType.descriptor().findPrimitive(member.name()).isPresent();
+            case ATTRIBUTE -> selfType.descriptor().findAttribute(member.name()).isPresent();
             default -> true;
         };
     }
@@ -104,6 +85,12 @@ final class TreeQueries {
             named = namedType(receiver);
         }
         return named != null ? named : descriptorOf(program.typeOf(receiver));
+    }
+
+    /** The instantiated type of the agent {@code receiver} names ({@code rover} of {@code Robot rover = newAgent(Rover)}), or null. */
+    private AgentType namedAgentType(ExpressionContext receiver) {
+        return program.symbolOf(receiver).orElse(null) instanceof AgentDecl agent && agent.instantiatedType().isLoaded()
+                ? agent.instantiatedType().descriptor() : null;
     }
 
     /** The agent type {@code receiver} names, as {@code Soft} in {@code Soft.MOVE_COST} (a static member), or null. */
