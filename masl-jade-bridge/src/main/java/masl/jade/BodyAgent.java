@@ -13,7 +13,6 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.function.Consumer;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
 import masl.jade.acl.JsonContent;
@@ -34,8 +33,6 @@ import masl.runtime.AgentImplementation;
  * by the agent's permeability state as an <em>other</em> when the agent serves it, as in-process,
  * and has it run here; its answer goes back to the requester with the requester's
  * {@code in-reply-to}.
- * <li>A shared event ({@code INFORM}, {@value CoordinatorAgent#EVENT}) is handed to the
- * container's event listener.
  * </ul>
  */
 final class BodyAgent extends Agent {
@@ -47,21 +44,19 @@ final class BodyAgent extends Agent {
     private final transient AID coordinator;
     private final transient ExecutorService primitiveThreads;
     private final transient CountDownLatch ready;
-    private final transient Consumer<ACLMessage> events;
     private final transient Map<String, ACLMessage> relayed = new ConcurrentHashMap<>();
     private final transient AtomicLong relays = new AtomicLong();
     private transient volatile Thread thread;
     private transient volatile FIPAException registrationFailure;
 
     BodyAgent(AgentImplementation implementation, BodyJournal journal, PrimitiveTable primitives, AID coordinator,
-            ExecutorService primitiveThreads, CountDownLatch ready, Consumer<ACLMessage> events) {
+            ExecutorService primitiveThreads, CountDownLatch ready) {
         this.implementation = implementation;
         this.journal = journal;
         this.primitives = primitives;
         this.coordinator = coordinator;
         this.primitiveThreads = primitiveThreads;
         this.ready = ready;
-        this.events = events;
     }
 
     @Override
@@ -99,10 +94,6 @@ final class BodyAgent extends Agent {
         ACLMessage requester = message.getInReplyTo() == null ? null : relayed.remove(message.getInReplyTo());
         if (requester != null) {
             send(forwarded(requester, message));
-            return;
-        }
-        if (message.getPerformative() == ACLMessage.INFORM && CoordinatorAgent.EVENT.equals(message.getConversationId())) {
-            events.accept(message);
             return;
         }
         if (message.getPerformative() == ACLMessage.NOT_UNDERSTOOD) {

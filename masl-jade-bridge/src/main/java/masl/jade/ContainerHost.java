@@ -31,7 +31,8 @@ import masl.runtime.descriptor.AgentType;
  * {@code NAME}. It answers the coordinator: {@value CoordinatorAgent#PLACE} creates the bodies of
  * the agents placed here ({@link BodyAgent}; {@code INFORM} once they exist and are registered,
  * {@code FAILURE} with the reason otherwise), {@value CoordinatorAgent#END} deletes them, answers,
- * and ends the container's mission.
+ * and ends the container's mission. Shared events ({@code INFORM} {@value CoordinatorAgent#EVENT})
+ * go to the container's listener.
  */
 final class ContainerHost extends Agent {
     private static final long serialVersionUID = 1L;
@@ -102,6 +103,9 @@ final class ContainerHost extends Agent {
             deleteBodies();
             send(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)));
             ended.countDown();
+        } else if (message.getPerformative() == ACLMessage.INFORM
+                && CoordinatorAgent.EVENT.equals(message.getConversationId())) {
+            events.accept(message);
         } else if (message.getPerformative() != ACLMessage.NOT_UNDERSTOOD) {
             send(AclInvocations.notUnderstood(message, new ContentException(
                     "a MASL container answers its mission's coordinator only")));
@@ -152,7 +156,7 @@ final class ContainerHost extends Agent {
         BodyJournal journal = new BodyJournal(body.proxyId());
         implementation.bind(journal);
         return new BodyAgent(implementation, journal, new PrimitiveTable(type, implementation.getClass()),
-                request.getSender(), primitiveThreads, registered, events);
+                request.getSender(), primitiveThreads, registered);
     }
 
     /** Deletes the bodies and waits, bounded, until their threads have ended; stops their primitives' threads. */

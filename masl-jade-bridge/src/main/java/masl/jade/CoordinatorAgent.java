@@ -36,7 +36,7 @@ final class CoordinatorAgent extends Agent {
     static final String END = "masl-end";
     /** A body relaying a FIPA agent's request, which the coordinator filters and serves. */
     static final String RELAY = "masl-relay";
-    /** A shared event emitted in the mission, sent to the bodies of its perceivers. */
+    /** A shared event emitted in the mission, sent to the containers hosting bodies. */
     static final String EVENT = "masl-event";
 
     private final transient Map<String, CompletableFuture<ACLMessage>> pending = new ConcurrentHashMap<>();
