@@ -1,11 +1,9 @@
 package masl.jade;
 
 import jade.core.Agent;
-import jade.core.behaviours.CyclicBehaviour;
 import jade.domain.DFService;
 import jade.domain.FIPAException;
 import jade.lang.acl.ACLMessage;
-import jade.lang.acl.MessageTemplate;
 import jade.wrapper.AgentController;
 import jade.wrapper.StaleProxyException;
 import java.util.ArrayList;
@@ -68,7 +66,7 @@ final class ContainerHost extends Agent {
         } catch (FIPAException e) {
             throw new JadeException("the DF refused to register container " + containerName, e);
         }
-        addBehaviour(new Receiver());
+        addBehaviour(new MessagesButTheDfs(this, this::take));
         ready.countDown();
     }
 
@@ -182,23 +180,6 @@ final class ContainerHost extends Agent {
         bodies.clear();
         if (primitiveThreads != null) {
             primitiveThreads.shutdownNow();
-        }
-    }
-
-    /** Takes every message but the DF's, which the DF calls made by this agent wait for. */
-    private final class Receiver extends CyclicBehaviour {
-        private static final long serialVersionUID = 1L;
-
-        private final MessageTemplate notFromTheDf = MessageTemplate.not(MessageTemplate.MatchSender(getDefaultDF()));
-
-        @Override
-        public void action() {
-            ACLMessage message = myAgent.receive(notFromTheDf);
-            if (message == null) {
-                block();
-            } else {
-                take(message);
-            }
         }
     }
 }
