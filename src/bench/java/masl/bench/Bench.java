@@ -185,29 +185,50 @@ public final class Bench {
         LockStepRun pool = new TaskPoolWaves();
         LockStepRun threads = new PhaserThreads();
         System.out.println("1. Lock-step: N agents in one synchronous block, steps per second (one barrier trip = one step),");
-        System.out.println("   timed from the end of the first step to the end of the last (start-up left out), median of " + RUNS);
-        System.out.printf(Locale.ROOT, "%8s | %14s | %14s | %14s | %12s | %12s%n",
-                "N", "MASL (pool)", pool.name().replace("Java tasks, ", ""), "threads+Phaser", "MASL/pool", "MASL/threads");
+        System.out.println("   timed from the end of the first step to the end of the last (start-up left out), median of " + RUNS + ";");
+        System.out.println("   then steps per second of process CPU time (every thread of the JVM, start-up included), which other jobs");
+        System.out.println("   on the machine change much less than elapsed time");
+        System.out.printf(Locale.ROOT, "%8s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s%n",
+                "N", "MASL (pool)", "2-thr pool", "thr+Phaser", "MASL/pool", "MASL/threads", "MASL cpu", "pool cpu", "MASL/pool");
         for (int agents : options.sizes) {
             int steps = stepsFor(agents, options.seconds);
             List<LockStepRun> runs = new ArrayList<>(List.of(masl, pool));
             if (agents <= options.threadLimit) {
                 runs.add(threads);
             }
+            Map<String, List<Double>> cpuRates = new LinkedHashMap<>();
             List<Measure> measures = new ArrayList<>();
             for (LockStepRun run : runs) {
-                // Translating and compiling MASL's program is left out of the timing: prepare() does it.
-                measures.add(new Measure(run.name(), () -> run.prepare(agents, steps).call()));
+                measures.add(new Measure(run.name(), () -> {
+                    // Translating and compiling MASL's program is left out: prepare() does it.
+                    Callable<Double> prepared = run.prepare(agents, steps);
+                    long cpu = processCpuNanos();
+                    double rate = prepared.call();
+                    cpuRates.computeIfAbsent(run.name(), name -> new ArrayList<>()).add(steps / ((processCpuNanos() - cpu) / 1e9));
+                    return rate;
+                }));
             }
             Map<String, double[]> figures = interleaved(RUNS, measures);
             Double maslRate = median(figures.get(masl.name()));
             Double poolRate = median(figures.get(pool.name()));
             Double threadRate = figures.containsKey(threads.name()) ? median(figures.get(threads.name())) : null;
-            System.out.printf(Locale.ROOT, "%8d | %14s | %14s | %14s | %12s | %12s%n", agents,
-                    rate(maslRate), rate(poolRate), rate(threadRate), ratio(maslRate, poolRate), ratio(maslRate, threadRate));
+            double maslCpu = medianAfterWarmUp(cpuRates.get(masl.name()));
+            double poolCpu = medianAfterWarmUp(cpuRates.get(pool.name()));
+            System.out.printf(Locale.ROOT, "%8d | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s%n", agents,
+                    rate(maslRate), rate(poolRate), rate(threadRate), ratio(maslRate, poolRate), ratio(maslRate, threadRate),
+                    rate(maslCpu), rate(poolCpu), ratio(maslCpu, poolCpu));
         }
         System.out.printf(Locale.ROOT, "   (threads+Phaser not run above N=%d: one platform thread per agent; goal: MASL/pool >= 0.5x at N=1000)%n%n",
                 options.threadLimit);
+    }
+
+    private static double medianAfterWarmUp(List<Double> figures) {
+        return median(figures.subList(1, figures.size()).stream().mapToDouble(Double::doubleValue).toArray());
+    }
+
+    static long processCpuNanos() {
+        return ((com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory.getOperatingSystemMXBean())
+                .getProcessCpuTime();
     }
 
     /** Enough steps for about {@code seconds} at the rates seen on a 2-core machine. */
