@@ -121,7 +121,7 @@ public final class Bench {
                 "MASL/bare", "MASL (cpu)", "bare (cpu)", "MASL/bare");
         MaslSimulation simulation = MaslSimulation.prepare();
         // ode4j's code is still being compiled after one run of each: the first runs would measure the JIT.
-        Map<String, double[]> figures = interleaved(3, RUNS, List.of(new Measure("masl", simulation.masl(false)),
+        Map<String, double[]> figures = interleaved(2, RUNS, List.of(new Measure("masl", simulation.masl(false)),
                 new Measure("bare", simulation.bare(false)), new Measure("masl-cpu", simulation.masl(true)),
                 new Measure("bare-cpu", simulation.bare(true))));
         double masl = median(figures.get("masl"));
