@@ -186,8 +186,8 @@ public final class Bench {
         LockStepRun threads = new PhaserThreads();
         System.out.println("1. Lock-step: N agents in one synchronous block, steps per second (one barrier trip = one step),");
         System.out.println("   timed from the end of the first step to the end of the last (start-up left out), median of " + RUNS + ";");
-        System.out.println("   then steps per second of process CPU time (every thread of the JVM, start-up included), which other jobs");
-        System.out.println("   on the machine change much less than elapsed time");
+        System.out.println("   then steps per second of process CPU time over those runs (every thread of the JVM, start-up included),");
+        System.out.println("   which other jobs on the machine change much less than elapsed time");
         System.out.printf(Locale.ROOT, "%8s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s%n",
                 "N", "MASL (pool)", "2-thr pool", "thr+Phaser", "MASL/pool", "MASL/threads", "MASL cpu", "pool cpu", "MASL/pool");
         for (int agents : options.sizes) {
@@ -196,7 +196,7 @@ public final class Bench {
             if (agents <= options.threadLimit) {
                 runs.add(threads);
             }
-            Map<String, List<Double>> cpuRates = new LinkedHashMap<>();
+            Map<String, List<Long>> cpuTimes = new LinkedHashMap<>();
             List<Measure> measures = new ArrayList<>();
             for (LockStepRun run : runs) {
                 measures.add(new Measure(run.name(), () -> {
@@ -204,7 +204,7 @@ public final class Bench {
                     Callable<Double> prepared = run.prepare(agents, steps);
                     long cpu = processCpuNanos();
                     double rate = prepared.call();
-                    cpuRates.computeIfAbsent(run.name(), name -> new ArrayList<>()).add(steps / ((processCpuNanos() - cpu) / 1e9));
+                    cpuTimes.computeIfAbsent(run.name(), name -> new ArrayList<>()).add(processCpuNanos() - cpu);
                     return rate;
                 }));
             }
@@ -212,8 +212,8 @@ public final class Bench {
             Double maslRate = median(figures.get(masl.name()));
             Double poolRate = median(figures.get(pool.name()));
             Double threadRate = figures.containsKey(threads.name()) ? median(figures.get(threads.name())) : null;
-            double maslCpu = medianAfterWarmUp(cpuRates.get(masl.name()));
-            double poolCpu = medianAfterWarmUp(cpuRates.get(pool.name()));
+            double maslCpu = stepsPerCpuSecond(steps, cpuTimes.get(masl.name()));
+            double poolCpu = stepsPerCpuSecond(steps, cpuTimes.get(pool.name()));
             System.out.printf(Locale.ROOT, "%8d | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s%n", agents,
                     rate(maslRate), rate(poolRate), rate(threadRate), ratio(maslRate, poolRate), ratio(maslRate, threadRate),
                     rate(maslCpu), rate(poolCpu), ratio(maslCpu, poolCpu));
@@ -222,8 +222,13 @@ public final class Bench {
                 options.threadLimit);
     }
 
-    private static double medianAfterWarmUp(List<Double> figures) {
-        return median(figures.subList(1, figures.size()).stream().mapToDouble(Double::doubleValue).toArray());
+    /**
+     * Steps per CPU second over all the runs after the warm-up together: the process's CPU time is
+     * counted in ticks of 10 ms here, too coarse for one short run on a loaded machine.
+     */
+    private static double stepsPerCpuSecond(int stepsPerRun, List<Long> cpuNanosPerRun) {
+        List<Long> measured = cpuNanosPerRun.subList(1, cpuNanosPerRun.size());
+        return (double) stepsPerRun * measured.size() / (measured.stream().mapToLong(Long::longValue).sum() / 1e9);
     }
 
     static long processCpuNanos() {
