@@ -671,10 +671,16 @@ final class Agent implements AgentContext, AgentTask {
         return defaultValue;
     }
 
-    /** Runs a primitive for {@code requester}: an exception becomes its {@code uncaught_exception} (§9). */
+    /**
+     * Runs a primitive for {@code requester}: an exception becomes its {@code uncaught_exception}
+     * (§9), a refusal by the agent's body its {@code timeout}.
+     */
     private static <T> T runFor(Agent requester, Callable<T> call, T defaultValue) {
         try {
             return call.call();
+        } catch (InvocationRefusedException refused) {
+            requester.raise(Event.TIMEOUT, refused.primitive());
+            return defaultValue;
         } catch (Exception thrown) {
             requester.raise(Event.UNCAUGHT_EXCEPTION, thrown.getClass().getName());
             return defaultValue;
