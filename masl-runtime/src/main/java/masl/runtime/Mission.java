@@ -74,7 +74,7 @@ public final class Mission {
         journal = new Journal(builder.journalSink);
         trace = builder.trace;
         openToOutsideInvocations = builder.openToOutsideInvocations;
-        coordinator = new EntryCoordinator(trace, scheduler::nanoTime, changes);
+        coordinator = new EntryCoordinator(this, trace, scheduler::nanoTime, changes);
         Map<EntryDefinition, Entry> blocks = new IdentityHashMap<>();
         if (builder.main != null) {
             addEntries(builder.main, null, blocks);

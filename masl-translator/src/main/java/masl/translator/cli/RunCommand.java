@@ -46,6 +46,9 @@ final class RunCommand {
         if (!line.platform.equals("jade") && (line.mainHost != null || line.mainPort != null)) {
             throw new UsageException("--main-host and --main-port join a JADE platform: give them with --platform jade");
         }
+        if (!line.platform.equals("jade") && (line.place != null || line.port != null)) {
+            throw new UsageException("--place and --port are for a JADE platform: give them with --platform jade");
+        }
         AgentPath agentPath = AgentPath.parse(line.agentPath);
         Translation translation = new Translator(agentPath).translate(source);
         new DiagnosticPrinter(java.util.Map.of(source.name(), source.text()))
