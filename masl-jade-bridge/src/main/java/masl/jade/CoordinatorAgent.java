@@ -1,8 +1,12 @@
 package masl.jade;
 
+import jade.core.AID;
 import jade.core.Agent;
 import jade.domain.DFService;
 import jade.domain.FIPAException;
+import jade.domain.introspection.AMSSubscriber;
+import jade.domain.introspection.IntrospectionVocabulary;
+import jade.domain.introspection.RemovedContainer;
 import jade.lang.acl.ACLMessage;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
@@ -37,16 +41,27 @@ final class CoordinatorAgent extends Agent {
     /** A shared event emitted in the mission, sent to the containers hosting bodies. */
     static final String EVENT = "masl-event";
 
-    private final transient Map<String, CompletableFuture<ACLMessage>> pending = new ConcurrentHashMap<>();
+    private final transient Map<String, Pending> pending = new ConcurrentHashMap<>();
+    /** Why each agent that can no longer answer (its container is gone) cannot, by local name. */
+    private final transient Map<String, String> gone = new ConcurrentHashMap<>();
     private final transient AtomicLong requests = new AtomicLong();
     private final transient CountDownLatch ready;
     private final transient Consumer<ACLMessage> relays;
+    private final transient Consumer<String> containerRemoved;
     private transient volatile Thread thread;
 
-    /** @param relays serves a request a body relays (conversation {@value #RELAY}), on this agent's thread */
-    CoordinatorAgent(CountDownLatch ready, Consumer<ACLMessage> relays) {
+    private record Pending(String receiver, CompletableFuture<ACLMessage> answer) {
+    }
+
+    /**
+     * @param relays           serves a request a body relays (conversation {@value #RELAY}), on this agent's thread
+     * @param containerRemoved told the name of each container the AMS reports removed (its JVM ended or
+     *                         died), on this agent's thread
+     */
+    CoordinatorAgent(CountDownLatch ready, Consumer<ACLMessage> relays, Consumer<String> containerRemoved) {
         this.ready = ready;
         this.relays = relays;
+        this.containerRemoved = containerRemoved;
     }
 
     @Override
@@ -57,6 +72,7 @@ final class CoordinatorAgent extends Agent {
         } catch (FIPAException e) {
             // Only a directory entry: the mission does not need it.
         }
+        addBehaviour(new ContainerRemovals());
         addBehaviour(new MessagesButTheDfs(this, this::take));
         ready.countDown();
     }
@@ -68,7 +84,7 @@ final class CoordinatorAgent extends Agent {
         } catch (FIPAException e) {
             // The platform is going away with its DF.
         }
-        pending.values().forEach(answer -> answer.completeExceptionally(
+        pending.values().forEach(waiting -> waiting.answer().completeExceptionally(
                 new IllegalStateException("the mission's coordinator has ended")));
     }
 
@@ -84,9 +100,31 @@ final class CoordinatorAgent extends Agent {
         String replyWith = NAME + "-" + requests.incrementAndGet();
         request.setReplyWith(replyWith);
         CompletableFuture<ACLMessage> answer = new CompletableFuture<>();
-        pending.put(replyWith, answer);
-        send(request);
+        String receiver = ((AID) request.getAllReceiver().next()).getLocalName();
+        pending.put(replyWith, new Pending(receiver, answer));
+        String reason = gone.get(receiver);
+        if (reason != null) {
+            // Checked after registering so that a removal reported meanwhile cannot miss this call.
+            pending.remove(replyWith);
+            answer.completeExceptionally(new ContainerGoneException(reason));
+        } else {
+            send(request);
+        }
         return answer;
+    }
+
+    /**
+     * From now on, requests to {@code receivers} (local names) fail at once, and those waiting for
+     * their answer fail now, with a {@link ContainerGoneException} saying why. Any thread.
+     */
+    void abandon(Map<String, String> reasonByReceiver) {
+        gone.putAll(reasonByReceiver);
+        pending.forEach((replyWith, waiting) -> {
+            String reason = reasonByReceiver.get(waiting.receiver());
+            if (reason != null && pending.remove(replyWith, waiting)) {
+                waiting.answer().completeExceptionally(new ContainerGoneException(reason));
+            }
+        });
     }
 
     /** Sends a message from any thread. */
@@ -96,14 +134,26 @@ final class CoordinatorAgent extends Agent {
 
     private void take(ACLMessage message) {
         String inReplyTo = message.getInReplyTo();
-        CompletableFuture<ACLMessage> waiting = inReplyTo == null ? null : pending.remove(inReplyTo);
+        Pending waiting = inReplyTo == null ? null : pending.remove(inReplyTo);
         if (waiting != null) {
-            waiting.complete(message);
+            waiting.answer().complete(message);
         } else if (message.getPerformative() == ACLMessage.REQUEST && RELAY.equals(message.getConversationId())) {
             relays.accept(message);
         } else if (message.getPerformative() != ACLMessage.NOT_UNDERSTOOD) {
             send(AclInvocations.notUnderstood(message, new ContentException(
                     "the mission's coordinator answers its bodies and containers only")));
+        }
+    }
+
+    /** The AMS's platform events: a container removed, whether it ended or its JVM died. */
+    private final class ContainerRemovals extends AMSSubscriber {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        @SuppressWarnings({"unchecked", "rawtypes"})
+        protected void installHandlers(Map handlers) {
+            handlers.put(IntrospectionVocabulary.REMOVEDCONTAINER, (EventHandler) event ->
+                    containerRemoved.accept(((RemovedContainer) event).getContainer().getName()));
         }
     }
 }

@@ -47,6 +47,8 @@ final class Distribution {
     /** The agent of each container that hosts bodies, once found; read by emitting agents' threads. */
     private final Map<String, AID> containers = new ConcurrentHashMap<>();
     private volatile Served served;
+    /** Set once the mission has ended: containers leaving then are expected. */
+    private volatile boolean ending;
 
     private record Remote(String name, String container, String className, RemoteBody body) {
     }
@@ -66,7 +68,7 @@ final class Distribution {
         this.containerOfAgent = Map.copyOf(containerOfAgent);
         this.agentsTimeout = agentsTimeout;
         CountDownLatch ready = new CountDownLatch(1);
-        coordinator = new CoordinatorAgent(ready, this::serveRelayed);
+        coordinator = new CoordinatorAgent(ready, this::serveRelayed, this::containerRemoved);
         try {
             controller = platform.container().acceptNewAgent(CoordinatorAgent.NAME, coordinator);
             controller.start();
@@ -154,6 +156,7 @@ final class Distribution {
      * for their answers, bounded, and deletes the coordinator.
      */
     void end() throws InterruptedException {
+        ending = true;
         for (Map.Entry<String, AID> container : containers.entrySet()) {
             try {
                 await(request(container.getValue(), CoordinatorAgent.END, "{}"), "container " + container.getKey()
@@ -212,6 +215,28 @@ final class Distribution {
         } catch (ExecutionException e) {
             throw new JadeException(e.getCause().getMessage(), e.getCause());
         }
+    }
+
+    /**
+     * A container hosting bodies left the platform (its JVM died, or ended before the mission did):
+     * calls waiting for its bodies, and later ones, fail with {@link ContainerGoneException}, and so
+     * do the requests to its container agent ({@code masl-end}); said once on standard error. On the
+     * coordinator's JADE thread.
+     */
+    private void containerRemoved(String container) {
+        Map<String, String> reasons = new LinkedHashMap<>();
+        remotes.values().stream().filter(remote -> remote.container().equals(container)).forEach(remote ->
+                reasons.put(remote.name(), "the container " + container + " of agent " + remote.name() + " is gone"));
+        if (reasons.isEmpty()) {
+            return;
+        }
+        reasons.put(ContainerHost.agentName(container), "the container " + container + " is gone");
+        if (!ending) {
+            System.err.println("masl: the container " + container + " is gone (its JVM ended or died): calls to "
+                    + String.join(", ", reasons.keySet().stream().limit(reasons.size() - 1).toList())
+                    + " now fail with uncaught_exception");
+        }
+        coordinator.abandon(reasons);
     }
 
     /**

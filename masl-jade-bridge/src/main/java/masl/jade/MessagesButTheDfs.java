@@ -2,13 +2,15 @@ package masl.jade;
 
 import jade.core.Agent;
 import jade.core.behaviours.CyclicBehaviour;
+import jade.domain.introspection.AMSSubscriber;
 import jade.lang.acl.ACLMessage;
 import jade.lang.acl.MessageTemplate;
 import java.util.function.Consumer;
 
 /**
- * Hands every message an agent receives to {@code taker}, except the DF's: the DF calls the agent
- * makes itself ({@code DFService.register}, {@code search}) wait for those in its queue.
+ * Hands every message an agent receives to {@code taker}, except the DF's and the AMS's platform
+ * events: the DF calls the agent makes itself ({@code DFService.register}, {@code search}) and an
+ * {@link AMSSubscriber} wait for those in its queue.
  */
 final class MessagesButTheDfs extends CyclicBehaviour {
     private static final long serialVersionUID = 1L;
@@ -18,7 +20,9 @@ final class MessagesButTheDfs extends CyclicBehaviour {
 
     MessagesButTheDfs(Agent agent, Consumer<ACLMessage> taker) {
         super(agent);
-        this.notFromTheDf = MessageTemplate.not(MessageTemplate.MatchSender(agent.getDefaultDF()));
+        this.notFromTheDf = MessageTemplate.not(MessageTemplate.or(MessageTemplate.MatchSender(agent.getDefaultDF()),
+                MessageTemplate.or(MessageTemplate.MatchConversationId(AMSSubscriber.PLATFORM_EVENTS),
+                        MessageTemplate.MatchConversationId(AMSSubscriber.AMS_SUBSCRIPTION))));
         this.taker = taker;
     }
 

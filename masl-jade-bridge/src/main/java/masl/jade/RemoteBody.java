@@ -24,7 +24,8 @@ import masl.runtime.Journal;
  * answer: {@code INFORM} gives the result, after the journal text the primitive wrote is appended
  * to the mission's journal; {@code FAILURE} throws the body's exception again (the caller perceives
  * {@code uncaught_exception}); {@code REFUSE} throws {@link InvocationRefusedException} (the caller
- * perceives {@code timeout}).
+ * perceives {@code timeout}). Once the body's container is gone, every call throws
+ * {@link ContainerGoneException} (the caller perceives {@code uncaught_exception}).
  */
 final class RemoteBody implements BodyStub {
 
@@ -85,8 +86,11 @@ final class RemoteBody implements BodyStub {
             Thread.currentThread().interrupt();
             throw new IllegalStateException("interrupted while " + agent + "." + method.getName()
                     + " ran in its container");
-        } catch (ExecutionException coordinatorEnded) {
-            throw new IllegalStateException(coordinatorEnded.getCause().getMessage(), coordinatorEnded.getCause());
+        } catch (ExecutionException unanswered) {
+            if (unanswered.getCause() instanceof ContainerGoneException gone) {
+                throw gone;
+            }
+            throw new IllegalStateException(unanswered.getCause().getMessage(), unanswered.getCause());
         }
     }
 

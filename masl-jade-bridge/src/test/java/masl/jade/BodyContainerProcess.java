@@ -46,6 +46,12 @@ public final class BodyContainerProcess implements AutoCloseable {
         return output();
     }
 
+    /** Kills the JVM at once, as a crash would, and waits until it has ended. */
+    public void kill() throws InterruptedException {
+        process.destroyForcibly();
+        assertTrue(process.waitFor(30, TimeUnit.SECONDS), "the container's JVM did not end when killed");
+    }
+
     @Override
     public void close() throws IOException {
         process.destroyForcibly();

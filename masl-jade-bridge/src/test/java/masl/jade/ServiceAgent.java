@@ -1,6 +1,7 @@
 package masl.jade;
 
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.locks.LockSupport;
 import masl.runtime.testing.TestAgent;
 
 /** An agent type with primitives for FIPA agents to invoke: results, exceptions, and a release. */
@@ -24,6 +25,13 @@ public class ServiceAgent extends TestAgent {
                 throw new IllegalStateException("no text for this");
             }
         };
+    }
+
+    /** Never returns: a call in progress when the body's JVM is killed. */
+    public int hang() {
+        while (true) {
+            LockSupport.park(this);
+        }
     }
 
     /** Lets the agent's program ({@link TestPrograms.UntilReleased}) finish. */
