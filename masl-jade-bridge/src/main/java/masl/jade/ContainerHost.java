@@ -1,6 +1,8 @@
 package masl.jade;
 
+import jade.core.AID;
 import jade.core.Agent;
+import jade.core.behaviours.TickerBehaviour;
 import jade.domain.DFService;
 import jade.domain.FIPAException;
 import jade.lang.acl.ACLMessage;
@@ -30,11 +32,18 @@ import masl.runtime.descriptor.AgentType;
  * the agents placed here ({@link BodyAgent}; {@code INFORM} once they exist and are registered,
  * {@code FAILURE} with the reason otherwise), {@value CoordinatorAgent#END} deletes them, answers,
  * and ends the container's mission. Shared events ({@code INFORM} {@value CoordinatorAgent#EVENT})
- * go to the container's listener.
+ * go to the container's listener. It watches that the mission's coordinator (before one places
+ * bodies here: the platform's AMS) can still be reached ({@link #ALIVE}): once a message to it
+ * comes back undeliverable, it deletes the bodies and ends the container's mission, saying why
+ * ({@link #lost()}).
  */
 final class ContainerHost extends Agent {
     private static final long serialVersionUID = 1L;
     private static final long BODIES_TIMEOUT_SECONDS = 30;
+    /** How often the container checks that its coordinator (or the AMS) can still be reached. */
+    private static final long ALIVE_PERIOD_MILLIS = 500;
+    /** The conversation of those checks: {@code INFORM}s nobody answers, but the MTS when undeliverable. */
+    static final String ALIVE = "masl-alive";
 
     private final transient String containerName;
     private final transient Function<String, AgentType> types;
@@ -46,6 +55,8 @@ final class ContainerHost extends Agent {
     private final transient List<BodyAgent> bodies = new ArrayList<>();
     private transient ExecutorService primitiveThreads;
     private final transient List<String> hosted = new CopyOnWriteArrayList<>();
+    private transient volatile AID coordinator;
+    private transient volatile String lost;
 
     ContainerHost(String containerName, Function<String, AgentType> types, ClassLoader classes,
             Consumer<ACLMessage> events) {
@@ -67,7 +78,24 @@ final class ContainerHost extends Agent {
             throw new JadeException("the DF refused to register container " + containerName, e);
         }
         addBehaviour(new MessagesButTheDfs(this, this::take));
+        addBehaviour(new TickerBehaviour(this, ALIVE_PERIOD_MILLIS) {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            protected void onTick() {
+                if (ended.getCount() > 0) {
+                    send(aliveCheck());
+                }
+            }
+        });
         ready.countDown();
+    }
+
+    private ACLMessage aliveCheck() {
+        ACLMessage check = new ACLMessage(ACLMessage.INFORM);
+        check.setConversationId(ALIVE);
+        check.addReceiver(coordinator == null ? getAMS() : coordinator);
+        return check;
     }
 
     @Override
@@ -88,6 +116,11 @@ final class ContainerHost extends Agent {
         return ended;
     }
 
+    /** Why the mission ended without the coordinator saying so: its coordinator or the platform is gone; null if not. */
+    String lost() {
+        return lost;
+    }
+
     /** The names of the bodies the coordinator placed here. */
     List<String> hosted() {
         return List.copyOf(hosted);
@@ -95,7 +128,16 @@ final class ContainerHost extends Agent {
 
     private void take(ACLMessage message) {
         if (message.getPerformative() == ACLMessage.REQUEST && CoordinatorAgent.PLACE.equals(message.getConversationId())) {
+            coordinator = message.getSender();
             send(place(message));
+        } else if (message.getPerformative() == ACLMessage.FAILURE && message.getSender().equals(getAMS())
+                && ALIVE.equals(message.getConversationId())) {
+            if (ended.getCount() > 0) {
+                lost = coordinator == null ? "the platform's main container is gone"
+                        : "the mission's coordinator is gone (its JVM died or it left the platform)";
+                deleteBodies();
+                ended.countDown();
+            }
         } else if (message.getPerformative() == ACLMessage.REQUEST
                 && CoordinatorAgent.END.equals(message.getConversationId())) {
             deleteBodies();

@@ -139,7 +139,8 @@ final class CoordinatorAgent extends Agent {
             waiting.answer().complete(message);
         } else if (message.getPerformative() == ACLMessage.REQUEST && RELAY.equals(message.getConversationId())) {
             relays.accept(message);
-        } else if (message.getPerformative() != ACLMessage.NOT_UNDERSTOOD) {
+        } else if (message.getPerformative() != ACLMessage.NOT_UNDERSTOOD
+                && !ContainerHost.ALIVE.equals(message.getConversationId())) {
             send(AclInvocations.notUnderstood(message, new ContentException(
                     "the mission's coordinator answers its bodies and containers only")));
         }

@@ -5,6 +5,7 @@ import jade.wrapper.StaleProxyException;
 import java.time.Duration;
 import java.util.List;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import java.util.function.Function;
@@ -68,9 +69,20 @@ public final class MaslContainer implements AutoCloseable {
         }
     }
 
-    /** Waits until the coordinator says the mission ended; false if {@code timeout} elapsed first. */
+    /**
+     * Waits until the coordinator says the mission ended, or the container finds its coordinator
+     * or the platform gone ({@link #lostPlatform()}); false if {@code timeout} elapsed first.
+     */
     public boolean awaitMissionEnd(Duration timeout) throws InterruptedException {
         return host.ended().await(timeout.toMillis(), TimeUnit.MILLISECONDS);
+    }
+
+    /**
+     * Why the mission ended without its coordinator saying so (the coordinator or the platform's main
+     * container can no longer be reached: its JVM died); empty while it has not, or if it ended normally.
+     */
+    public Optional<String> lostPlatform() {
+        return Optional.ofNullable(host.lost());
     }
 
     /** The agents whose bodies the coordinator placed in this container, in its order. */
