@@ -16,8 +16,8 @@ import masl.runtime.descriptor.DescriptorLoader;
  * ends when the coordinator says the mission ended. The main container may start later: it is
  * waited for for {@value #JOIN_SECONDS} s. Standard output shows each shared event the coordinator
  * sends ({@code masl-event {"event": …}}) and, at the end, the bodies hosted
- * ({@code masl-ended hosted b,d}); exit 0 once the mission ended, 2 if {@code --timeout} elapsed first or the
- * platform cannot be joined.
+ * ({@code masl-ended hosted b,d}); exit 0 once the mission ended, 2 if {@code --timeout} elapsed first, the
+ * platform cannot be joined, or the coordinator or the main container disappeared (noticed within a second).
  */
 final class ContainerCommand {
 
@@ -46,6 +46,11 @@ final class ContainerCommand {
             if (!ended) {
                 err.println("masl: container " + line.containerName + ": no mission ended within " + timeout.toSeconds()
                         + " s");
+                return Masl.MISSION_FAILED;
+            }
+            if (container.lostPlatform().isPresent()) {
+                err.println("masl: container " + line.containerName + ": " + container.lostPlatform().get()
+                        + "; its bodies were deleted");
                 return Masl.MISSION_FAILED;
             }
             out.println("masl-ended hosted " + String.join(",", container.hostedAgents()));
