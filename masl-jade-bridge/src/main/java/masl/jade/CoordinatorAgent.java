@@ -48,6 +48,7 @@ final class CoordinatorAgent extends Agent {
     private final transient CountDownLatch ready;
     private final transient Consumer<ACLMessage> relays;
     private final transient Consumer<String> containerRemoved;
+    private final transient Consumer<String> unreachable;
     private transient volatile Thread thread;
 
     private record Pending(String receiver, CompletableFuture<ACLMessage> answer) {
@@ -57,11 +58,15 @@ final class CoordinatorAgent extends Agent {
      * @param relays           serves a request a body relays (conversation {@value #RELAY}), on this agent's thread
      * @param containerRemoved told the name of each container the AMS reports removed (its JVM ended or
      *                         died), on this agent's thread
+     * @param unreachable      told the local name of an agent a request could not be delivered to (the
+     *                         AMS answered {@code FAILURE}), on this agent's thread; it may {@link #abandon} it
      */
-    CoordinatorAgent(CountDownLatch ready, Consumer<ACLMessage> relays, Consumer<String> containerRemoved) {
+    CoordinatorAgent(CountDownLatch ready, Consumer<ACLMessage> relays, Consumer<String> containerRemoved,
+            Consumer<String> unreachable) {
         this.ready = ready;
         this.relays = relays;
         this.containerRemoved = containerRemoved;
+        this.unreachable = unreachable;
     }
 
     @Override
@@ -134,8 +139,14 @@ final class CoordinatorAgent extends Agent {
 
     private void take(ACLMessage message) {
         String inReplyTo = message.getInReplyTo();
-        Pending waiting = inReplyTo == null ? null : pending.remove(inReplyTo);
-        if (waiting != null) {
+        Pending waiting = inReplyTo == null ? null : pending.get(inReplyTo);
+        if (waiting != null && message.getPerformative() == ACLMessage.FAILURE && message.getSender().equals(getAMS())) {
+            // Undeliverable: its container is gone, which the AMS's removal event may not have said yet.
+            unreachable.accept(waiting.receiver());
+            if (pending.remove(inReplyTo, waiting)) {
+                waiting.answer().complete(message);
+            }
+        } else if (waiting != null && pending.remove(inReplyTo, waiting)) {
             waiting.answer().complete(message);
         } else if (message.getPerformative() == ACLMessage.REQUEST && RELAY.equals(message.getConversationId())) {
             relays.accept(message);

@@ -13,6 +13,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
@@ -47,6 +48,8 @@ final class Distribution {
     /** The agent of each container that hosts bodies, once found; read by emitting agents' threads. */
     private final Map<String, AID> containers = new ConcurrentHashMap<>();
     private volatile Served served;
+    /** The containers found gone, each said once. */
+    private final Set<String> goneContainers = ConcurrentHashMap.newKeySet();
     /** Set once the mission has ended: containers leaving then are expected. */
     private volatile boolean ending;
 
@@ -68,7 +71,7 @@ final class Distribution {
         this.containerOfAgent = Map.copyOf(containerOfAgent);
         this.agentsTimeout = agentsTimeout;
         CountDownLatch ready = new CountDownLatch(1);
-        coordinator = new CoordinatorAgent(ready, this::serveRelayed, this::containerRemoved);
+        coordinator = new CoordinatorAgent(ready, this::serveRelayed, this::containerRemoved, this::unreachable);
         try {
             controller = platform.container().acceptNewAgent(CoordinatorAgent.NAME, coordinator);
             controller.start();
@@ -224,19 +227,31 @@ final class Distribution {
      * coordinator's JADE thread.
      */
     private void containerRemoved(String container) {
-        Map<String, String> reasons = new LinkedHashMap<>();
-        remotes.values().stream().filter(remote -> remote.container().equals(container)).forEach(remote ->
-                reasons.put(remote.name(), "the container " + container + " of agent " + remote.name() + " is gone"));
-        if (reasons.isEmpty()) {
+        List<String> agents = remotes.values().stream().filter(remote -> remote.container().equals(container))
+                .map(Remote::name).toList();
+        if (agents.isEmpty() || !goneContainers.add(container)) {
             return;
         }
-        reasons.put(ContainerHost.agentName(container), "the container " + container + " is gone");
         if (!ending) {
             System.err.println("masl: the container " + container + " is gone (its JVM ended or died): calls to "
-                    + String.join(", ", reasons.keySet().stream().limit(reasons.size() - 1).toList())
-                    + " now fail with uncaught_exception");
+                    + String.join(", ", agents) + " now fail with uncaught_exception");
         }
+        Map<String, String> reasons = new LinkedHashMap<>();
+        agents.forEach(agent -> reasons.put(agent, "the container " + container + " of agent " + agent + " is gone"));
+        reasons.put(ContainerHost.agentName(container), "the container " + container + " is gone");
         coordinator.abandon(reasons);
+    }
+
+    /** A request to {@code receiver} was undeliverable: if it is a body or a container agent, its container is gone. */
+    private void unreachable(String receiver) {
+        String container = containerOfAgent.get(receiver);
+        if (container == null) {
+            container = containers.keySet().stream().filter(name -> ContainerHost.agentName(name).equals(receiver))
+                    .findFirst().orElse(null);
+        }
+        if (container != null) {
+            containerRemoved(container);
+        }
     }
 
     /**
