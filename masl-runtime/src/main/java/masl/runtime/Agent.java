@@ -100,6 +100,15 @@ final class Agent implements AgentContext, AgentTask {
     private ReactionRun reacting;
     /** The processing whose last reaction has ended and is applying its ending (resume, break, …). */
     private ReactionRun ending;
+    /**
+     * The resumption point whose MASL statement the agent is at, for trace records and reports: the
+     * case making the current runtime call. A suspending call comes after {@code pc} was set to the
+     * case that follows it (the contract numbers cases in program order), a loop iteration or a call
+     * in the middle of a case finds {@code pc} at its own case. Read by others only while parked.
+     */
+    private int statementPc;
+    /** {@link #statementPc} of the boundary whose events are being reacted to. */
+    private int interruptedStatementPc;
 
     // Guarded by the EntryCoordinator's lock (see its invariant for the agent's own reads).
     final List<Membership> memberships = new ArrayList<>();
@@ -277,6 +286,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean stepBoundary() {
+        atCallBefore();
         requireOutsideReaction("a step boundary");
         progress++;
         boolean synchronous = isInnermostSynchronous();
@@ -298,6 +308,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean endOfSequence(ESequence sequence) {
+        atCallBefore();
         EntryDefinition innermost = memberships.isEmpty() ? null : innermost().entry.definition();
         if (innermost != sequence.parent()) {
             throw new IllegalStateException(describe() + " ends " + sequence + " inside " + innermost);
@@ -315,6 +326,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean loopIteration() {
+        atCurrentCase();
         progress++;
         if (isReacting()) {
             return yieldIfSliceUsed();
@@ -327,6 +339,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean busyWaitIteration() {
+        atCurrentCase();
         if (!isReacting()) {
             // Reactions assign locals: running them is progress, so the next iteration does not park.
             if (startReactions(false)) {
@@ -352,12 +365,14 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public Arrival enter(EntryDefinition block, boolean test) {
+        atCallBefore();
         requireOutsideReaction("arriving at " + block);
         return mission.coordinator().enter(this, mission.entry(block), test);
     }
 
     @Override
     public boolean leave(EntryDefinition block) {
+        atCallBefore();
         requireOutsideReaction("leaving " + block);
         fireCountermeasures(memberships.size() - 1);
         return mission.coordinator().leaveAtEnd(this, mission.entry(block));
@@ -365,6 +380,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void breakOut(EntryDefinition outermost) {
+        atCurrentCase();
         requireNoReactionRunning("break");
         ending = null;
         fireCountermeasures(depthOf(outermost));
@@ -373,6 +389,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void reelect(EntryDefinition block) {
+        atCurrentCase();
         requireNoReactionRunning("reelect");
         ending = null;
         fireCountermeasures(depthOf(block));
@@ -381,6 +398,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void restart(EntryDefinition block) {
+        atCurrentCase();
         requireNoReactionRunning("restart");
         ending = null;
         fireCountermeasures(depthOf(block) + 1);
@@ -405,6 +423,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean sleep(long ms) {
+        atCallBefore();
         progress++;
         if (ms <= 0) {
             return yieldIfSliceUsed();
@@ -420,6 +439,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean await(CompletionStage<?> result) {
+        atCallBefore();
         CompletableFuture<?> future = result.toCompletableFuture();
         if (future.isDone()) {
             return yieldIfSliceUsed();
@@ -440,6 +460,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void emit(Event event, String message) {
+        atCurrentCase();
         if (event.isSystemEvent()) {
             raise(event, message);
             return;
@@ -449,7 +470,7 @@ final class Agent implements AgentContext, AgentTask {
         Agent[] receivers = event.isShared() ? block.perceivers() : new Agent[] {this};
         EventOccurrence occurrence = new EventOccurrence(event, message, id);
         mission.trace().record(new TraceEvent.EventEmitted(now(), id, event.name(), block.name(), message,
-                receivers.length));
+                receivers.length, source()));
         for (Agent receiver : receivers) {
             receiver.perceive(occurrence);
         }
@@ -457,6 +478,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void uncaughtException(Throwable thrown) {
+        atCurrentCase();
         emit(Event.UNCAUGHT_EXCEPTION, thrown.getClass().getName());
     }
 
@@ -490,6 +512,7 @@ final class Agent implements AgentContext, AgentTask {
         ReactionRun ended = ending;
         ending = null;
         program.jump(ended.interruptedPc());
+        statementPc = interruptedStatementPc;
         return completeBoundary(ended.barrierDue());
     }
 
@@ -513,6 +536,7 @@ final class Agent implements AgentContext, AgentTask {
     @Override
     public <T> CompletableFuture<T> invoke(AgentImplementation callee, String primitive, T defaultValue,
             Callable<T> call) {
+        atCurrentCase();
         if (callee == null) {
             return CompletableFuture.completedFuture(nullAgent(defaultValue));
         }
@@ -522,7 +546,7 @@ final class Agent implements AgentContext, AgentTask {
             return CompletableFuture.completedFuture(invokeSelf(primitive, defaultValue, call));
         }
         CompletableFuture<T> result = new CompletableFuture<>();
-        mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive));
+        mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive, source()));
         target.submitInvocation(new PendingInvocation(this, primitive,
                 () -> result.complete(runFor(this, call, defaultValue)),
                 () -> {
@@ -534,6 +558,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public <T> T invokeSelf(String primitive, T defaultValue, Callable<T> call) {
+        atCurrentCase();
         disarm(this, primitive);
         if (!allowsOwn(primitive)) {
             return defaultValue;
@@ -550,7 +575,7 @@ final class Agent implements AgentContext, AgentTask {
         if (Permeability.allows(state, permeability.primitiveId(primitive), Requester.SELF, PermeabilityState.INVOKE)) {
             return true;
         }
-        mission.trace().record(new TraceEvent.InvocationDenied(now(), id, id, primitive, state.name()));
+        mission.trace().record(new TraceEvent.InvocationDenied(now(), id, id, primitive, state.name(), source()));
         raise(Event.TIMEOUT, primitive);
         return false;
     }
@@ -564,6 +589,7 @@ final class Agent implements AgentContext, AgentTask {
     @Override
     public <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue,
             Callable<T> call, String countermeasure, Callable<?> countermeasureCall) {
+        atCurrentCase();
         if (callee == null) {
             return CompletableFuture.completedFuture(nullAgent(defaultValue));
         }
@@ -588,7 +614,7 @@ final class Agent implements AgentContext, AgentTask {
                 result.complete(defaultValue);
             }
         } else {
-            mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive));
+            mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive, source()));
             target.submitInvocation(new PendingInvocation(this, primitive, start, () -> {
                 raise(Event.TIMEOUT, primitive);
                 result.complete(defaultValue);
@@ -630,7 +656,7 @@ final class Agent implements AgentContext, AgentTask {
 
     private void fire(Countermeasure countermeasure) {
         mission.trace().record(new TraceEvent.CountermeasureFired(now(), id, countermeasure.target().id,
-                countermeasure.name(), countermeasure.block().name()));
+                countermeasure.name(), countermeasure.block().name(), source()));
         countermeasure.completeLaunch();
         // Not launch(): a fired countermeasure disarms no other armed one (of an outer block).
         start(countermeasure.target(), countermeasure.name(), null, countermeasure.call());
@@ -733,6 +759,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean waitFor(String state, long ms) {
+        atCallBefore();
         progress++;
         PermeabilityState attentiveTo = permeability.find(state).orElse(null);
         if (attentiveTo == null) {
@@ -785,7 +812,7 @@ final class Agent implements AgentContext, AgentTask {
         if (!systemEvent.isSystemEvent()) {
             throw new IllegalArgumentException(systemEvent + " is not a system event");
         }
-        mission.trace().record(new TraceEvent.EventEmitted(now(), id, systemEvent.name(), null, message, 1));
+        mission.trace().record(new TraceEvent.EventEmitted(now(), id, systemEvent.name(), null, message, 1, source()));
         perceive(new EventOccurrence(systemEvent, message, id));
     }
 
@@ -819,6 +846,7 @@ final class Agent implements AgentContext, AgentTask {
             return false;
         }
         progress++;
+        interruptedStatementPc = statementPc;
         reacting = new ReactionRun(plan.steps(), program.pc(), barrierDue);
         redirectToNextReaction();
         return true;
@@ -828,14 +856,15 @@ final class Agent implements AgentContext, AgentTask {
         ReactionPlan.Step step = reacting.next();
         Reaction reaction = step.reaction();
         mission.trace().record(new TraceEvent.EventReacted(now(), id,
-                step.occurrence().event().name(), reaction.block().name(), reaction.isDefault()));
+                step.occurrence().event().name(), reaction.block().name(), reaction.isDefault(),
+                program.sourceAt(interruptedStatementPc)));
         program.jump(program.reactionPc(reaction));
         suspended = true;
         redirected = true;
     }
 
     private void traceDropped(EventOccurrence occurrence) {
-        mission.trace().record(new TraceEvent.EventDropped(now(), id, occurrence.event().name()));
+        mission.trace().record(new TraceEvent.EventDropped(now(), id, occurrence.event().name(), source()));
     }
 
     /** The mission clock, for trace timestamps. */
@@ -890,7 +919,7 @@ final class Agent implements AgentContext, AgentTask {
                 serve(invocation);
             } else {
                 mission.trace().record(new TraceEvent.InvocationDenied(now(), id, invocation.requesterId(),
-                        invocation.primitive(), permeability.currentName()));
+                        invocation.primitive(), permeability.currentName(), source()));
                 invocation.deny();
             }
         }
@@ -909,7 +938,7 @@ final class Agent implements AgentContext, AgentTask {
 
     private void serve(PendingInvocation invocation) {
         mission.trace().record(new TraceEvent.InvocationServed(now(), id, invocation.requesterId(),
-                invocation.primitive()));
+                invocation.primitive(), source()));
         invocation.run();
     }
 
@@ -982,8 +1011,32 @@ final class Agent implements AgentContext, AgentTask {
         return !memberships.isEmpty() && innermost().status != Membership.Status.ACTIVE;
     }
 
+    /** The current runtime call comes after {@code pc} was set to the case that follows its own. */
+    private void atCallBefore() {
+        statementPc = program.pc() - 1;
+    }
+
+    /** The current runtime call is made from the case {@code pc} names (or is a loop's iteration). */
+    private void atCurrentCase() {
+        statementPc = program.pc();
+    }
+
+    /**
+     * The MASL statement the agent is at ({@code "e6.masl:14: synchronous entry turn (…)"}), or null
+     * if its program does not say: the nearest commented case at or before {@link #statementPc}.
+     */
+    String source() {
+        for (int pc = statementPc; pc >= 0 && pc > statementPc - 4; pc--) {
+            String source = program.sourceAt(pc);
+            if (source != null) {
+                return source;
+            }
+        }
+        return null;
+    }
+
     String describe() {
-        String source = program.sourceAt(program.pc());
+        String source = source();
         return "agent " + name + " (" + id + ") at pc " + program.pc() + (source == null ? "" : " (" + source + ")");
     }
 

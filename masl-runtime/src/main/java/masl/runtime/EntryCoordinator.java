@@ -118,7 +118,7 @@ final class EntryCoordinator {
             }
             membership.status = Membership.Status.WAITING_OUT;
             membership.wave.waitingOut.add(agent);
-            trace.record(new TraceEvent.WaitingOut(clock.getAsLong(), agent.id(), entry.name()));
+            trace.record(new TraceEvent.WaitingOut(clock.getAsLong(), agent.id(), entry.name(), agent.source()));
             reconcile(agent);
             settle();
             if (agent.memberships.contains(membership)) {
@@ -230,7 +230,7 @@ final class EntryCoordinator {
         wave.members.add(agent);
         entry.memberJoined(agent);
         agent.memberships.add(new Membership(entry, wave, Membership.Status.ACTIVE));
-        trace.record(new TraceEvent.Entered(clock.getAsLong(), agent.id(), entry.name()));
+        trace.record(new TraceEvent.Entered(clock.getAsLong(), agent.id(), entry.name(), agent.source()));
         reconcile(agent);
         changed = true;
     }
@@ -239,7 +239,7 @@ final class EntryCoordinator {
         agent.memberships.add(new Membership(entry, null, Membership.Status.WAITING_IN));
         entry.waitingIn.add(agent);
         entry.memberJoined(agent);
-        trace.record(new TraceEvent.WaitingIn(clock.getAsLong(), agent.id(), entry.name()));
+        trace.record(new TraceEvent.WaitingIn(clock.getAsLong(), agent.id(), entry.name(), agent.source()));
         reconcile(agent);
         if (entry.policy == LockPolicy.FREE) {
             awaitingFirstRelease.add(entry);
@@ -268,7 +268,8 @@ final class EntryCoordinator {
         membership.wave = wave;
         membership.status = Membership.Status.ACTIVE;
         wave.members.add(agent);
-        trace.record(new TraceEvent.Released(clock.getAsLong(), agent.id(), entry.name(), wave.number));
+        trace.record(new TraceEvent.Released(clock.getAsLong(), agent.id(), entry.name(), wave.number,
+                agent.source()));
         reconcile(agent);
         wake(agent);
     }
@@ -281,7 +282,8 @@ final class EntryCoordinator {
         if (membership.entry.mode() == Mode.SYNCHRONOUS) {
             agent.lastLeftSynchronous = membership.entry.definition();
         }
-        trace.record(new TraceEvent.Left(clock.getAsLong(), agent.id(), membership.entry.name(), cause));
+        trace.record(new TraceEvent.Left(clock.getAsLong(), agent.id(), membership.entry.name(), cause,
+                agent.source()));
         reconcile(agent);
         if (wave.members.isEmpty() && wave.entry.currentWave == wave) {
             wave.entry.currentWave = null;

@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
@@ -20,6 +21,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
 import masl.runtime.descriptor.AgentType;
 import masl.runtime.trace.Trace;
+import masl.runtime.trace.TraceEvent;
 
 /**
  * One run of a MASL program: its agents (proxy ids 0, 1, 2, … in declaration order, each with its
@@ -116,6 +118,7 @@ public final class Mission {
         }
         scheduler.start(agents);
         MissionOutcome.Status status = awaitEnd(timeout);
+        trace.record(new TraceEvent.MissionEnded(scheduler.nanoTime(), status.name().toLowerCase(Locale.ROOT)));
         String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
         scheduler.shutdown();
         primitives.shutdownNow();

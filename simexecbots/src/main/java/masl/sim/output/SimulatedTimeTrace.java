@@ -28,21 +28,44 @@ public final class SimulatedTimeTrace implements Trace {
 
     static TraceEvent restamped(TraceEvent event, long t) {
         if (event instanceof TraceEvent.Entered e) {
-            return new TraceEvent.Entered(t, e.agent(), e.block());
+            return new TraceEvent.Entered(t, e.agent(), e.block(), e.source());
         } else if (event instanceof TraceEvent.WaitingIn e) {
-            return new TraceEvent.WaitingIn(t, e.agent(), e.block());
+            return new TraceEvent.WaitingIn(t, e.agent(), e.block(), e.source());
         } else if (event instanceof TraceEvent.Released e) {
-            return new TraceEvent.Released(t, e.agent(), e.block(), e.wave());
+            return new TraceEvent.Released(t, e.agent(), e.block(), e.wave(), e.source());
         } else if (event instanceof TraceEvent.WaitingOut e) {
-            return new TraceEvent.WaitingOut(t, e.agent(), e.block());
+            return new TraceEvent.WaitingOut(t, e.agent(), e.block(), e.source());
         } else if (event instanceof TraceEvent.Left e) {
-            return new TraceEvent.Left(t, e.agent(), e.block(), e.cause());
+            return new TraceEvent.Left(t, e.agent(), e.block(), e.cause(), e.source());
         } else if (event instanceof TraceEvent.BarrierTripped e) {
             return new TraceEvent.BarrierTripped(t, e.domain(), e.agents());
         } else if (event instanceof TraceEvent.WaveStarted e) {
             return new TraceEvent.WaveStarted(t, e.block(), e.wave());
+        } else if (event instanceof TraceEvent.WaveEnded e) {
+            return new TraceEvent.WaveEnded(t, e.block(), e.wave());
+        } else if (event instanceof TraceEvent.MissionEnded e) {
+            return new TraceEvent.MissionEnded(t, e.status());
         }
-        TraceEvent.WaveEnded e = (TraceEvent.WaveEnded) event;
-        return new TraceEvent.WaveEnded(t, e.block(), e.wave());
+        return restampedAgentEvent(event, t);
+    }
+
+    private static TraceEvent restampedAgentEvent(TraceEvent event, long t) {
+        if (event instanceof TraceEvent.EventEmitted e) {
+            return new TraceEvent.EventEmitted(t, e.agent(), e.event(), e.block(), e.message(), e.receivers(), e.source());
+        } else if (event instanceof TraceEvent.EventReacted e) {
+            return new TraceEvent.EventReacted(t, e.agent(), e.event(), e.block(), e.byDefault(), e.source());
+        } else if (event instanceof TraceEvent.EventDropped e) {
+            return new TraceEvent.EventDropped(t, e.agent(), e.event(), e.source());
+        } else if (event instanceof TraceEvent.InvocationMade e) {
+            return new TraceEvent.InvocationMade(t, e.requester(), e.callee(), e.member(), e.source());
+        } else if (event instanceof TraceEvent.InvocationServed e) {
+            return new TraceEvent.InvocationServed(t, e.callee(), e.requester(), e.member(), e.source());
+        } else if (event instanceof TraceEvent.InvocationDenied e) {
+            return new TraceEvent.InvocationDenied(t, e.callee(), e.requester(), e.member(), e.state(), e.source());
+        } else if (event instanceof TraceEvent.CountermeasureFired e) {
+            return new TraceEvent.CountermeasureFired(t, e.agent(), e.callee(), e.member(), e.block(), e.source());
+        }
+        TraceEvent.AgentFailed e = (TraceEvent.AgentFailed) event;
+        return new TraceEvent.AgentFailed(t, e.agent(), e.cause(), e.source());
     }
 }
