@@ -107,8 +107,11 @@ final class Agent implements AgentContext, AgentTask {
      * in the middle of a case finds {@code pc} at its own case. Read by others only while parked.
      */
     private int statementPc;
+    /** Whether {@link #statementPc} is a loop's head, whose statement is the loop, not the last one of its body. */
+    private boolean statementIsLoop;
     /** {@link #statementPc} of the boundary whose events are being reacted to. */
     private int interruptedStatementPc;
+    private boolean interruptedStatementIsLoop;
 
     // Guarded by the EntryCoordinator's lock (see its invariant for the agent's own reads).
     final List<Membership> memberships = new ArrayList<>();
@@ -326,7 +329,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean loopIteration() {
-        atCurrentCase();
+        atLoopHead();
         progress++;
         if (isReacting()) {
             return yieldIfSliceUsed();
@@ -339,7 +342,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean busyWaitIteration() {
-        atCurrentCase();
+        atLoopHead();
         if (!isReacting()) {
             // Reactions assign locals: running them is progress, so the next iteration does not park.
             if (startReactions(false)) {
@@ -513,6 +516,7 @@ final class Agent implements AgentContext, AgentTask {
         ending = null;
         program.jump(ended.interruptedPc());
         statementPc = interruptedStatementPc;
+        statementIsLoop = interruptedStatementIsLoop;
         return completeBoundary(ended.barrierDue());
     }
 
@@ -847,6 +851,7 @@ final class Agent implements AgentContext, AgentTask {
         }
         progress++;
         interruptedStatementPc = statementPc;
+        interruptedStatementIsLoop = statementIsLoop;
         reacting = new ReactionRun(plan.steps(), program.pc(), barrierDue);
         redirectToNextReaction();
         return true;
@@ -857,7 +862,7 @@ final class Agent implements AgentContext, AgentTask {
         Reaction reaction = step.reaction();
         mission.trace().record(new TraceEvent.EventReacted(now(), id,
                 step.occurrence().event().name(), reaction.block().name(), reaction.isDefault(),
-                program.sourceAt(interruptedStatementPc)));
+                sourceOf(interruptedStatementPc, interruptedStatementIsLoop)));
         program.jump(program.reactionPc(reaction));
         suspended = true;
         redirected = true;
@@ -1014,25 +1019,36 @@ final class Agent implements AgentContext, AgentTask {
     /** The current runtime call comes after {@code pc} was set to the case that follows its own. */
     private void atCallBefore() {
         statementPc = program.pc() - 1;
+        statementIsLoop = false;
     }
 
-    /** The current runtime call is made from the case {@code pc} names (or is a loop's iteration). */
+    /** The current runtime call is made from the case {@code pc} names. */
     private void atCurrentCase() {
         statementPc = program.pc();
+        statementIsLoop = false;
+    }
+
+    /** The current runtime call is a loop's iteration, made from its head, the case {@code pc} names. */
+    private void atLoopHead() {
+        statementPc = program.pc();
+        statementIsLoop = true;
     }
 
     /**
      * The MASL statement the agent is at ({@code "e6.masl:14: synchronous entry turn (…)"}), or null
-     * if its program does not say: the nearest commented case at or before {@link #statementPc}.
+     * if its program does not say: the last statement of the case making the current call (a loop's
+     * own statement at its head), or of the nearest case before it that has one.
      */
     String source() {
-        for (int pc = statementPc; pc >= 0 && pc > statementPc - 4; pc--) {
-            String source = program.sourceAt(pc);
-            if (source != null) {
-                return source;
-            }
+        return sourceOf(statementPc, statementIsLoop);
+    }
+
+    private String sourceOf(int statement, boolean loopHead) {
+        String source = loopHead ? program.sourceAt(statement) : program.sourceOfCallIn(statement);
+        for (int pc = statement - 1; source == null && pc >= 0 && pc > statement - 4; pc--) {
+            source = program.sourceOfCallIn(pc);
         }
-        return null;
+        return source;
     }
 
     String describe() {
