@@ -119,6 +119,8 @@ final class Agent implements AgentContext, AgentTask {
     List<SynchronisationBarrier> participatesIn = new ArrayList<>();
     /** The synchronous block the agent left last, until its next step boundary or arrival. */
     EntryDefinition lastLeftSynchronous;
+    /** Its program died: it counts in no wave, not even the mission's (see {@link EntryCoordinator#leaveAll}). */
+    boolean departed;
 
     Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
             Mission mission) {
@@ -157,8 +159,7 @@ final class Agent implements AgentContext, AgentTask {
                 program.resume(this);
             } while (redirected && !finished);
         } catch (Throwable failure) {
-            end();
-            mission.agentFailed(this, failure);
+            die(failure);
             return;
         }
         if (finished) {
@@ -166,9 +167,7 @@ final class Agent implements AgentContext, AgentTask {
             mission.agentFinished(this);
             serveIfPending();
         } else if (!suspended) {
-            end();
-            mission.agentFailed(this, new IllegalStateException(describe()
-                    + ": resume returned without a suspension or finish()"));
+            die(new IllegalStateException(describe() + ": resume returned without a suspension or finish()"));
         } else if (state.compareAndSet(RUNNING, PARKED)) {
             // Invocations queued while the slice ran are served now that the agent is blocked.
             serveIfPending();
@@ -230,6 +229,30 @@ final class Agent implements AgentContext, AgentTask {
     private void end() {
         finished = true;
         state.set(DONE);
+    }
+
+    /**
+     * Something escaped from the program (an {@code Error}, or an exception outside the calls the
+     * translator guards): the agent's program is over. It fires its armed countermeasures and leaves
+     * every block, so barriers shrink and the others go on; the trace says why ({@code agent-failed})
+     * and the mission, once over, fails with this cause.
+     */
+    private void die(Throwable failure) {
+        statementPc = program.pc();
+        statementIsLoop = false;
+        mission.trace().record(new TraceEvent.AgentFailed(now(), id, String.valueOf(failure), source()));
+        try {
+            reacting = null;
+            ending = null;
+            fireCountermeasures(0);
+            mission.coordinator().leaveAll(this);
+        } catch (RuntimeException leaving) {
+            failure.addSuppressed(leaving);
+            mission.agentFailed(this, failure);
+        }
+        end();
+        mission.agentDied(this, failure);
+        serveIfPending();
     }
 
     /** Issues the ticket of a park: the caller (this agent's own slice) then returns {@code false}. */
@@ -552,7 +575,7 @@ final class Agent implements AgentContext, AgentTask {
         CompletableFuture<T> result = new CompletableFuture<>();
         mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive, source()));
         target.submitInvocation(new PendingInvocation(this, primitive,
-                () -> result.complete(runFor(this, call, defaultValue)),
+                () -> result.complete(runFor(this, primitive, call, defaultValue)),
                 () -> {
                     raise(Event.TIMEOUT, primitive);
                     result.complete(defaultValue);
@@ -567,7 +590,7 @@ final class Agent implements AgentContext, AgentTask {
         if (!allowsOwn(primitive)) {
             return defaultValue;
         }
-        return runFor(this, call, defaultValue);
+        return runFor(this, primitive, call, defaultValue);
     }
 
     /**
@@ -610,7 +633,7 @@ final class Agent implements AgentContext, AgentTask {
     /** Launches an asynchronous primitive of {@code target}, filtered by permeability, without (dis)arming anything. */
     private <T> CompletableFuture<T> start(Agent target, String primitive, T defaultValue, Callable<T> call) {
         CompletableFuture<T> result = new CompletableFuture<>();
-        Runnable start = () -> mission.runAsynchronously(this, () -> result.complete(runFor(this, call, defaultValue)));
+        Runnable start = () -> mission.runAsynchronously(this, () -> result.complete(runFor(this, primitive, call, defaultValue)));
         if (target == this) {
             if (allowsOwn(primitive)) {
                 start.run();
@@ -687,10 +710,16 @@ final class Agent implements AgentContext, AgentTask {
         return defaultValue;
     }
 
-    /** Runs a primitive for {@code requester}: an exception becomes its {@code uncaught_exception} (§9). */
-    private static <T> T runFor(Agent requester, Callable<T> call, T defaultValue) {
+    /**
+     * Runs primitive {@code primitive} for {@code requester}: an exception becomes its
+     * {@code uncaught_exception} (§9), running past the mission's call timeout its {@code timeout}.
+     */
+    private static <T> T runFor(Agent requester, String primitive, Callable<T> call, T defaultValue) {
         try {
-            return call.call();
+            return requester.mission.callPrimitive(call);
+        } catch (Mission.PrimitiveTimedOut late) {
+            requester.raise(Event.TIMEOUT, primitive);
+            return defaultValue;
         } catch (Exception thrown) {
             requester.raise(Event.UNCAUGHT_EXCEPTION, thrown.getClass().getName());
             return defaultValue;

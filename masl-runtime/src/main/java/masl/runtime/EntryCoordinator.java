@@ -152,6 +152,41 @@ final class EntryCoordinator {
         }
     }
 
+    /**
+     * The agent's program died: it leaves every block it is in, from the innermost, whatever its
+     * status there (active, or held by a barrier if it died in a runtime call), with cause
+     * {@code FAILED}. Barriers shrink, exit barriers it held back open, as when a member leaves.
+     */
+    void leaveAll(Agent agent) {
+        begin();
+        try {
+            changed = true;
+            for (SynchronisationBarrier barrier : agent.participatesIn) {
+                barrier.arrived.remove(agent);
+            }
+            while (!agent.memberships.isEmpty()) {
+                Membership innermost = agent.innermost();
+                if (innermost.status == Membership.Status.WAITING_IN) {
+                    innermost.entry.waitingIn.remove(agent);
+                    agent.memberships.remove(agent.memberships.size() - 1);
+                    trace.record(new TraceEvent.Left(clock.getAsLong(), agent.id(), innermost.entry.name(),
+                            LeaveCause.FAILED, agent.source()));
+                    reconcile(agent);
+                    innermost.entry.memberLeft(agent);
+                } else {
+                    innermost.wave.waitingOut.remove(agent);
+                    innermost.status = Membership.Status.ACTIVE;
+                    pop(agent, LeaveCause.FAILED);
+                }
+            }
+            agent.departed = true;
+            reconcile(agent);
+            settle();
+        } finally {
+            end();
+        }
+    }
+
     /** The synchronisation barrier of the agent's innermost (synchronous) block: true if it tripped now. */
     boolean arriveAtBarrier(Agent agent) {
         begin();
@@ -302,13 +337,14 @@ final class EntryCoordinator {
     /**
      * Brings the agent's contribution to active counts and barrier participants in line with its
      * memberships: it counts in the waves of all its blocks (and the mission wave) and in the
-     * barriers of all its synchronous blocks, unless it is held, in which case it counts nowhere.
+     * barriers of all its synchronous blocks, unless it is held or its program died, in which case
+     * it counts nowhere.
      * Counts that drop are queued for {@link #settle()}.
      */
     private void reconcile(Agent agent) {
         List<Wave> waves = new ArrayList<>();
         List<SynchronisationBarrier> barriers = new ArrayList<>();
-        if (!agent.isHeld()) {
+        if (!agent.isHeld() && !agent.departed) {
             waves.add(missionWave);
             for (Membership membership : agent.memberships) {
                 waves.add(membership.wave);
