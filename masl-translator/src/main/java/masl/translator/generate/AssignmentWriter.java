@@ -62,9 +62,16 @@ final class AssignmentWriter {
         ExpressionContext value = assignment.value;
         MaslType type = program.typeOf(target);
         Symbol symbol = program.symbolOf(target).orElse(null);
+        if (target instanceof MASLParser.FieldAccessContext access
+                && expressions.labelForm(access.expression()) != null) {
+            return labelAssignment(access, symbol, value);
+        }
         if (symbol instanceof Variable variable) {
             if (!maySelfWrite(variable)) {
                 return ignoredWrite(assignment, isStatement, variable);
+            }
+            if (expressions.holdsFuture(variable)) {
+                return futureAssignment(assignment, variable);
             }
             if (variable.sharing() == Sharing.LOCAL) {
                 return expressions.local(variable) + " " + operator + " "
@@ -86,9 +93,8 @@ final class AssignmentWriter {
                     : compound(type, parameter, binary, expressions.expr(value), program.typeOf(value)));
             return shared + ".update(" + parameter + " -> " + function + ")";
         }
-        if (target instanceof MASLParser.FieldAccessContext access && symbol instanceof Member member
-                && member.kind() == Member.Kind.ATTRIBUTE && !TreeQueries.isThis(access.expression())) {
-            return unsupported.report(target, "an attribute of another agent");
+        if (symbol instanceof Member member && member.kind() == Member.Kind.ATTRIBUTE) {
+            return attributeUpdate(target, member, operator, value, isStatement);
         }
         if (symbol instanceof Member member && member.kind() == Member.Kind.DYNAMIC) {
             return unsupported.report(target, "an assignment to a field of an Object-typed value");
@@ -97,10 +103,85 @@ final class AssignmentWriter {
         return left + " " + operator + " " + (operator.equals("=") ? expressions.converted(type, value) : expressions.expr(value));
     }
 
+    /** A new temporary field of Java type {@code javaType}. */
+    String temporary(String javaType) {
+        String temporary = "tmp$" + (temporaries.size() + 1);
+        temporaries.put(temporary, javaType);
+        return temporary;
+    }
+
+    /**
+     * {@code l.x = a.m(…)}, {@code l.a.x = …}, {@code l.this.x = …} (§10): the invocation is
+     * registered with the label, which stores its result in the variable or attribute when it comes.
+     */
+    private String labelAssignment(MASLParser.FieldAccessContext target, Symbol symbol, ExpressionContext value) {
+        ExpressionContext agent = null;
+        String name;
+        List<ExpressionContext> arguments;
+        if (value instanceof MASLParser.MethodCallContext call) {
+            agent = TreeQueries.isThis(call.expression()) ? null : call.expression();
+            name = call.identifier().getText();
+            arguments = ExpressionWriter.arguments(call.arguments());
+        } else {
+            MASLParser.SelfInvocationContext self = (MASLParser.SelfInvocationContext)
+                    ((MASLParser.PrimaryExprContext) value).primary();
+            name = self.identifier().getText();
+            arguments = ExpressionWriter.arguments(self.arguments());
+        }
+        String callee = agent == null ? "self" : expressions.expr(agent);
+        String store;
+        ExpressionWriter.LabelForm form = expressions.labelForm(target.expression());
+        boolean toVariable = expressions.label(target.expression()) != null;
+        if (toVariable && symbol instanceof Variable variable) {
+            String converted = MaslType.STRING.equals(variable.type()) ? "String.valueOf(value)" : "value";
+            store = variable.sharing() == Sharing.SHARED
+                    ? "value -> ctx.shared(" + structure.shared(variable) + ").set(" + converted + ")"
+                    : "value -> " + expressions.local(variable) + " = " + converted;
+        } else {
+            store = expressions.attributeStore(form.agent(), expressions.addressee(form), target.identifier().getText(),
+                    target);
+        }
+        return expressions.labelLaunch(form.label(), agent, callee, name, arguments, store, value);
+    }
+
+    /**
+     * An assignment to a local holding a future (MASL 9): an asynchronous invocation stores its
+     * future without waiting; any other value is stored as a completed future.
+     */
+    private String futureAssignment(MASLParser.AssignExprContext assignment, Variable variable) {
+        if (!assignment.op.getText().equals("=")) {
+            return unsupported.report(assignment, "a compound assignment to a variable holding a future");
+        }
+        return expressions.local(variable) + " = " + expressions.future(variable.type(), assignment.value);
+    }
+
+    /**
+     * An assignment to an attribute (§8.4), of the current agent or another: a write through the
+     * runtime, filtered by permeability; {@code x op= e} and {@code x++} read it first.
+     * {@code value} is null for an increment ({@code +=} / {@code -=} of one).
+     */
+    private String attributeUpdate(ExpressionContext target, Member member, String operator, ExpressionContext value,
+            boolean isStatement) {
+        if (!isStatement) {
+            return unsupported.report(target, "an assignment to an attribute inside an expression");
+        }
+        ExpressionContext owner = target instanceof MASLParser.FieldAccessContext access ? access.expression() : null;
+        MaslType type = program.typeOf(target);
+        String written;
+        if (operator.equals("=")) {
+            written = expressions.converted(type, value);
+        } else {
+            String current = expressions.expr(target);
+            String operand = value == null ? "1" : expressions.expr(value);
+            MaslType operandType = value == null ? MaslType.INT : program.typeOf(value);
+            written = compound(type, current, operator.substring(0, operator.length() - 1), operand, operandType);
+        }
+        return expressions.attributeWrite(owner, member.name(), written, target);
+    }
+
     /** Evaluates {@code value} into a new temporary, before the statement; returns the temporary. */
     private String hoist(ExpressionContext value) {
-        String temporary = "tmp$" + (temporaries.size() + 1);
-        temporaries.put(temporary, JavaTypes.name(program.typeOf(value)));
+        String temporary = temporary(JavaTypes.name(program.typeOf(value)));
         hoisted.add(temporary + " = " + expressions.expr(value) + ";");
         return temporary;
     }
@@ -146,6 +227,12 @@ final class AssignmentWriter {
         }
         if (symbol instanceof Member member && member.kind() == Member.Kind.DYNAMIC) {
             return unsupported.report(target, "an assignment to a field of an Object-typed value");
+        }
+        if (symbol instanceof Member member && member.kind() == Member.Kind.ATTRIBUTE) {
+            return attributeUpdate(target, member, operator.substring(0, 1) + "=", null, isStatement);
+        }
+        if (symbol instanceof Variable variable && expressions.holdsFuture(variable)) {
+            return unsupported.report(target, "an increment of a variable holding a future");
         }
         String operand = expressions.expr(target);
         return prefix ? operator + operand : operand + operator;

@@ -6,11 +6,14 @@ import java.util.Map;
 import java.util.Optional;
 import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.ExpressionContext;
+import masl.runtime.descriptor.Attribute;
 import masl.runtime.descriptor.Parameter;
 import masl.runtime.descriptor.Primitive;
+import masl.translator.analysis.AgentDecl;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.EntryRef;
 import masl.translator.analysis.EventDecl;
+import masl.translator.analysis.Label;
 import masl.translator.analysis.ImportedType;
 import masl.translator.analysis.MaslType;
 import masl.translator.analysis.Member;
@@ -38,7 +41,15 @@ final class ExpressionWriter {
     private final TreeQueries queries;
     private final AssignmentWriter assignments;
     private final Map<Variable, String> locals = new java.util.LinkedHashMap<>();
-    private final Map<String, Primitive> throwingPrimitives = new java.util.LinkedHashMap<>();
+    private final Map<Label, String> localLabels = new java.util.LinkedHashMap<>();
+    private final AgentCalls calls = new AgentCalls();
+    /** The agents named in the program that it uses, with the program's field holding each. */
+    private final Map<AgentDecl, String> agents = new java.util.LinkedHashMap<>();
+    /** Suspension points met in the expressions written since they were last taken (contract §3.11). */
+    private final List<Suspension> suspensions = new ArrayList<>();
+    private final FutureVariables futures;
+    /** The expression whose asynchronous invocation gives its future rather than its awaited value. */
+    private ExpressionContext unawaited;
     private boolean usesDynamicMembers;
     /** Inside the function of an atomic update: the variable updated and the function's parameter. */
     private Variable updated;
@@ -52,6 +63,175 @@ final class ExpressionWriter {
         this.unsupported = unsupported;
         this.queries = new TreeQueries(program, selfType);
         this.assignments = new AssignmentWriter(program, structure, this, queries, unsupported);
+        this.futures = new FutureVariables(program, queries);
+    }
+
+    /**
+     * A wait for a result inside an expression: {@code start} (null when the future is already
+     * held) gives {@code future}, which the program awaits before evaluating the expression.
+     */
+    record Suspension(String start, String future) {
+    }
+
+    /** Takes the suspension points of the expressions written since the last call, in evaluation order. */
+    List<Suspension> takeSuspensions() {
+        List<Suspension> taken = List.copyOf(suspensions);
+        suspensions.clear();
+        return taken;
+    }
+
+    /** Whether {@code tree} waits for a result: an external invocation, a read of a future (§3.11). */
+    boolean suspends(org.antlr.v4.runtime.tree.ParseTree tree) {
+        if (tree instanceof ExpressionContext expression && isAsynchronousLabelLaunch(expression)) {
+            // Launched and registered with the label, not waited for: only its arguments may wait.
+            ExpressionContext call = expression instanceof MASLParser.AssignExprContext assignment ? assignment.value
+                    : expression;
+            MASLParser.ArgumentsContext arguments = call instanceof MASLParser.MethodCallContext method
+                    ? method.arguments()
+                    : ((MASLParser.SelfInvocationContext) ((MASLParser.PrimaryExprContext) call).primary()).arguments();
+            return arguments(arguments).stream().anyMatch(argument -> queries.suspends(argument, futures));
+        }
+        return queries.suspends(tree, futures);
+    }
+
+    /** Whether a local holds the future of an asynchronous invocation (§9): reading it awaits it. */
+    boolean holdsFuture(Variable variable) {
+        return futures.contains(variable);
+    }
+
+    /** Writes {@code expression} leaving the asynchronous invocation it is, if it is one, unawaited. */
+    String unawaited(ExpressionContext expression) {
+        ExpressionContext outer = unawaited;
+        unawaited = expression;
+        try {
+            return expr(expression);
+        } finally {
+            unawaited = outer;
+        }
+    }
+
+    /** {@code value} stored into a local holding a future: its future, unawaited, or a completed one. */
+    String future(MaslType type, ExpressionContext value) {
+        if (futures.isLaunch(value)) {
+            return unawaited(value);
+        }
+        return "CompletableFuture.completedFuture(" + convertedBoxed(type, value) + ")";
+    }
+
+    AgentCalls calls() {
+        return calls;
+    }
+
+    /** The named agents the program uses: each is a field of the program, set from the population. */
+    Map<AgentDecl, String> agents() {
+        return agents;
+    }
+
+    /** The field of an {@code LLabel}: {@code block$name}. */
+    String localLabel(Label label) {
+        return localLabels.computeIfAbsent(label, l -> l.block().name() + "$" + l.name());
+    }
+
+    /** The {@code LLabel}s used so far, with their fields. */
+    Map<Label, String> localLabels() {
+        return localLabels;
+    }
+
+    /** The label a name stands for, or null. */
+    Label label(ExpressionContext expression) {
+        return program.symbolOf(expression).orElse(null) instanceof Label label ? label : null;
+    }
+
+    /** The Java value of a label: its field, or the wave's label of an {@code SLabel}. */
+    String labelValue(Label label) {
+        return label.sharing() == Sharing.SHARED ? "ctx.shared(" + structure.sharedLabel(label) + ").get()"
+                : localLabel(label);
+    }
+
+    /**
+     * The label and addressee of a label form's receiver: {@code l.a} (a named agent or a variable
+     * holding one), {@code l.this} or {@code l} (the current agent, agent null); null if it is none.
+     */
+    record LabelForm(Label label, ExpressionContext agent) {
+    }
+
+    LabelForm labelForm(ExpressionContext receiver) {
+        if (receiver instanceof MASLParser.LabelSelfContext self && label(self.expression()) != null) {
+            return new LabelForm(label(self.expression()), null);
+        }
+        if (receiver instanceof MASLParser.FieldAccessContext access && label(access.expression()) != null) {
+            return new LabelForm(label(access.expression()), access);
+        }
+        Label label = label(receiver);
+        return label == null ? null : new LabelForm(label, null);
+    }
+
+    /** The Java of the agent a label form addresses. */
+    String addressee(LabelForm form) {
+        if (form.agent() == null) {
+            return "self";
+        }
+        Symbol symbol = program.symbolOf(form.agent()).orElse(null);
+        if (symbol instanceof AgentDecl agent) {
+            return agent(agent);
+        }
+        if (symbol instanceof Variable variable) {
+            return read(variable);
+        }
+        return unsupported.report(form.agent(), "this label addressee");
+    }
+
+    /**
+     * A launch registered with a label (§10, contract §8.3): {@code l.a.m(…)}, and the value of
+     * {@code l.x = a.m(…)} with {@code store} the Java consumer of the result (null for none). An
+     * asynchronous primitive is launched and the instruction ends at once; a synchronous one is
+     * invoked and awaited, registered as done.
+     */
+    String labelLaunch(Label label, ExpressionContext agent, String callee, String name,
+            List<ExpressionContext> arguments, String store, ParserRuleContext where) {
+        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(program.typeOf(agent));
+        Optional<Primitive> found = calleeType == null ? Optional.empty() : calleeType.findPrimitive(name);
+        if (found.isEmpty()) {
+            return unsupported.report(where, "a label invocation of a primitive that the addressee's declared type lacks");
+        }
+        Primitive primitive = found.get();
+        List<String> java = arguments(primitive, arguments);
+        String register = labelValue(label) + ".register(";
+        String tail = store == null ? ")" : ", " + store + ")";
+        if (primitive.synchronous()) {
+            String future = assignments.temporary(AgentCalls.futureType(primitive));
+            String invoke = calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeType.fullClassName(), callee, java);
+            suspensions.add(new Suspension(future + " = " + register + invoke + tail + ";", future));
+            return future + ".join()";
+        }
+        Primitive countermeasure = primitive.countermeasure() == null ? null
+                : calleeType.findPrimitive(primitive.countermeasure()).orElse(null);
+        return register + calls.call(AgentCalls.Kind.LAUNCH, primitive, countermeasure, calleeType.fullClassName(),
+                callee, java) + tail;
+    }
+
+    /** Whether a statement is a label launch of an asynchronous primitive: zero duration (§5, §10). */
+    boolean isAsynchronousLabelLaunch(ExpressionContext expression) {
+        ExpressionContext call = expression instanceof MASLParser.AssignExprContext assignment ? assignment.value
+                : expression;
+        boolean labelForm = expression instanceof MASLParser.AssignExprContext assignment
+                ? assignment.target instanceof MASLParser.FieldAccessContext access
+                        && labelForm(access.expression()) != null
+                : call instanceof MASLParser.MethodCallContext method && labelForm(method.expression()) != null;
+        if (!labelForm) {
+            return false;
+        }
+        String name = call instanceof MASLParser.MethodCallContext method ? method.identifier().getText()
+                : call instanceof MASLParser.PrimaryExprContext primary
+                        && primary.primary() instanceof MASLParser.SelfInvocationContext self
+                        ? self.identifier().getText() : null;
+        ExpressionContext agent = expression instanceof MASLParser.AssignExprContext
+                ? (call instanceof MASLParser.MethodCallContext method && !TreeQueries.isThis(method.expression())
+                        ? method.expression() : null)
+                : labelForm(((MASLParser.MethodCallContext) call).expression()).agent();
+        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(program.typeOf(agent));
+        Primitive primitive = calleeType == null || name == null ? null : calleeType.findPrimitive(name).orElse(null);
+        return primitive != null && !primitive.synchronous();
     }
 
     /** The field of a local variable: {@code block$name}. */
@@ -62,11 +242,6 @@ final class ExpressionWriter {
     /** The locals used so far, with their fields. */
     Map<Variable, String> locals() {
         return locals;
-    }
-
-    /** Primitives called so far that declare checked exceptions: each gets a wrapper method. */
-    Map<String, Primitive> throwingPrimitives() {
-        return throwingPrimitives;
     }
 
     /** Whether members of Object-typed values were used: the program class then needs {@link DynamicMembers}. */
@@ -213,6 +388,10 @@ final class ExpressionWriter {
         } else if (expression instanceof MASLParser.ShiftExprContext shift) {
             return expr(shift.left) + " " + shift.shiftOperator().getText() + " " + expr(shift.right);
         } else if (expression instanceof MASLParser.ConditionalExprContext conditional) {
+            if (suspends(conditional.whenTrue) || suspends(conditional.whenFalse)) {
+                return unsupported.report(conditional, "waiting for a result (an invocation of another agent, a future) in a"
+                        + " branch of ?:,");
+            }
             return truth(conditional.condition) + " ? " + expr(conditional.whenTrue) + " : "
                     + expr(conditional.whenFalse);
         } else if (expression instanceof MASLParser.AssignExprContext assignment) {
@@ -231,6 +410,10 @@ final class ExpressionWriter {
     private String binary(MASLParser.BinaryExprContext binary) {
         String operator = binary.op.getText();
         if (operator.equals("&&") || operator.equals("||")) {
+            if (suspends(binary.right)) {
+                return unsupported.report(binary.right, "waiting for a result (an invocation of another agent, a future) in the"
+                        + " right operand of " + operator + ",");
+            }
             return truth(binary.left) + " " + operator + " " + truth(binary.right);
         }
         if (operator.equals("==") || operator.equals("!=") || operator.equals("<>")) {
@@ -257,19 +440,20 @@ final class ExpressionWriter {
         } else if (primary instanceof MASLParser.ThisExprContext) {
             return "self";
         } else if (primary instanceof MASLParser.SelfInvocationContext call) {
-            return selfPrimitive(call.identifier().getText(), arguments(call.arguments()), expression);
+            return primitiveCall(null, call.identifier().getText(), arguments(call.arguments()), expression);
         } else if (primary instanceof MASLParser.SelfAttributeContext attribute) {
-            return "self." + attribute.identifier().getText();
+            return attributeRead(null, attribute.identifier().getText(), expression);
         } else if (primary instanceof MASLParser.NameExprContext) {
             return name(expression);
         } else if (primary instanceof MASLParser.NewExprContext creation) {
             return creation(creation.creator(), expression);
         } else if (primary instanceof MASLParser.PrimitiveClassLiteralContext literal) {
             return literal.getText();
-        } else if (primary instanceof MASLParser.PlainCallContext) {
-            return unsupported.report(expression, "a label member");
-        } else if (primary instanceof MASLParser.GetAcceptStateExprContext) {
-            return unsupported.report(expression, "getAcceptState (permeability)");
+        } else if (primary instanceof MASLParser.PlainCallContext call) {
+            // isFinished(l), the one call without a receiver (MASL 10).
+            return labelValue(label(arguments(call.arguments()).get(0))) + ".isFinished()";
+        } else if (primary instanceof MASLParser.GetAcceptStateExprContext state) {
+            return state.agent == null ? "ctx.getAcceptState()" : "ctx.getAcceptState(" + expr(state.agent) + ")";
         } else if (primary instanceof MASLParser.GetMessageExprContext message) {
             return "ctx.messageOf(" + event(message.event) + ")";
         }
@@ -284,7 +468,13 @@ final class ExpressionWriter {
         if (symbol instanceof TypeRef type) {
             return JavaTypes.name(type.type());
         }
-        return unsupported.report(expression, "a reference to an agent other than this");
+        if (symbol instanceof AgentDecl agent) {
+            return agent(agent);
+        }
+        if (symbol instanceof Member member && member.kind() == Member.Kind.ATTRIBUTE) {
+            return attributeRead(null, member.name(), expression);
+        }
+        return unsupported.report(expression, "this name");
     }
 
     /** Generates {@code body} as the function of an atomic update of {@code variable}: its reads are the parameter. */
@@ -316,6 +506,11 @@ final class ExpressionWriter {
         }
         if (variable.sharing() == Sharing.SHARED) {
             return "ctx.shared(" + structure.shared(variable) + ").get()";
+        }
+        if (futures.contains(variable)) {
+            // Holding a future does not block; reading it waits for the result (MASL 9).
+            suspensions.add(new Suspension(null, local(variable)));
+            return local(variable) + ".join()";
         }
         return local(variable);
     }
@@ -355,8 +550,7 @@ final class ExpressionWriter {
         }
         return switch (member.kind()) {
             case ENTRY_MEMBER -> entry(access.expression()) + "." + name + "()";
-            case ATTRIBUTE -> TreeQueries.isThis(access.expression()) ? "self." + name
-                    : unsupported.report(access, "an attribute of another agent");
+            case ATTRIBUTE -> attributeRead(access.expression(), name, access);
             case JAVA_FIELD -> receiver(access.expression()) + "." + name;
             case DYNAMIC -> dynamicField(access.expression(), name);
             default -> unsupported.report(access, "this member access");
@@ -367,16 +561,19 @@ final class ExpressionWriter {
         Symbol symbol = program.symbolOf(call).orElse(null);
         String name = call.identifier().getText();
         List<ExpressionContext> arguments = arguments(call.arguments());
+        LabelForm form = labelForm(call.expression());
+        if (form != null && !(symbol instanceof Member labelMember && labelMember.kind() == Member.Kind.LABEL_MEMBER)) {
+            return labelLaunch(form.label(), form.agent(), addressee(form), name, arguments, null, call);
+        }
         if (!(symbol instanceof Member member)) {
             return unsupported.report(call, "this call");
         }
         return switch (member.kind()) {
-            case PRIMITIVE -> TreeQueries.isThis(call.expression()) ? selfPrimitive(name, arguments, call)
-                    : unsupported.report(call, "an invocation of another agent's primitive");
+            case PRIMITIVE -> primitiveCall(call.expression(), name, arguments, call);
             case ENTRY_MEMBER -> entryCall(call.expression(), name, arguments);
             case JAVA_METHOD -> receiver(call.expression()) + "." + name + "(" + String.join(", ", all(arguments))
                     + ")";
-            case LABEL_MEMBER -> unsupported.report(call, "a label member");
+            case LABEL_MEMBER -> labelValue(label(call.expression())) + "." + name + "()";
             case DYNAMIC -> dynamicCall(call.expression(), name, arguments);
             default -> unsupported.report(call, "this call");
         };
@@ -416,24 +613,111 @@ final class ExpressionWriter {
         return call;
     }
 
-    /** An internal invocation (§9): runs now, on this agent's implementation. */
-    private String selfPrimitive(String name, List<ExpressionContext> arguments, ParserRuleContext where) {
-        Optional<Primitive> primitive = selfType.descriptor().findPrimitive(name);
-        if (primitive.isEmpty()) {
-            return unsupported.report(where, "a primitive call the agent's type lacks, inside an expression,");
+    /** The field holding a named agent's implementation: {@code agent$b}. */
+    String agent(AgentDecl agent) {
+        return agents.computeIfAbsent(agent, a -> "agent$" + a.name());
+    }
+
+    /**
+     * An invocation of primitive {@code name} (§9) of {@code receiver}'s agent, or of the current
+     * agent when {@code receiver} is null or {@code this}: through the runtime, which filters it by
+     * permeability (contract §8.1). A synchronous external one, and an asynchronous one whose value
+     * is used, are suspension points: the expression reads the future's value once awaited.
+     */
+    private String primitiveCall(ExpressionContext receiver, String name, List<ExpressionContext> arguments,
+            ParserRuleContext where) {
+        boolean internal = receiver == null || TreeQueries.isThis(receiver);
+        var calleeType = internal ? selfType.descriptor() : queries.descriptorOf(program.typeOf(receiver));
+        Optional<Primitive> found = calleeType == null ? Optional.empty() : calleeType.findPrimitive(name);
+        if (found.isEmpty()) {
+            return unsupported.report(where, internal
+                    ? "a primitive call the agent's type lacks, inside an expression,"
+                    : "an invocation of a primitive that the receiver's declared type lacks");
         }
-        List<Parameter> parameters = primitive.get().parameters();
+        Primitive primitive = found.get();
+        String callee = internal ? "self" : expr(receiver);
+        List<String> java = arguments(primitive, arguments);
+        String calleeClass = calleeType.fullClassName();
+        if (primitive.synchronous() && internal) {
+            return calls.call(AgentCalls.Kind.INVOKE_SELF, primitive, null, calleeClass, callee, java);
+        }
+        if (primitive.synchronous()) {
+            return awaited(calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeClass, callee, java), primitive);
+        }
+        Primitive countermeasure = primitive.countermeasure() == null ? null
+                : calleeType.findPrimitive(primitive.countermeasure()).orElse(null);
+        String launch = calls.call(AgentCalls.Kind.LAUNCH, primitive, countermeasure, calleeClass, callee, java);
+        return where == unawaited ? launch : awaited(launch, primitive);
+    }
+
+    /** The arguments of a call, converted for the primitive's parameters (§3). */
+    List<String> arguments(Primitive primitive, List<ExpressionContext> arguments) {
+        List<Parameter> parameters = primitive.parameters();
         List<String> java = new ArrayList<>();
         for (int i = 0; i < arguments.size(); i++) {
             MaslType parameter = parameterType(parameters.get(i).type());
             java.add(parameter == null ? expr(arguments.get(i)) : converted(parameter, arguments.get(i)));
         }
-        String joined = String.join(", ", java);
-        if (!primitive.get().exceptions().isEmpty()) {
-            throwingPrimitives.put(name, primitive.get());
-            return "primitive$" + name + "(ctx" + (joined.isEmpty() ? "" : ", " + joined) + ")";
+        return java;
+    }
+
+    /** A future started before the statement, awaited, and read where the call stood. */
+    private String awaited(String start, Primitive primitive) {
+        String future = assignments.temporary(AgentCalls.futureType(primitive));
+        suspensions.add(new Suspension(future + " = " + start + ";", future));
+        return future + ".join()";
+    }
+
+    /** A read of attribute {@code name} of {@code owner}'s agent (the current one when null or {@code this}), §8.4. */
+    private String attributeRead(ExpressionContext owner, String name, ParserRuleContext where) {
+        boolean own = owner == null || TreeQueries.isThis(owner);
+        var ownerType = own ? selfType.descriptor() : queries.descriptorOf(program.typeOf(owner));
+        Optional<Attribute> attribute = ownerType == null ? Optional.empty() : ownerType.findAttribute(name);
+        if (attribute.isEmpty()) {
+            return unsupported.report(where, "an attribute that the owner's declared type lacks");
         }
-        return "self." + name + "(" + joined + ")";
+        String constant = constant(attribute.get());
+        if (constant != null) {
+            return constant;
+        }
+        return calls.read(attribute.get(), ownerType.fullClassName(), own ? "self" : expr(owner));
+    }
+
+    /** A write of attribute {@code name} of {@code owner}'s agent, §8.4; {@code value} is Java. */
+    String attributeWrite(ExpressionContext owner, String name, String value, ParserRuleContext where) {
+        boolean own = owner == null || TreeQueries.isThis(owner);
+        var ownerType = own ? selfType.descriptor() : queries.descriptorOf(program.typeOf(owner));
+        Optional<Attribute> attribute = ownerType == null ? Optional.empty() : ownerType.findAttribute(name);
+        if (attribute.isEmpty()) {
+            return unsupported.report(where, "an attribute that the owner's declared type lacks");
+        }
+        return calls.write(attribute.get(), ownerType.fullClassName(), own ? "self" : expr(owner), value);
+    }
+
+    /** The consumer storing a label's result in attribute {@code name} of an agent (§10): no permeability filter. */
+    String attributeStore(ExpressionContext owner, String ownerJava, String name, ParserRuleContext where) {
+        var ownerType = owner == null ? selfType.descriptor() : queries.descriptorOf(program.typeOf(owner));
+        Optional<Attribute> attribute = ownerType == null ? Optional.empty() : ownerType.findAttribute(name);
+        if (attribute.isEmpty()) {
+            return unsupported.report(where, "an attribute that the owner's declared type lacks");
+        }
+        return calls.store(attribute.get(), ownerType.fullClassName(), ownerJava);
+    }
+
+    /** The value of a {@code final} attribute with a {@code value}: a Java constant (§9); null otherwise. */
+    private static String constant(Attribute attribute) {
+        if (!attribute.isFinal() || attribute.value() == null) {
+            return null;
+        }
+        String value = attribute.value().trim();
+        return switch (attribute.type()) {
+            case "java.lang.String" -> JavaText.quote(attribute.value());
+            case "boolean", "int" -> value;
+            case "long" -> value + "L";
+            case "float" -> value + "f";
+            case "double" -> value + "d";
+            default -> null;
+        };
     }
 
     private static MaslType parameterType(String descriptorType) {

@@ -103,7 +103,51 @@ final class InstructionWriter {
                 && (prefix.op.getText().equals("++") || prefix.op.getText().equals("--"))) {
             return assignments.increment(prefix.expression(), prefix.op.getText(), true, true);
         }
-        return expressions.expr(expression);
+        // A call as a statement: an asynchronous primitive is launched and not waited for (MASL 9).
+        return expressions.unawaited(expression);
+    }
+
+    /**
+     * Waits for the results that the condition, test or initialiser just written reads (contract
+     * §3.11), then, as an external invocation is an instruction, the step boundary (§8.1).
+     */
+    void awaitResults() {
+        List<ExpressionWriter.Suspension> waits = expressions.takeSuspensions();
+        for (ExpressionWriter.Suspension wait : waits) {
+            if (wait.start() != null) {
+                cases.line(wait.start());
+            }
+            cases.suspending("ctx.await(" + wait.future() + ")", cases.point());
+        }
+        if (!waits.isEmpty()) {
+            stepBoundary();
+        }
+    }
+
+    /** {@code setAcceptState(s);} (MASL 11): an instruction. */
+    void setAcceptState(MASLParser.SetAcceptStateStmtContext statement) {
+        cases.note(at(statement) + ": " + JavaText.snippet(statement));
+        writeGuarded(statement.expression(), "ctx.setAcceptState("
+                + expressions.converted(MaslType.STRING, statement.expression()) + ");");
+        stepBoundary();
+    }
+
+    /**
+     * {@code wait(s);} / {@code wait(s, ms);} (MASL 11): the agent is attentive until an invocation
+     * the state allows has run, or the time is over; then the instruction's step boundary.
+     */
+    void waitFor(MASLParser.WaitStmtContext statement) {
+        cases.note(at(statement) + ": " + JavaText.snippet(statement));
+        String state = expressions.converted(MaslType.STRING, statement.state);
+        String timeout = statement.timeout == null ? "" : ", " + expressions.expr(statement.timeout);
+        for (ExpressionWriter.Suspension wait : expressions.takeSuspensions()) {
+            if (wait.start() != null) {
+                cases.line(wait.start());
+            }
+            cases.suspending("ctx.await(" + wait.future() + ")", cases.point());
+        }
+        cases.suspending("ctx.waitFor(" + state + timeout + ")", cases.point());
+        stepBoundary();
     }
 
     /**
@@ -111,8 +155,27 @@ final class InstructionWriter {
      * code that may throw: the exception raises {@code uncaught_exception} (MASL 8, 9).
      */
     private void writeGuarded(ExpressionContext expression, String java) {
+        List<ExpressionWriter.Suspension> waits = expressions.takeSuspensions();
         List<String> before = assignments.takeHoisted();
-        if (!queries.mayThrow(expression)) {
+        boolean guarded = queries.mayThrow(expression);
+        CaseWriter.Point skipped = cases.point();
+        boolean skips = false;
+        for (ExpressionWriter.Suspension wait : waits) {
+            if (wait.start() != null && guarded) {
+                // Arguments evaluated before the call may throw: the rest of the statement is skipped.
+                cases.open("try {");
+                cases.line(wait.start());
+                cases.reopen("} catch (Exception thrown) {");
+                cases.line("ctx.uncaughtException(thrown); // the statement's call threw: uncaught_exception (MASL 8)");
+                cases.jump(skipped);
+                cases.close("}");
+                skips = true;
+            } else if (wait.start() != null) {
+                cases.line(wait.start());
+            }
+            cases.suspending("ctx.await(" + wait.future() + ")", cases.point());
+        }
+        if (!guarded) {
             before.forEach(cases::line);
             cases.line(java);
             return;
@@ -123,6 +186,9 @@ final class InstructionWriter {
         cases.reopen("} catch (Exception thrown) {");
         cases.line("ctx.uncaughtException(thrown); // the statement's call threw: uncaught_exception (MASL 8)");
         cases.close("}");
+        if (skips) {
+            cases.place(skipped, null);
+        }
     }
 
     /** {@code .sleep(ms)} (when the type keeps Default's) and {@code Thread.sleep(ms)}: a timed suspension. */
@@ -163,16 +229,25 @@ final class InstructionWriter {
 
     /** Entry members and accessor primitives take no time: no step boundary after them (MASL 5). */
     private boolean isZeroDuration(ExpressionContext expression) {
+        if (expressions.isAsynchronousLabelLaunch(expression) && !expressions.suspends(expression)) {
+            return true;
+        }
+        if (expression instanceof MASLParser.PrimaryExprContext primary
+                && primary.primary() instanceof MASLParser.PlainCallContext) {
+            return true;
+        }
         Member member = program.symbolOf(expression).orElse(null) instanceof Member m ? m : null;
         if (member == null) {
             return false;
         }
-        if (member.kind() == Member.Kind.ENTRY_MEMBER) {
+        if (member.kind() == Member.Kind.ENTRY_MEMBER || member.kind() == Member.Kind.LABEL_MEMBER) {
             return true;
         }
-        if (member.kind() == Member.Kind.PRIMITIVE) {
+        if (member.kind() == Member.Kind.PRIMITIVE && TreeQueries.isInternalCall(expression)) {
+            // Only an internal accessor call: an external invocation is always an instruction (contract §8.1).
             Primitive primitive = expressions.selfType().descriptor().findPrimitive(member.name()).orElse(null);
-            return primitive != null && primitive.accessor();
+            return primitive != null && primitive.accessor() && primitive.synchronous()
+                    && !expressions.suspends(expression);
         }
         return false;
     }
@@ -190,7 +265,7 @@ final class InstructionWriter {
             return block.block().statement().stream().allMatch(this::isZeroDuration);
         }
         if (statement instanceof MASLParser.IfStmtContext ifStmt) {
-            return isZeroDuration(ifStmt.thenStmt) && (ifStmt.elseStmt == null || isZeroDuration(ifStmt.elseStmt));
+            return !expressions.suspends(ifStmt.expression()) && isZeroDuration(ifStmt.thenStmt) && (ifStmt.elseStmt == null || isZeroDuration(ifStmt.elseStmt));
         }
         return false;
     }

@@ -4,8 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import masl.runtime.descriptor.Parameter;
-import masl.runtime.descriptor.Primitive;
+import masl.translator.analysis.AgentDecl;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.Block;
 import masl.translator.analysis.ImportedType;
@@ -48,9 +47,12 @@ final class ProgramClassWriter {
         out.add("import static " + packageName + "." + missionClass + ".*;");
         out.add("");
         out.add("import java.util.Objects;");
+        out.add("import java.util.concurrent.CompletableFuture;");
         out.add("import masl.runtime.AgentContext;");
+        out.add("import masl.runtime.AgentImplementation;");
         out.add("import masl.runtime.AgentProgram;");
         out.add("import masl.runtime.Event;");
+        out.add("import masl.runtime.Label;");
         out.add("import masl.runtime.Reaction;");
         out.add("");
         out.add("/**");
@@ -62,8 +64,18 @@ final class ProgramClassWriter {
         out.add("final class " + className + " extends AgentProgram {");
         out.add("");
         out.add("    private final " + implementation + " self;");
+        for (Map.Entry<AgentDecl, String> agent : expressions.agents().entrySet()) {
+            out.add("    private final " + agent.getKey().declaredType().descriptor().fullClassName() + " "
+                    + agent.getValue() + ";");
+        }
+        for (String label : expressions.localLabels().values()) {
+            out.add("    private Label " + label + ";");
+        }
         for (Map.Entry<Variable, String> local : expressions.locals().entrySet()) {
-            out.add("    private " + JavaTypes.name(local.getKey().type()) + " " + local.getValue() + ";");
+            Variable variable = local.getKey();
+            String fieldType = expressions.holdsFuture(variable)
+                    ? "CompletableFuture<" + JavaTypes.boxed(variable.type()) + ">" : JavaTypes.name(variable.type());
+            out.add("    private " + fieldType + " " + local.getValue() + ";");
         }
         for (Map.Entry<String, String> temporary : expressions.assignments().temporaries().entrySet()) {
             out.add("    private " + temporary.getValue() + " " + temporary.getKey() + ";");
@@ -75,8 +87,13 @@ final class ProgramClassWriter {
             }
         }
         out.add("");
-        out.add("    " + className + "(" + implementation + " self) {");
+        out.add("    /** @param agents the mission's agents, by proxy id (MASL 4). */");
+        out.add("    " + className + "(" + implementation + " self, AgentImplementation[] agents) {");
         out.add("        this.self = self;");
+        for (Map.Entry<AgentDecl, String> agent : expressions.agents().entrySet()) {
+            out.add("        this." + agent.getValue() + " = (" + agent.getKey().declaredType().descriptor().fullClassName()
+                    + ") agents[" + agent.getKey().proxyId() + "];");
+        }
         out.add("    }");
         out.add("");
         if (!statements.reactionPoints().isEmpty()) {
@@ -110,56 +127,11 @@ final class ProgramClassWriter {
             out.add("");
             out.addAll(DynamicMembers.helpers());
         }
-        for (Primitive primitive : expressions.throwingPrimitives().values()) {
+        for (List<String> helper : expressions.calls().helpers()) {
             out.add("");
-            out.addAll(wrapper(primitive));
+            out.addAll(helper);
         }
         out.add("}");
         return String.join("\n", out) + "\n";
-    }
-
-    /**
-     * A primitive declaring checked exceptions: an exception raises {@code uncaught_exception} in the
-     * caller and the call's value is the type's default (MASL 9); with no reaction, the occurrence is dropped.
-     */
-    private static List<String> wrapper(Primitive primitive) {
-        List<String> parameters = new ArrayList<>();
-        List<String> names = new ArrayList<>();
-        int i = 0;
-        for (Parameter parameter : primitive.parameters()) {
-            parameters.add(parameter.type() + " p" + i);
-            names.add("p" + i);
-            i++;
-        }
-        String returnType = primitive.returnType();
-        boolean isVoid = returnType.equals("void");
-        String call = "self." + primitive.name() + "(" + String.join(", ", names) + ");";
-        List<String> out = new ArrayList<>();
-        out.add("    /** " + primitive.signature() + ", whose exceptions become uncaught_exception (MASL 9). */");
-        out.add("    private " + returnType + " primitive$" + primitive.name() + "(" + String.join(", ",
-                concat("AgentContext ctx", parameters)) + ") {");
-        out.add("        try {");
-        out.add("            " + (isVoid ? call : "return " + call));
-        out.add("        } catch (Exception thrown) {");
-        out.add("            ctx.uncaughtException(thrown);");
-        out.add(isVoid ? "            return;" : "            return " + defaultOf(returnType) + ";");
-        out.add("        }");
-        out.add("    }");
-        return out;
-    }
-
-    private static List<String> concat(String first, List<String> rest) {
-        List<String> all = new ArrayList<>();
-        all.add(first);
-        all.addAll(rest);
-        return all;
-    }
-
-    private static String defaultOf(String javaType) {
-        return switch (javaType) {
-            case "boolean" -> "false";
-            case "byte", "short", "char", "int", "long", "float", "double" -> "(" + javaType + ") 0";
-            default -> "null";
-        };
     }
 }

@@ -163,9 +163,11 @@ final class StatementWriter {
         String definition = structure.block(block);
         boolean keeps = keptOnReelect.contains(block) && hasLocals(block);
         cases.place(test(block), at(tree) + ": " + JavaText.header(tree));
+        String test = expressions.condition(tree.test);
+        instructions.awaitResults();
         CaseWriter.Point body = cases.point();
         cases.setPc(body);
-        cases.open("switch (ctx.enter(" + definition + ", " + expressions.condition(tree.test) + ")) {");
+        cases.open("switch (ctx.enter(" + definition + ", " + test + ")) {");
         cases.jumpLine("case SKIPPED -> { " + (keeps ? "keep$" + block.name() + " = false; " : ""), after, " }");
         cases.line("case WAITING -> { return; }");
         cases.line("case ENTERED -> { }");
@@ -198,21 +200,23 @@ final class StatementWriter {
     }
 
     private void declarations(Block block, boolean keeps) {
-        for (MASLParser.BlockItemContext item : block.tree().blockItem()) {
-            if (item.declaration() instanceof MASLParser.LabelDeclContext label) {
-                unsupported.report(label, "a label declaration");
-            }
-        }
         List<Variable> variables = block.variables();
-        if (variables.isEmpty()) {
+        if (variables.isEmpty() && block.labels().isEmpty()) {
             return;
         }
-        cases.note(at(variables.get(0).initializer() != null ? variables.get(0).initializer()
+        cases.note(at(!variables.isEmpty() && variables.get(0).initializer() != null ? variables.get(0).initializer()
                 : block.tree()) + ": declarations of " + block.name());
+        for (masl.translator.analysis.Label label : block.labels()) {
+            // One label per member (LLabel) or per wave (SLabel, the first member of the wave makes it), MASL 10.
+            cases.line(label.sharing() == Sharing.SHARED
+                    ? "ctx.shared(" + structure.sharedLabel(label) + ").initialise(ctx::newLabel);"
+                    : expressions.localLabel(label) + " = ctx.newLabel();");
+        }
         for (Variable variable : variables) {
             if (variable.sharing() == Sharing.SHARED && variable.initializer() != null) {
-                cases.line("ctx.shared(" + structure.shared(variable) + ").initialise(() -> "
-                        + expressions.initializer(variable.type(), variable.initializer()) + ");");
+                String value = expressions.initializer(variable.type(), variable.initializer());
+                instructions.awaitResults();
+                cases.line("ctx.shared(" + structure.shared(variable) + ").initialise(() -> " + value + ");");
             }
         }
         if (keeps) {
@@ -220,8 +224,12 @@ final class StatementWriter {
         }
         for (Variable variable : variables) {
             if (variable.sharing() == Sharing.LOCAL) {
-                String value = variable.initializer() == null ? JavaTypes.defaultValue(variable.type())
-                        : expressions.initializer(variable.type(), variable.initializer());
+                String value = localInitialValue(variable);
+                if (keeps && variable.initializer() != null && expressions.suspends(variable.initializer())) {
+                    unsupported.report(variable.initializer(), "waiting for a result in the initialiser of a local"
+                            + " that a reelect keeps");
+                }
+                instructions.awaitResults();
                 cases.line(expressions.local(variable) + " = " + value + ";");
             }
         }
@@ -229,6 +237,18 @@ final class StatementWriter {
             cases.close("}");
             cases.line("keep$" + block.name() + " = false;");
         }
+    }
+
+    /** A local's initial value: its initialiser's, or the default value; a completed future for a future's holder. */
+    private String localInitialValue(Variable variable) {
+        if (expressions.holdsFuture(variable)) {
+            if (variable.initializer() != null && variable.initializer().expression() != null) {
+                return expressions.future(variable.type(), variable.initializer().expression());
+            }
+            return "CompletableFuture.completedFuture(" + JavaTypes.defaultValue(variable.type()) + ")";
+        }
+        return variable.initializer() == null ? JavaTypes.defaultValue(variable.type())
+                : expressions.initializer(variable.type(), variable.initializer());
     }
 
     // ------------------------------------------------------------------ statements
@@ -305,9 +325,10 @@ final class StatementWriter {
             instructions.emit(emit, emit.event, null);
         } else if (statement instanceof MASLParser.EmitWithMessageStmtContext emit) {
             instructions.emit(emit, emit.event, emit.message);
-        } else if (statement instanceof MASLParser.SetAcceptStateStmtContext
-                || statement instanceof MASLParser.WaitStmtContext) {
-            unsupported.report(statement, statement.getStart().getText() + " (permeability)");
+        } else if (statement instanceof MASLParser.SetAcceptStateStmtContext state) {
+            instructions.setAcceptState(state);
+        } else if (statement instanceof MASLParser.WaitStmtContext wait) {
+            instructions.waitFor(wait);
         } else {
             unsupported.report(statement, "this statement");
         }
@@ -340,6 +361,7 @@ final class StatementWriter {
     private void ifStatement(MASLParser.IfStmtContext ifStmt) {
         cases.note(at(ifStmt) + ": " + JavaText.header(ifStmt));
         String condition = expressions.condition(ifStmt.expression());
+        instructions.awaitResults();
         if (instructions.isZeroDuration(ifStmt)) {
             // Nothing in it can suspend: a plain Java if.
             cases.open("if (" + condition + ") {");
@@ -369,7 +391,9 @@ final class StatementWriter {
         CaseWriter.Point head = cases.point();
         CaseWriter.Point exit = cases.point();
         cases.place(head, at(loop) + ": " + JavaText.header(loop));
-        cases.jumpLine("if (!(" + expressions.condition(loop.expression()) + ")) { ", exit, " }");
+        String condition = expressions.condition(loop.expression());
+        instructions.awaitResults();
+        cases.jumpLine("if (!(" + condition + ")) { ", exit, " }");
         body(loop.statement(), exit);
         iteration(head, loops.isBusyWait(loop.expression(), loop.statement()));
         cases.place(exit, null);
@@ -384,7 +408,9 @@ final class StatementWriter {
         CaseWriter.Point exit = cases.point();
         cases.place(head, at(loop) + ": the test of " + JavaText.header(loop));
         if (loop.condition != null) {
-            cases.jumpLine("if (!(" + expressions.condition(loop.condition) + ")) { ", exit, " }");
+            String condition = expressions.condition(loop.condition);
+            instructions.awaitResults();
+            cases.jumpLine("if (!(" + condition + ")) { ", exit, " }");
         }
         body(loop.statement(), exit);
         if (loop.update != null) {

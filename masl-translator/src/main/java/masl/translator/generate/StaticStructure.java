@@ -26,6 +26,7 @@ final class StaticStructure {
     private final Map<ESequence, String> sequences = new IdentityHashMap<>();
     private final Map<Variable, String> shared = new IdentityHashMap<>();
     private final Map<EventDecl, String> events = new HashMap<>();
+    private final Map<masl.translator.analysis.Label, String> sharedLabels = new HashMap<>();
     private final Map<Reaction, String> reactions = new HashMap<>();
     private final List<String> declarations = new ArrayList<>();
 
@@ -62,6 +63,11 @@ final class StaticStructure {
         return shared.get(variable);
     }
 
+    /** The constant of an {@code SLabel}'s declaration: a shared variable holding the wave's label. */
+    String sharedLabel(masl.translator.analysis.Label label) {
+        return sharedLabels.get(label);
+    }
+
     /** The expression of an event: its constant, or {@code Event.TIMEOUT} and the like for a system event. */
     String event(EventDecl event) {
         if (event.isSystemEvent()) {
@@ -89,6 +95,14 @@ final class StaticStructure {
                 declarations.add("static final SharedDeclaration<" + JavaTypes.boxed(variable.type()) + "> " + name
                         + " = " + owner + ".declareShared(" + JavaText.quote(variable.name()) + ", "
                         + JavaTypes.defaultValue(variable.type()) + ");");
+            }
+        }
+        for (masl.translator.analysis.Label label : block.labels()) {
+            if (label.sharing() == Sharing.SHARED) {
+                String name = names.take(owner + "_" + JavaNames.constant(label.name()));
+                sharedLabels.put(label, name);
+                declarations.add("static final SharedDeclaration<Label> " + name + " = " + owner + ".declareShared("
+                        + JavaText.quote(label.name()) + ", null);");
             }
         }
         for (EventDecl event : block.events()) {

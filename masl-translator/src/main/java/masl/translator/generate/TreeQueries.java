@@ -2,6 +2,9 @@ package masl.translator.generate;
 
 import masl.grammar.MASLParser;
 import masl.runtime.descriptor.AgentType;
+import masl.runtime.descriptor.Primitive;
+import masl.translator.analysis.MaslType;
+import masl.translator.analysis.Symbol;
 import masl.grammar.MASLParser.ExpressionContext;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.ImportedType;
@@ -69,6 +72,63 @@ final class TreeQueries {
                 && primary.primary() instanceof MASLParser.ThisExprContext;
     }
 
+    /** The descriptor of an agent-typed value's static type: the root type's for "any agent"; null if not an agent. */
+    AgentType descriptorOf(MaslType type) {
+        if (!(type instanceof MaslType.AgentRef agent)) {
+            return null;
+        }
+        if (agent.type() == null) {
+            AgentType root = selfType.descriptor();
+            while (root.supertype() != null) {
+                root = root.supertype();
+            }
+            return root;
+        }
+        return agent.type().isLoaded() ? agent.type().descriptor() : null;
+    }
+
+    /** The primitive a call invokes, looked up in the callee's static type; null if it is no primitive call. */
+    Primitive invokedPrimitive(ParseTree tree) {
+        if (!(tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
+                && member.kind() == Member.Kind.PRIMITIVE)) {
+            return null;
+        }
+        AgentType callee = isInternalCall(node) ? selfType.descriptor()
+                : node instanceof MASLParser.MethodCallContext call ? descriptorOf(program.typeOf(call.expression()))
+                : null;
+        return callee == null ? null : callee.findPrimitive(member.name()).orElse(null);
+    }
+
+    /** A call of the current agent's primitive: {@code .m()} or {@code this.m()}. */
+    static boolean isInternalCall(ParserRuleContext node) {
+        return node instanceof MASLParser.PrimaryExprContext primary
+                && primary.primary() instanceof MASLParser.SelfInvocationContext
+                || node instanceof MASLParser.MethodCallContext call && isThis(call.expression());
+    }
+
+    /**
+     * Whether {@code tree} waits for a result (contract §3.11): it invokes another agent's
+     * primitive or an asynchronous one, or reads a variable holding a future.
+     */
+    boolean suspends(ParseTree tree, FutureVariables futures) {
+        if (tree instanceof ParserRuleContext node) {
+            Symbol symbol = program.symbolOf(node).orElse(null);
+            if (symbol instanceof Variable variable && futures.contains(variable)) {
+                return true;
+            }
+            Primitive primitive = invokedPrimitive(node);
+            if (primitive != null && (!primitive.synchronous() || !isInternalCall(node))) {
+                return true;
+            }
+        }
+        for (int i = 0; i < tree.getChildCount(); i++) {
+            if (suspends(tree.getChild(i), futures)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** Whether {@code tree} reads or writes {@code variable}. */
     boolean mentions(ParseTree tree, Variable variable) {
         if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) == variable) {
@@ -82,33 +142,20 @@ final class TreeQueries {
         return false;
     }
 
-    /** Whether {@code tree} calls Java code declaring checked exceptions (a primitive's are wrapped instead). */
     /**
-     * Whether {@code tree} calls code that may throw: a Java method or constructor, a member of an
-     * {@code Object}-typed value, or a primitive other than the root type's own (which never throw).
-     * A statement doing so catches the exception as {@code uncaught_exception} (MASL 8, 9).
+     * Whether {@code tree} calls Java code that may throw: a Java method or constructor, or a member
+     * of an {@code Object}-typed value. A statement doing so catches the exception as
+     * {@code uncaught_exception} (MASL 8, 9); a primitive's exception is the runtime's to catch.
      */
     boolean mayThrow(ParseTree tree) {
         if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
                 && (member.kind() == Member.Kind.JAVA_METHOD && member.javaMember() != null
-                || member.kind() == Member.Kind.DYNAMIC
-                || member.kind() == Member.Kind.PRIMITIVE && !isRootPrimitive(member.name()))) {
+                || member.kind() == Member.Kind.DYNAMIC)) {
             return true;
         }
         for (int i = 0; i < tree.getChildCount(); i++) {
             if (mayThrow(tree.getChild(i))) {
                 return true;
-            }
-        }
-        return false;
-    }
-
-    /** A primitive of the root type ({@code getProxyID}, {@code log}, …) that no type below redeclares. */
-    private boolean isRootPrimitive(String name) {
-        for (AgentType type = selfType.descriptor(); type != null; type = type.supertype()) {
-            boolean declared = type.declaredPrimitives().stream().anyMatch(p -> p.name().equals(name));
-            if (declared) {
-                return type.supertype() == null;
             }
         }
         return false;
