@@ -33,8 +33,25 @@ class AgentFailureTest {
                 "--agent-path", TEST_CLASSES, "--seed", "1");
         assertEquals(0, run.status(), run::toString);
         // Each agent reacts at the step boundary of the call, before the next instruction (lock-step).
-        assertEquals("uncaught java.lang.IllegalStateException\nuncaught java.lang.IllegalStateException\nr=7\nr=7\n",
+        assertEquals("uncaught java.lang.IllegalStateException\nuncaught java.lang.IllegalStateException\nr=0\nr=0\n",
                 run.out());
+    }
+
+    @Test
+    void aPrimitiveThatHangsPastTheCallTimeoutGivesTimeoutAndTheDefaultValueAndTheMissionGoesOn() {
+        MaslCommand run = MaslCommand.run("run", "src/test/resources/faults/hanging_primitive.masl",
+                "--agent-path", TEST_CLASSES, "--call-timeout", "100", "--seed", "1");
+        assertEquals(0, run.status(), run::toString);
+        // In lock-step: both agents' timeouts at the step boundary of each call, then the next instruction.
+        assertEquals("timeout hang\ntimeout hang\nafter hang r=0\nafter hang r=0\n"
+                + "timeout hang\ntimeout hang\nafter external hang r=0\nafter external hang r=0\n", run.out());
+    }
+
+    @Test
+    void aCallTimeoutIsAPositiveNumberOfMilliseconds() {
+        MaslCommand run = MaslCommand.run("run", "src/test/resources/faults/hanging_primitive.masl", "--call-timeout", "0");
+        assertEquals(64, run.status(), run::toString);
+        assertTrue(run.err().startsWith("masl: --call-timeout must be at least 1, got 0\n"), run::toString);
     }
 
     @Test

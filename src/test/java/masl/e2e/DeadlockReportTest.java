@@ -72,6 +72,8 @@ class DeadlockReportTest {
         assertEquals("deadlocked", end.get("status").asText());
         long lastChange = records.get(records.size() - 2).get("nanos").asLong();
         long duration = end.get("nanos").asLong() - records.get(0).get("nanos").asLong();
+        System.out.printf("%s: deadlock reported %d ms after the start, %d ms after the last change%n", program,
+                duration / 1_000_000, (end.get("nanos").asLong() - lastChange) / 1_000_000);
         assertTrue(duration < MISSION_BOUND_NANOS, "the mission took " + duration / 1_000_000 + " ms");
         assertTrue(end.get("nanos").asLong() - lastChange < DETECTION_BOUND_NANOS,
                 "the deadlock was reported " + (end.get("nanos").asLong() - lastChange) / 1_000_000 + " ms after the last change");
