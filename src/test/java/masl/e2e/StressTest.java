@@ -31,8 +31,8 @@ import org.junit.jupiter.api.io.TempDir;
  * and its child {@code inner} by {@code reelect} and {@code break(work)}, 5 emitters emit {@code tick}
  * to everyone, a keeper releases whoever waits at the locked entry barriers. The trace, checked as it
  * streams ({@link MembershipChecker}), must show no barrier trip missing a member and no member lost;
- * the mission must complete and leave no thread behind. {@code MASL_STRESS_SECONDS} (environment) or
- * {@code masl.stress.seconds} (system property) shortens the run for local work; CI runs 30 s.
+ * the mission must complete and leave no thread behind. The system property {@code masl.stress.seconds}
+ * ({@code gradle :test -PstressSeconds=5}) shortens the run for local work; CI runs 30 s.
  */
 class StressTest {
 
@@ -107,7 +107,6 @@ class StressTest {
     }
 
     private static int seconds() {
-        String local = System.getenv("MASL_STRESS_SECONDS");
-        return Integer.getInteger("masl.stress.seconds", local == null ? 30 : Integer.parseInt(local));
+        return Integer.getInteger("masl.stress.seconds", 30);
     }
 }
