@@ -54,11 +54,12 @@ class StressTest {
         Translation translation = new Translator(agentPath).translate(source);
         assertTrue(translation.succeeded(), () -> new DiagnosticPrinter(Map.of(source.name(), source.text()))
                 .report(translation.diagnostics().sorted()));
+        MissionLoader compiled = MissionLoader.load(translation, agentPath);
         MembershipChecker trace = new MembershipChecker(Map.of("work", Set.of("work", "inner")));
         Set<Thread> threadsBefore = Set.copyOf(Thread.getAllStackTraces().keySet());
 
         System.setProperty(Stress.DEADLINE, String.valueOf(System.nanoTime() + Duration.ofSeconds(seconds).toNanos()));
-        MissionOutcome outcome = MissionLoader.load(translation, agentPath).newMission()
+        MissionOutcome outcome = compiled.newMission()
                 .trace(trace)
                 .build()
                 .run(Duration.ofSeconds(seconds + 120L));
