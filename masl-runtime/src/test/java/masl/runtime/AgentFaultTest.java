@@ -29,7 +29,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 class AgentFaultTest {
 
     private static final Duration CALL_TIMEOUT = Duration.ofMillis(50);
-    private static final int REPETITIONS = 5;
+    private static final int REPETITIONS = 10;
 
     /** A primitive that never returns by itself: it waits until its thread is interrupted. */
     private static final class Hang {
