@@ -7,14 +7,16 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import masl.jade.JadeException;
 import masl.jade.JadeOptions;
 import masl.jade.JadePlatform;
 import masl.jade.bench.AclPingPong;
+import masl.jade.bench.BridgePingPong;
 
 /**
  * {@code gradle bench}: runs MASL and its baselines side by side in one JVM and prints tables of
- * throughput with ratios against the baselines (issue 13). Every measurement is the best of
- * {@value #ROUNDS} rounds after one warm-up round, the runs of one row interleaved, so that a
+ * throughput with ratios against the baselines (issue 13). Every figure is the median of
+ * {@value #RUNS} runs after one warm-up run, the runs of one row interleaved, so that a
  * disturbance of the machine hits every column alike. Not a test: nothing is asserted.
  *
  * <p>Arguments: {@code --sizes 10,100,1000,10000} (agent counts), {@code --seconds S} (rough time
@@ -23,36 +25,159 @@ import masl.jade.bench.AclPingPong;
  */
 public final class Bench {
 
-    private static final int ROUNDS = 3;
+    /** Measurements per figure, after a warm-up: the figure is their median. */
+    static final int RUNS = 5;
+    private static final int TRANSLATION_WARM_UP = 10;
 
     public static void main(String[] args) throws Exception {
         Options options = Options.parse(args);
         System.out.printf(Locale.ROOT, "MASL benchmarks on %d cores, %s %s, max heap %d MiB%n%n",
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.vm.name"),
                 System.getProperty("java.version"), Runtime.getRuntime().maxMemory() >> 20);
-        lockStep(options);
-        invocations(options);
+        if (options.runs("lockstep")) {
+            lockStep(options);
+        }
+        if (options.runs("invocations")) {
+            invocations(options);
+        }
+        if (options.runs("joining")) {
+            joining();
+        }
+        if (options.runs("translation")) {
+            translation();
+        }
+        if (options.runs("simulation")) {
+            simulation();
+        }
     }
 
     /**
-     * The JADE baseline of the invocation benchmarks: ACL REQUEST/INFORM round trips in one
-     * container. MASL's in-process and bridged invocations join this table when external
-     * invocations are translated (issue 7).
+     * Synchronous round trips between agent pairs: MASL in-process against JADE's ACL ping-pong in
+     * one container (item 2), and JADE pingers invoking MASL agents through the bridge against the
+     * same raw JADE figure (item 3, as a ratio of round-trip times).
      */
     private static void invocations(Options options) throws Exception {
-        System.out.println("2. Invocations: synchronous round trips per second between agent pairs");
-        System.out.printf(Locale.ROOT, "%8s | %20s | %20s%n", "pairs", "JADE ACL ping-pong", "MASL in-process");
+        System.out.println("2. Invocations: synchronous round trips per second between agent pairs (median of " + RUNS + ")");
+        System.out.println("3. Bridge: JADE pingers invoking MASL agents through --platform jade, against raw JADE");
+        System.out.printf(Locale.ROOT, "%6s | %14s | %14s | %10s | %14s | %18s%n", "pairs", "JADE ACL",
+                "MASL in-proc", "MASL/JADE", "JADE->bridge", "bridge/JADE time");
         Duration window = Duration.ofMillis((long) (options.seconds * 1000));
-        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
+        Duration warmUp = window.dividedBy(2);
+        JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer());
+        try {
             for (int pairs : new int[] {1, 10}) {
-                double best = 0;
-                for (int round = 0; round < ROUNDS; round++) {
-                    best = Math.max(best, AclPingPong.measure(platform, pairs, window.dividedBy(2), window).roundTripsPerSecond());
-                }
-                System.out.printf(Locale.ROOT, "%8d | %20s | %20s%n", pairs, rate(best), "not translated yet");
+                Map<String, double[]> runs = interleaved(RUNS, List.of(
+                        new Measure("jade", () -> AclPingPong.measure(platform, pairs, warmUp, window).roundTripsPerSecond()),
+                        new Measure("masl", MaslPingPong.prepare(pairs, (int) (options.seconds * 400_000 / pairs))),
+                        new Measure("bridge", () -> BridgePingPong.measure(platform, pairs, warmUp, window).roundTripsPerSecond())));
+                double jade = median(runs.get("jade"));
+                double masl = median(runs.get("masl"));
+                double bridge = median(runs.get("bridge"));
+                System.out.printf(Locale.ROOT, "%6d | %14s | %14s | %10s | %14s | %18s%n", pairs, rate(jade),
+                        rate(masl), ratio(masl, jade), rate(bridge), ratio(jade, bridge));
+            }
+        } finally {
+            closeQuietly(platform);
+        }
+        System.out.println("   (goals: MASL/JADE >= 3x; bridge/JADE round-trip time <= 1.2x)");
+        System.out.println();
+    }
+
+    /** Item 4: N agents entering a synchronous block and passing its entry barrier. */
+    private static void joining() throws Exception {
+        System.out.println("4. Joining: time for N agents to enter a synchronous block and pass its entry barrier (median of " + RUNS + ")");
+        System.out.printf(Locale.ROOT, "%8s | %14s | %14s%n", "N", "MASL", "goal");
+        int agents = 1_000;
+        Map<String, double[]> figures = interleaved(RUNS, List.of(new Measure("masl", () -> MaslJoining.prepare(agents).call())));
+        System.out.printf(Locale.ROOT, "%8d | %12.3f s | %12s%n%n", agents, median(figures.get("masl")), "<= 0.1 s");
+    }
+
+    /**
+     * Item 5: MASL source to Java source, javac left out. The first translation of a fresh JVM pays
+     * for loading and compiling the translator: this table shows the first, then the median of
+     * {@value #RUNS} after {@value #TRANSLATION_WARM_UP} more, as a build daemon or plug-in sees it.
+     */
+    private static void translation() throws Exception {
+        System.out.println("5. Translation: MASL lines per second, source to Java source (javac excluded), generated 10,000-line program");
+        System.out.println("   per second of elapsed time and of the translating thread's CPU time (what other jobs on the machine do not change)");
+        System.out.printf(Locale.ROOT, "%26s | %14s | %14s | %12s%n", "", "elapsed", "thread CPU", "goal");
+        int lines = 10_000;
+        Callable<Double> elapsed = MaslTranslation.prepare(lines, false);
+        Callable<Double> cpu = MaslTranslation.prepare(lines, true);
+        System.out.printf(Locale.ROOT, "%26s | %14s | %14s | %12s%n", "first in this JVM (cpu)", "-", rate(cpu.call()), "");
+        for (int i = 0; i < TRANSLATION_WARM_UP; i++) {
+            elapsed.call();
+        }
+        Map<String, double[]> figures = interleaved(RUNS, List.of(new Measure("elapsed", elapsed), new Measure("cpu", cpu)));
+        System.out.printf(Locale.ROOT, "%26s | %14s | %14s | %12s%n%n", "warm, median of " + RUNS,
+                rate(median(figures.get("elapsed"))), rate(median(figures.get("cpu"))), ">= 50,000");
+    }
+
+    /** Item 6: robots driven by MASL against a bare ode4j loop over the same bodies. */
+    private static void simulation() throws Exception {
+        System.out.println("6. Simulation: " + MaslSimulation.ROBOTS + " wheeled robots, step 0.01 s, lock-step, simulated seconds "
+                + "per second of elapsed time and of process CPU time (median of " + RUNS + ")");
+        System.out.printf(Locale.ROOT, "%8s | %14s | %14s | %12s | %14s | %14s | %12s%n", "robots", "MASL", "bare ode4j",
+                "MASL/bare", "MASL (cpu)", "bare (cpu)", "MASL/bare");
+        MaslSimulation simulation = MaslSimulation.prepare();
+        // ode4j's code is still being compiled after one run of each: the first runs would measure the JIT.
+        Map<String, double[]> figures = interleaved(3, RUNS, List.of(new Measure("masl", simulation.masl(false)),
+                new Measure("bare", simulation.bare(false)), new Measure("masl-cpu", simulation.masl(true)),
+                new Measure("bare-cpu", simulation.bare(true))));
+        double masl = median(figures.get("masl"));
+        double bare = median(figures.get("bare"));
+        double maslCpu = median(figures.get("masl-cpu"));
+        double bareCpu = median(figures.get("bare-cpu"));
+        System.out.printf(Locale.ROOT, "%8d | %14.2f | %14.2f | %12s | %14.2f | %14.2f | %12s%n", MaslSimulation.ROBOTS,
+                masl, bare, ratio(masl, bare), maslCpu, bareCpu, ratio(maslCpu, bareCpu));
+        System.out.println("   (goal: MASL/bare >= 0.8x)");
+        System.out.println();
+    }
+
+    /** JADE 4.3 sometimes fails to shut its platform down: the figures are printed by then, and the other benchmarks still run. */
+    private static void closeQuietly(JadePlatform platform) {
+        try {
+            platform.close();
+        } catch (JadeException e) {
+            System.out.println("   (JADE did not shut down cleanly: " + e.getMessage() + ")");
+        }
+    }
+
+    /** One kind of measurement of a row. */
+    private record Measure(String name, Callable<Double> run) { }
+
+    /**
+     * Runs every measure once as a warm-up, then {@code runs} rounds of all of them in turn, so that a
+     * disturbance of the machine hits every column alike; the figures of each measure by name.
+     */
+    private static Map<String, double[]> interleaved(int runs, List<Measure> measures) throws Exception {
+        return interleaved(1, runs, measures);
+    }
+
+    /** As {@link #interleaved(int, List)} after {@code warmUps} rounds of warm-up. */
+    private static Map<String, double[]> interleaved(int warmUps, int runs, List<Measure> measures) throws Exception {
+        for (int round = 0; round < warmUps; round++) {
+            for (Measure measure : measures) {
+                measure.run().call();
             }
         }
-        System.out.println();
+        Map<String, double[]> figures = new LinkedHashMap<>();
+        for (Measure measure : measures) {
+            figures.put(measure.name(), new double[runs]);
+        }
+        for (int round = 0; round < runs; round++) {
+            for (Measure measure : measures) {
+                figures.get(measure.name())[round] = measure.run().call();
+            }
+        }
+        return figures;
+    }
+
+    static double median(double[] figures) {
+        double[] sorted = figures.clone();
+        java.util.Arrays.sort(sorted);
+        int middle = sorted.length / 2;
+        return sorted.length % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2;
     }
 
     private static void lockStep(Options options) throws Exception {
@@ -60,32 +185,29 @@ public final class Bench {
         LockStepRun pool = new TaskPoolWaves();
         LockStepRun threads = new PhaserThreads();
         System.out.println("1. Lock-step: N agents in one synchronous block, steps per second (one barrier trip = one step),");
-        System.out.println("   timed from the end of the first step to the end of the last (start-up left out)");
+        System.out.println("   timed from the end of the first step to the end of the last (start-up left out), median of " + RUNS);
         System.out.printf(Locale.ROOT, "%8s | %14s | %14s | %14s | %12s | %12s%n",
                 "N", "MASL (pool)", pool.name().replace("Java tasks, ", ""), "threads+Phaser", "MASL/pool", "MASL/threads");
         for (int agents : options.sizes) {
             int steps = stepsFor(agents, options.seconds);
-            Map<LockStepRun, Double> best = new LinkedHashMap<>();
             List<LockStepRun> runs = new ArrayList<>(List.of(masl, pool));
             if (agents <= options.threadLimit) {
                 runs.add(threads);
             }
+            List<Measure> measures = new ArrayList<>();
             for (LockStepRun run : runs) {
-                run.prepare(agents, Math.max(2, steps / 10)).call();
+                // Translating and compiling MASL's program is left out of the timing: prepare() does it.
+                measures.add(new Measure(run.name(), () -> run.prepare(agents, steps).call()));
             }
-            for (int round = 0; round < ROUNDS; round++) {
-                for (LockStepRun run : runs) {
-                    Callable<Double> prepared = run.prepare(agents, steps);
-                    best.merge(run, prepared.call(), Math::max);
-                }
-            }
-            Double maslRate = best.get(masl);
-            Double poolRate = best.get(pool);
-            Double threadRate = best.get(threads);
+            Map<String, double[]> figures = interleaved(RUNS, measures);
+            Double maslRate = median(figures.get(masl.name()));
+            Double poolRate = median(figures.get(pool.name()));
+            Double threadRate = figures.containsKey(threads.name()) ? median(figures.get(threads.name())) : null;
             System.out.printf(Locale.ROOT, "%8d | %14s | %14s | %14s | %12s | %12s%n", agents,
                     rate(maslRate), rate(poolRate), rate(threadRate), ratio(maslRate, poolRate), ratio(maslRate, threadRate));
         }
-        System.out.printf(Locale.ROOT, "   (threads+Phaser not run above N=%d: one platform thread per agent)%n%n", options.threadLimit);
+        System.out.printf(Locale.ROOT, "   (threads+Phaser not run above N=%d: one platform thread per agent; goal: MASL/pool >= 0.5x at N=1000)%n%n",
+                options.threadLimit);
     }
 
     /** Enough steps for about {@code seconds} at the rates seen on a 2-core machine. */
@@ -101,20 +223,27 @@ public final class Bench {
         return value == null || baseline == null ? "-" : String.format(Locale.ROOT, "%.2fx", value / baseline);
     }
 
-    private record Options(List<Integer> sizes, double seconds, int threadLimit) {
+    private record Options(List<Integer> sizes, double seconds, int threadLimit, List<String> only) {
+
+        boolean runs(String benchmark) {
+            return only.isEmpty() || only.contains(benchmark);
+        }
+
         static Options parse(String[] args) {
             List<Integer> sizes = List.of(10, 100, 1_000, 10_000);
             double seconds = 1;
             int threadLimit = 1_000;
+            List<String> only = List.of();
             for (int i = 0; i + 1 < args.length; i += 2) {
                 switch (args[i]) {
                     case "--sizes" -> sizes = java.util.Arrays.stream(args[i + 1].split(",")).map(Integer::valueOf).toList();
                     case "--seconds" -> seconds = Double.parseDouble(args[i + 1]);
                     case "--thread-limit" -> threadLimit = Integer.parseInt(args[i + 1]);
+                    case "--only" -> only = List.of(args[i + 1].split(","));
                     default -> throw new IllegalArgumentException("unknown option " + args[i]);
                 }
             }
-            return new Options(sizes, seconds, threadLimit);
+            return new Options(sizes, seconds, threadLimit, only);
         }
     }
 }

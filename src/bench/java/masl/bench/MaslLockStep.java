@@ -58,7 +58,7 @@ final class MaslLockStep implements LockStepRun {
                 """.formatted(names, steps);
     }
 
-    private static MissionLoader compile(String source) {
+    static MissionLoader compile(String source) {
         AgentPath shippedAgentsOnly = AgentPath.parse("");
         Translation translation = new Translator(shippedAgentsOnly).translate(SourceFile.of("lockstep.masl", source));
         if (!translation.succeeded()) {

@@ -39,7 +39,7 @@ class AgentApiTest {
     void externalSynchronousCallsAndFuturesGiveTheirResults(Schedule schedule) {
         everyRun(schedule, "calls", """
                 Worker a, b = newAgent(Worker);
-                asynchronous entry main (true) {
+                synchronous entry main (true) {
                   scalar entry ask (true) {
                     local int two = b.twice(20 + 1);
                     local int f = a.slow(5);
@@ -250,6 +250,36 @@ class AgentApiTest {
                   }
                 }
                 """, run -> run.assertJournal("0 false\n1 false\n2 false\nra=10 rb=20 c=30\n"));
+    }
+
+    @ParameterizedTest
+    @MethodSource("schedules")
+    void aSharedLabelCollectsTheWholeWavesInvocations(Schedule schedule) {
+        everyRun(schedule, "slabel", """
+                Worker a, b, c = newAgent(Worker);
+                synchronous entry main (true) {
+                  SLabel s;
+                  local int mine = 0;
+                  s.this.battery = .twice(.getProxyID());
+                  s.mine = .slow(.getProxyID() + 1);
+                  .open(this);
+                  while (!s.isFinished()) {}
+                  .logln(.getProxyID() + ": " + .battery + " " + mine);
+                }
+                """, run -> run.assertLinesInAnyOrder("0: 0 10", "1: 2 20", "2: 4 30"));
+    }
+
+    @ParameterizedTest
+    @MethodSource("schedules")
+    void aCallTheReceiversTypeLacksIsANopForIt(Schedule schedule) {
+        everyRun(schedule, "polymorphic", """
+                import workers/Scout.xml;
+                Worker w = newAgent(Worker);
+                Worker s = newAgent(Scout);
+                synchronous entry main (true) {
+                  scalar entry ask (true) { .logln("w=" + w.scan() + " s=" + s.scan()); }
+                }
+                """, run -> run.assertJournal("w=0 s=7\n"));
     }
 
     private static void everyRun(Schedule schedule, String name, String program, Consumer<MissionRun> property) {

@@ -17,7 +17,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * The worked examples of examples.md (E1, E2, E3, E6, E7, E8) run from their MASL sources inside
+ * The worked examples of examples.md (E1 to E8) run from their MASL sources inside
  * JADE, as a user runs them: {@code masl run FILE --platform jade}, joining a main container this
  * class starts once (JADE keeps a platform at least 3 s; and JADE's runtime, one per JVM, does not
  * shut a second main container down cleanly). The command's own platform, its default, is tested in
@@ -52,6 +52,21 @@ class JadeExamplesTest {
     @Test
     void e3AsynchronousChildIsOneInstructionOfItsSynchronousParent() {
         assertEquals("xxxxxxyyyy\n", maslJoined("e3_asynchronous_child.masl"));
+    }
+
+    /** E4: four {@code heard now} (the first line), one line per worker after a {@code heard now}. */
+    @Test
+    void e4EventsAreReactedToInTheParentAndResume() {
+        String journal = maslJoined("e4_events.masl");
+        List<String> lines = journal.lines().toList();
+        assertEquals(List.of("heard now", "heard now", "heard now", "heard now", "worker 1", "worker 2", "worker 3"),
+                sorted(journal));
+        assertEquals("heard now", lines.get(0));
+    }
+
+    @Test
+    void e5DeniedInvocationBecomesTimeoutBeforeTheResultIsLogged() {
+        assertEquals("timeout\nseen=0\n", maslJoined("e5_permeability.masl"));
     }
 
     @Test

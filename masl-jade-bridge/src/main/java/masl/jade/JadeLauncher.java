@@ -1,10 +1,12 @@
 package masl.jade;
 
+import jade.core.Agent;
 import jade.wrapper.AgentController;
 import jade.wrapper.StaleProxyException;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -43,10 +45,10 @@ public final class JadeLauncher {
     private final MissionProgram program;
     private Function<AgentSpec, AgentType> types;
     private MissionProgram.ImplementationFactory implementations = JadeLauncher::newImplementation;
-    private AcceptPolicy acceptPolicy = AcceptPolicy.INITIAL_STATE;
     private Appendable journal;
     private Trace trace = Trace.NONE;
     private Consumer<Mission> whenReady = mission -> { };
+    private Map<String, String> placement = Map.of();
 
     private JadeLauncher(MissionProgram program) {
         this.program = Objects.requireNonNull(program, "program");
@@ -68,12 +70,6 @@ public final class JadeLauncher {
         return this;
     }
 
-    /** Whether FIPA agents may invoke a primitive; {@link AcceptPolicy#INITIAL_STATE} by default. */
-    public JadeLauncher acceptPolicy(AcceptPolicy policy) {
-        this.acceptPolicy = Objects.requireNonNull(policy, "policy");
-        return this;
-    }
-
     /** Where the journal is written as it grows (besides the outcome's journal). */
     public JadeLauncher journal(Appendable sink) {
         this.journal = sink;
@@ -82,6 +78,18 @@ public final class JadeLauncher {
 
     public JadeLauncher trace(Trace missionTrace) {
         this.trace = Objects.requireNonNull(missionTrace, "missionTrace");
+        return this;
+    }
+
+    /**
+     * Places agents in other containers, by name: {@code {"w1": "c2"}} runs the body of {@code w1}
+     * (its implementation, whose primitives run there) in container {@code c2}, which joined the
+     * platform as a {@link MaslContainer}; its program runs here, in the coordinator's JVM, with
+     * every other agent's. Agents not named stay in this container. Empty by default: the whole
+     * mission in one container.
+     */
+    public JadeLauncher place(Map<String, String> containerOfAgent) {
+        this.placement = Map.copyOf(containerOfAgent);
         return this;
     }
 
@@ -120,15 +128,51 @@ public final class JadeLauncher {
             throw new IllegalStateException("agent types not given: call types(…) first");
         }
         List<AgentSpec> specs = program.agents();
+        List<String> names = specs.stream().map(AgentSpec::name).toList();
+        for (String placed : placement.keySet()) {
+            if (!names.contains(placed)) {
+                throw new IllegalArgumentException("cannot place " + placed + ": the program declares no agent of"
+                        + " that name (it declares " + String.join(", ", names) + ")");
+            }
+        }
+        Distribution distribution = placement.isEmpty() ? null
+                : new Distribution(platform, placement, AGENTS_TIMEOUT);
+        List<AgentController> controllers = new ArrayList<>();
+        List<MaslJadeAgent> locals = new ArrayList<>();
+        try {
+            return run(platform, timeout, specs, names, distribution, controllers, locals);
+        } catch (StaleProxyException e) {
+            throw new JadeException("the JADE container ended before the mission", e);
+        } finally {
+            try {
+                if (distribution != null) {
+                    distribution.end();
+                }
+            } finally {
+                delete(controllers, locals);
+            }
+        }
+    }
+
+    private MissionOutcome run(JadePlatform platform, Duration timeout, List<AgentSpec> specs, List<String> names,
+            Distribution distribution, List<AgentController> controllers, List<MaslJadeAgent> locals)
+            throws InterruptedException, StaleProxyException {
         List<AgentImplementation> created = new ArrayList<>();
         ThreadedBehaviourScheduler scheduler = new ThreadedBehaviourScheduler();
         // FIPA agents may invoke primitives at any time: a busy-wait may end on a request.
-        Mission.Builder builder = Mission.builder().scheduler(scheduler).trace(trace).openToOutsideInvocations();
+        Mission.Builder builder = Mission.builder().scheduler(scheduler).openToOutsideInvocations()
+                .trace(distribution == null ? trace : distribution.sendingEvents(trace, names));
         if (journal != null) {
             builder.journal(journal);
         }
         program.configure(builder, spec -> {
             AgentImplementation implementation = implementations.create(spec);
+            String container = distribution == null ? null : distribution.containerOf(spec.name());
+            if (container != null) {
+                // Its body lives in that container; here, a stub whose primitives are requests to it.
+                implementation = distribution.stub(created.size(), spec.name(), container, types.apply(spec),
+                        implementation.getClass());
+            }
             created.add(implementation);
             return implementation;
         });
@@ -141,38 +185,38 @@ public final class JadeLauncher {
         for (int id = 0; id < specs.size(); id++) {
             tables.add(new PrimitiveTable(types.apply(specs.get(id)), created.get(id).getClass()));
         }
-        CountDownLatch ready = new CountDownLatch(specs.size());
-        List<MaslJadeAgent> hosts = new ArrayList<>();
-        List<AgentController> controllers = new ArrayList<>();
-        try {
-            for (int id = 0; id < specs.size(); id++) {
-                MaslJadeAgent host = new MaslJadeAgent(id, created.get(id), tables.get(id), acceptPolicy, mission,
-                        ready);
-                controllers.add(create(platform, specs.get(id).name(), host));
-                hosts.add(host);
+        List<Agent> hosts = new ArrayList<>();
+        CountDownLatch ready = new CountDownLatch(specs.size() - placement.size());
+        for (int id = 0; id < specs.size(); id++) {
+            if (placement.containsKey(names.get(id))) {
+                hosts.add(distribution.coordinator()); // runs the program; the body is elsewhere
+                continue;
             }
-            for (AgentController controller : controllers) {
-                controller.start();
-            }
-            // Agents that message others right after start() can stall JADE (platform-notes.md):
-            // the mission starts only once every agent exists and is registered.
-            if (!ready.await(AGENTS_TIMEOUT.toMillis(), TimeUnit.MILLISECONDS)) {
-                throw new JadeException("the JADE agents of the mission did not start within " + AGENTS_TIMEOUT);
-            }
-            for (MaslJadeAgent host : hosts) {
-                if (host.registrationFailure() != null) {
-                    throw new JadeException("the DF refused to register " + host.getLocalName() + ": "
-                            + host.registrationFailure().getMessage(), host.registrationFailure());
-                }
-            }
-            scheduler.attach(hosts);
-            whenReady.accept(mission);
-            return mission.run(timeout);
-        } catch (StaleProxyException e) {
-            throw new JadeException("the JADE container ended before the mission", e);
-        } finally {
-            delete(controllers, hosts);
+            MaslJadeAgent host = new MaslJadeAgent(id, created.get(id), tables.get(id), mission, ready);
+            controllers.add(create(platform, names.get(id), host));
+            locals.add(host);
+            hosts.add(host);
         }
+        for (AgentController controller : controllers) {
+            controller.start();
+        }
+        // Agents that message others right after start() can stall JADE (platform-notes.md):
+        // the mission starts only once every agent exists and is registered.
+        if (!ready.await(AGENTS_TIMEOUT.toMillis(), TimeUnit.MILLISECONDS)) {
+            throw new JadeException("the JADE agents of the mission did not start within " + AGENTS_TIMEOUT);
+        }
+        for (MaslJadeAgent host : locals) {
+            if (host.registrationFailure() != null) {
+                throw new JadeException("the DF refused to register " + host.getLocalName() + ": "
+                        + host.registrationFailure().getMessage(), host.registrationFailure());
+            }
+        }
+        if (distribution != null) {
+            distribution.place(mission, names, tables, created);
+        }
+        scheduler.attach(hosts);
+        whenReady.accept(mission);
+        return mission.run(timeout);
     }
 
     private static AgentController create(JadePlatform platform, String name, MaslJadeAgent host) {

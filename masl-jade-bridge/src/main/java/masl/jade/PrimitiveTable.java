@@ -71,6 +71,11 @@ final class PrimitiveTable {
         return primitives.values().stream().map(Binding::primitive).toList();
     }
 
+    /** The methods bound to the primitives, in the order of {@link #primitives()}. */
+    List<Method> methods() {
+        return primitives.values().stream().map(Binding::method).toList();
+    }
+
     /**
      * Binds a request: finds its primitive, checks the number of arguments and converts each to
      * its parameter's type.

@@ -1,5 +1,6 @@
 package masl.jade;
 
+import jade.core.Agent;
 import jade.core.behaviours.Behaviour;
 import jade.core.behaviours.ThreadedBehaviourFactory;
 import java.util.List;
@@ -19,7 +20,7 @@ final class ThreadedBehaviourScheduler implements Scheduler {
 
     private static final long JOIN_MILLIS = 10_000;
 
-    private List<MaslJadeAgent> hosts = List.of();
+    private List<? extends Agent> hosts = List.of();
     private final ThreadedBehaviourFactory threads = new ThreadedBehaviourFactory();
     private final ScheduledThreadPoolExecutor timer;
     /** One permit per pending slice, indexed by agent id. */
@@ -35,8 +36,11 @@ final class ThreadedBehaviourScheduler implements Scheduler {
         timer.setRemoveOnCancelPolicy(true);
     }
 
-    /** The JADE agent of each MASL agent, indexed by proxy id, all started: before {@link #start}. */
-    synchronized void attach(List<MaslJadeAgent> agents) {
+    /**
+     * The JADE agent hosting each MASL agent's program, indexed by proxy id, all started: before
+     * {@link #start}. The coordinator hosts the programs of the agents placed in other containers.
+     */
+    synchronized void attach(List<? extends Agent> agents) {
         hosts = List.copyOf(agents);
     }
 
@@ -53,7 +57,7 @@ final class ThreadedBehaviourScheduler implements Scheduler {
         }
         for (AgentTask agent : agents) {
             drivers[agent.id()] = new Driver(agent, runnable[agent.id()]);
-            hosts.get(agent.id()).host(threads.wrap(drivers[agent.id()]));
+            hosts.get(agent.id()).addBehaviour(threads.wrap(drivers[agent.id()]));
         }
     }
 

@@ -15,12 +15,11 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.atomic.AtomicReference;
+import java.util.concurrent.TimeUnit;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.Reply;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
-import masl.runtime.descriptor.PermeabilityState;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -41,9 +40,6 @@ class FipaRequestTest {
     /** The MASL agent; an AID by local name needs the platform's name, so it is made after the start. */
     private static AID b;
     private static int conversations;
-
-    /** The permeability state the policy reads: what the agent's program would have set. */
-    private final AtomicReference<String> acceptState = new AtomicReference<>("default");
 
     @BeforeAll
     static void startPlatform() throws Exception {
@@ -108,19 +104,43 @@ class FipaRequestTest {
         });
     }
 
+    /**
+     * The issue's check: {@code log} answers {@code INFORM}; once the agent's program has set a state
+     * denying others, the same request answers {@code REFUSE} and does not run; invalid JSON answers
+     * {@code NOT_UNDERSTOOD} whatever the state.
+     */
     @Test
-    void aStateDenyingOthersAnswersRefuseAndTheDeniedPrimitiveDoesNotRun() throws Exception {
-        MissionOutcome outcome = runWhile(() -> {
+    void afterTheAgentSetsAStateDenyingOthersTheSameRequestIsRefused() throws Exception {
+        TestPrograms.Signals signals = new TestPrograms.Signals();
+        MissionProgram program = TestPrograms.of(null,
+                List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
+                self -> new TestPrograms.ClosesWhenAsked(self, signals));
+        CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
+            try {
+                return JadeLauncher.of(program).types(TestPrograms::type).run(platform, TIMEOUT);
+            } catch (InterruptedException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        try {
+            awaitRegistered();
             assertEquals(ACLMessage.INFORM, invoke("log", List.of("before ")).getPerformative());
-            acceptState.set("nothing");
+            signals.closeRequested().complete(null);
+            signals.closed().get(20, TimeUnit.SECONDS);
             ACLMessage refused = invoke("log", List.of("denied "));
             assertEquals(ACLMessage.REFUSE, refused.getPerformative());
             assertEquals(new Reply.Refused("the permeability of b denies others invoking log"),
                     AclInvocations.readReply(refused));
-            acceptState.set("default");
-            assertEquals(ACLMessage.INFORM, invoke("log", List.of("after")).getPerformative());
-        });
-        assertEquals("before after", outcome.journal());
+            assertNotUnderstood("content:1:20: error: malformed JSON: Unexpected character ('}' (code 125)): "
+                    + "was expecting double-quote to start field name",
+                    raw(ACLMessage.REQUEST, "{\"primitive\":\"log\",}"));
+        } finally {
+            signals.closeRequested().complete(null);
+            signals.finishRequested().complete(null);
+        }
+        MissionOutcome outcome = mission.get();
+        assertTrue(outcome.completed(), outcome::toString);
+        assertEquals("before ", outcome.journal());
     }
 
     @Test
@@ -147,10 +167,10 @@ class FipaRequestTest {
     @Test
     void theAgentIsRegisteredWithTheDfWhileItsMissionRuns() throws Exception {
         runWhile(() -> {
-            assertEquals(List.of("b"), providers(MaslJadeAgent.PRIMITIVE_SERVICE, "divide"));
-            assertEquals(List.of("b"), providers(MaslJadeAgent.TYPE_SERVICE, "ServiceAgent"));
+            assertEquals(List.of("b"), providers(DfEntries.PRIMITIVE_SERVICE, "divide"));
+            assertEquals(List.of("b"), providers(DfEntries.TYPE_SERVICE, "ServiceAgent"));
         });
-        assertEquals(List.of(), providers(MaslJadeAgent.PRIMITIVE_SERVICE, "divide"), "deregistered at the end");
+        assertEquals(List.of(), providers(DfEntries.PRIMITIVE_SERVICE, "divide"), "deregistered at the end");
     }
 
     /** What the test does while the mission runs; may throw. */
@@ -167,11 +187,9 @@ class FipaRequestTest {
         MissionProgram program = TestPrograms.of(null,
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 TestPrograms.UntilReleased::new);
-        AcceptPolicy policy = (name, type, primitive) -> type.findState(acceptState.get()).orElseThrow()
-                .allows(primitive.memberId(), PermeabilityState.Requester.OTHER, PermeabilityState.INVOKE);
         CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
             try {
-                return JadeLauncher.of(program).types(TestPrograms::type).acceptPolicy(policy).run(platform, TIMEOUT);
+                return JadeLauncher.of(program).types(TestPrograms::type).run(platform, TIMEOUT);
             } catch (InterruptedException e) {
                 throw new IllegalStateException(e);
             }
@@ -180,7 +198,6 @@ class FipaRequestTest {
         try {
             exchange.run();
         } finally {
-            acceptState.set("default");
             invoke("release", List.of());
         }
         MissionOutcome outcome = mission.get();
@@ -194,7 +211,7 @@ class FipaRequestTest {
      */
     private static void awaitRegistered() throws Exception {
         DFAgentDescription[] found = DFService.searchUntilFound(probe, probe.getDefaultDF(),
-                template(MaslJadeAgent.PRIMITIVE_SERVICE, "release"), null, 20_000);
+                template(DfEntries.PRIMITIVE_SERVICE, "release"), null, 20_000);
         assertTrue(found != null && found.length == 1, "b registered with the DF within 20 s");
     }
 

@@ -3,6 +3,7 @@ package masl.jade;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import java.util.function.Function;
 import masl.runtime.AgentContext;
 import masl.runtime.AgentProgram;
@@ -49,7 +50,7 @@ public final class TestPrograms {
                 }
                 for (AgentSpec agent : agents) {
                     try {
-                        builder.agent(agent.name(), (TestAgent) implementations.create(agent), program);
+                        builder.agent(agent.name(), (TestAgent) implementations.create(agent), type(agent), program);
                     } catch (ReflectiveOperationException e) {
                         throw new IllegalStateException("cannot create agent " + agent.name(), e);
                     }
@@ -84,6 +85,56 @@ public final class TestPrograms {
                         if (!ctx.await(((ServiceAgent) self).released())) return;
                         continue;
                     case 1:
+                        ctx.finish();
+                        return;
+                    default:
+                        throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    /** What a test and {@link ClosesWhenAsked} tell each other, in the coordinator's JVM. */
+    public record Signals(CompletableFuture<Void> closeRequested, CompletableFuture<Void> closed,
+            CompletableFuture<Void> finishRequested) {
+        public Signals() {
+            this(new CompletableFuture<>(), new CompletableFuture<>(), new CompletableFuture<>());
+        }
+    }
+
+    /**
+     * Java-driven: once the test asks ({@link Signals#closeRequested}), sets the state
+     * {@code nothing}, which denies others every primitive, tells the test ({@link Signals#closed}),
+     * and finishes when the test says ({@link Signals#finishRequested}); blocked meanwhile, so
+     * requests are served on its behalf at once, filtered by its state.
+     */
+    public static final class ClosesWhenAsked extends CompactProgram {
+        private final Signals signals;
+
+        public ClosesWhenAsked(TestAgent self, Signals signals) {
+            super(self);
+            this.signals = signals;
+        }
+
+        @Override
+        protected void resume(AgentContext ctx) {
+            while (true) {
+                switch (pc) {
+                    case 0:
+                        pc = 1;
+                        if (!ctx.await(signals.closeRequested())) return;
+                        continue;
+                    case 1:
+                        ctx.setAcceptState("nothing");
+                        pc = 2;
+                        if (!ctx.stepBoundary()) return;
+                        continue;
+                    case 2:
+                        signals.closed().complete(null);
+                        pc = 3;
+                        if (!ctx.await(signals.finishRequested())) return;
+                        continue;
+                    case 3:
                         ctx.finish();
                         return;
                     default:

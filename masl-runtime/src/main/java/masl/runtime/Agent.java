@@ -274,28 +274,42 @@ final class Agent implements AgentContext, AgentTask {
 
     /** Ends the park that issued {@code ticket}; ignored if that park already ended. */
     void unpark(long ticket) {
-        if (ticket == 0 || !wakeTicket.compareAndSet(ticket, 0)) {
-            return;
+        if (endPark(ticket)) {
+            // Counted before the agent leaves PARKED, for the deadlock watchdog (Mission).
+            mission.countSchedule();
+            if (leavePark()) {
+                mission.scheduler().schedule(this);
+            }
         }
+    }
+
+    /**
+     * Claims the end of the park that issued {@code ticket}, as the first half of {@link #unpark}:
+     * false if that park already ended. The claimant must then call {@link #leavePark()}.
+     */
+    boolean endPark(long ticket) {
+        return ticket != 0 && wakeTicket.compareAndSet(ticket, 0);
+    }
+
+    /**
+     * The second half of an unpark whose {@link #endPark} succeeded, after the watchdog's count:
+     * true if the agent went {@code PARKED → SCHEDULED} and the caller must hand it to the
+     * scheduler; false if its slice (running or serving) notes the wake-up and reschedules it.
+     */
+    boolean leavePark() {
         while (true) {
             int current = state.get();
-            if (current == PARKED) {
-                // Counted before the agent leaves PARKED, for the deadlock watchdog (Mission).
-                mission.countSchedule();
-                if (state.compareAndSet(PARKED, SCHEDULED)) {
-                    mission.scheduler().schedule(this);
-                    return;
-                }
-                continue;
+            if (current == PARKED && state.compareAndSet(PARKED, SCHEDULED)) {
+                return true;
             }
             if (current == RUNNING && state.compareAndSet(RUNNING, RUNNING_WOKEN)) {
-                return;
+                return false;
             }
             if (current == SERVING && state.compareAndSet(SERVING, SERVING_WOKEN)) {
-                return;
+                return false;
             }
             if (current == DONE) {
-                return;
+                return false;
             }
             if (current == SCHEDULED || current == RUNNING_WOKEN || current == SERVING_WOKEN) {
                 throw new IllegalStateException(describe() + " woken twice");
@@ -712,13 +726,17 @@ final class Agent implements AgentContext, AgentTask {
 
     /**
      * Runs primitive {@code primitive} for {@code requester}: an exception becomes its
-     * {@code uncaught_exception} (§9), running past the mission's call timeout its {@code timeout}.
+     * {@code uncaught_exception} (§9); a refusal by the agent's body, or running past the mission's
+     * call timeout, its {@code timeout}.
      */
     private static <T> T runFor(Agent requester, String primitive, Callable<T> call, T defaultValue) {
         try {
             return requester.mission.callPrimitive(call);
         } catch (Mission.PrimitiveTimedOut late) {
             requester.raise(Event.TIMEOUT, primitive);
+            return defaultValue;
+        } catch (InvocationRefusedException refused) {
+            requester.raise(Event.TIMEOUT, refused.primitive());
             return defaultValue;
         } catch (Exception thrown) {
             requester.raise(Event.UNCAUGHT_EXCEPTION, thrown.getClass().getName());
@@ -996,9 +1014,10 @@ final class Agent implements AgentContext, AgentTask {
     /** Whether {@code state} of this agent lets the invocation run, its requester's relation decided now (§11). */
     private boolean permits(PermeabilityState state, PendingInvocation invocation) {
         String primitive = invocation.primitive();
-        if (primitive == null) {
+        if (primitive == null || state == null) {
             return true;
         }
+        // The relation needs the coordinator's lock: decided only when a state's rights depend on it.
         return Permeability.allows(state, permeability.primitiveId(primitive),
                 relationOf(invocation.requester(), permeability.isStaticPrimitive(primitive)),
                 PermeabilityState.INVOKE);

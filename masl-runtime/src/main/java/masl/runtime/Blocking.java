@@ -6,7 +6,8 @@ import java.util.concurrent.ForkJoinPool;
 /**
  * Runs a call that really blocks its thread (a robot API, {@code Thread.sleep} inside a
  * primitive) so that the agents' pool stays live: on a {@link ForkJoinPool} worker the pool adds
- * a compensating worker for the duration of the call ({@link ForkJoinPool#managedBlock}); on any
+ * a compensating worker for the duration of the call ({@link ForkJoinPool#managedBlock}), and a
+ * {@link PoolScheduler} lets another of its runners use it; on any
  * other thread the call simply runs. Primitives implemented in Java use it for their blocking
  * parts; statements the translator can see ({@code .sleep(ms)}) suspend instead, see
  * {@link AgentContext#sleep}.
@@ -19,7 +20,12 @@ public final class Blocking {
     /** Runs {@code call}, which may block, and returns its result. */
     public static <V> V call(Callable<V> call) throws Exception {
         BlockingCall<V> blocker = new BlockingCall<>(call);
-        ForkJoinPool.managedBlock(blocker);
+        PoolScheduler.blocking(true);
+        try {
+            ForkJoinPool.managedBlock(blocker);
+        } finally {
+            PoolScheduler.blocking(false);
+        }
         return blocker.result();
     }
 

@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.LongSupplier;
 import java.util.function.Supplier;
@@ -33,8 +34,6 @@ import masl.runtime.trace.TraceEvent;
  */
 final class EntryCoordinator {
 
-    private record Wake(Agent agent, long ticket) { }
-
     private final ReentrantLock lock = new ReentrantLock();
     private final Trace trace;
     /** The scheduler's clock: virtual under a seeded scheduler, so a seed reproduces timestamps. */
@@ -46,10 +45,14 @@ final class EntryCoordinator {
     // Work lists of the operation in progress, used only while holding the lock.
     private final ArrayDeque<Wave> weakenedWaves = new ArrayDeque<>();
     private final Set<SynchronisationBarrier> weakenedBarriers = new LinkedHashSet<>();
-    private final List<Wake> wakes = new ArrayList<>();
+    private WakeBatch wakes = new WakeBatch();
+    /** A batch woken by an earlier operation, for the next one to reuse; taken under the lock, returned after. */
+    private final AtomicReference<WakeBatch> spareWakes = new AtomicReference<>();
+    private final Mission mission;
     private boolean changed;
 
-    EntryCoordinator(Trace trace, LongSupplier clock, ChangeEpoch changes) {
+    EntryCoordinator(Mission mission, Trace trace, LongSupplier clock, ChangeEpoch changes) {
+        this.mission = mission;
         this.trace = trace;
         this.clock = clock;
         this.changes = changes;
@@ -491,7 +494,7 @@ final class EntryCoordinator {
     private void wake(Agent agent) {
         long ticket = agent.pendingTicket();
         if (ticket != 0) {
-            wakes.add(new Wake(agent, ticket));
+            wakes.add(agent, ticket);
         }
     }
 
@@ -500,15 +503,20 @@ final class EntryCoordinator {
     }
 
     private void end() {
-        List<Wake> toWake = wakes.isEmpty() ? List.of() : new ArrayList<>(wakes);
+        WakeBatch toWake = null;
+        if (!wakes.isEmpty()) {
+            toWake = wakes;
+            WakeBatch spare = spareWakes.getAndSet(null);
+            wakes = spare != null ? spare : new WakeBatch();
+        }
         boolean advance = changed;
-        wakes.clear();
         weakenedWaves.clear();
         weakenedBarriers.clear();
         changed = false;
         lock.unlock();
-        for (Wake wake : toWake) {
-            wake.agent().unpark(wake.ticket());
+        if (toWake != null) {
+            toWake.wakeAll(mission);
+            spareWakes.set(toWake);
         }
         if (advance) {
             changes.advance();

@@ -85,7 +85,7 @@ public final class Mission {
         trace = builder.trace;
         openToOutsideInvocations = builder.openToOutsideInvocations;
         callTimeout = builder.callTimeout;
-        coordinator = new EntryCoordinator(trace, scheduler::nanoTime, changes);
+        coordinator = new EntryCoordinator(this, trace, scheduler::nanoTime, changes);
         Map<EntryDefinition, Entry> blocks = new IdentityHashMap<>();
         if (builder.main != null) {
             addEntries(builder.main, null, blocks);

@@ -36,6 +36,15 @@ public interface Scheduler {
     /** Makes the agent runnable: its {@code runSlice} is to be called once, soon. */
     void schedule(AgentTask agent);
 
+    /**
+     * Makes these agents runnable, as {@link #schedule} on each in this order would: the wave a
+     * barrier trip or a release lets go, which a scheduler may take in one pass. The list is
+     * the caller's, to be read during the call only.
+     */
+    default void scheduleAll(List<? extends AgentTask> agents) {
+        agents.forEach(this::schedule);
+    }
+
     /** Runs {@code action} (quick, non-blocking) after {@code delayMillis} of mission time. */
     void scheduleAfter(long delayMillis, Runnable action);
 

@@ -37,6 +37,8 @@ public final class JsonContent {
     public static final String EXCEPTION = "exception";
     public static final String MESSAGE = "message";
     public static final String ERROR = "error";
+    /** In a body's answer to the coordinator: the journal text the primitive wrote. */
+    public static final String JOURNAL = "journal";
 
     private static final ObjectMapper MAPPER = new ObjectMapper();
     private static final JsonNodeFactory NODES = JsonNodeFactory.instance;
@@ -131,6 +133,41 @@ public final class JsonContent {
         ObjectNode result = NODES.objectNode();
         result.set(RESULT, JsonValues.toJson(value));
         return result.toString();
+    }
+
+    /**
+     * The content of a body's {@code INFORM} to the coordinator: the result, and the journal text
+     * the primitive wrote, which the coordinator appends to the mission's journal.
+     */
+    public static String result(Object value, String journal) {
+        ObjectNode result = (ObjectNode) readObject(result(value));
+        return result.put(JOURNAL, journal).toString();
+    }
+
+    /** The content of a body's {@code FAILURE} to the coordinator: the exception and the journal text written before it. */
+    public static String failure(Throwable thrown, String journal) {
+        return ((ObjectNode) readObject(failure(thrown))).put(JOURNAL, journal).toString();
+    }
+
+    /** The journal text of a body's answer; {@code ""} if it has none (or is not JSON). */
+    public static String journalOf(String content) {
+        JsonNode journal = readObject(content).path(JOURNAL);
+        return journal.isTextual() ? journal.textValue() : "";
+    }
+
+    private static JsonNode readObject(String content) {
+        try {
+            JsonNode node = MAPPER.readTree(content == null ? "" : content);
+            return node == null ? NODES.objectNode() : node;
+        } catch (JsonProcessingException notJson) {
+            return NODES.objectNode();
+        }
+    }
+
+    /** The content of a shared event's {@code INFORM} (conversation {@code masl-event}). */
+    public static String event(String event, String block, String emitter, String message) {
+        return NODES.objectNode().put("event", event).put("block", block).put("emitter", emitter)
+                .put(MESSAGE, message).toString();
     }
 
     /** The content of a {@code REFUSE}: why the invocation was denied. */

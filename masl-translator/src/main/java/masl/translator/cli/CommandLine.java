@@ -16,7 +16,8 @@ final class CommandLine {
             "check", Set.of("--agent-path"),
             "compile", Set.of("--agent-path", "-d"),
             "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--platform", "--main-host",
-                    "--main-port", "--sim", "--out"),
+                    "--main-port", "--sim", "--out", "--place", "--port"),
+            "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout"),
             "timeline", Set.of("-o"));
     private static final Set<String> FLAGS = Set.of("--threads");
 
@@ -34,6 +35,9 @@ final class CommandLine {
     String mainHost;
     Integer mainPort;
     String scenarioFile;
+    String place;
+    Integer port;
+    String containerName;
 
     private CommandLine(String command) {
         this.command = command;
@@ -89,6 +93,9 @@ final class CommandLine {
             case "--platform" -> platform = oneOf(option, value, "inproc", "jade");
             case "--main-host" -> mainHost = value;
             case "--main-port" -> mainPort = port(option, value);
+            case "--port" -> port = port(option, value);
+            case "--place" -> place = value;
+            case "--name" -> containerName = value;
             default -> throw new UsageException("unknown option " + option);
         }
     }

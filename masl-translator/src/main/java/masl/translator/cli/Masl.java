@@ -30,7 +30,11 @@ public final class Masl {
 
     static final String USAGE_TEXT = """
             usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE]
-                           [--call-timeout MS] [--platform inproc|jade] [--main-host HOST --main-port PORT]
+                           [--call-timeout MS] [--platform inproc|jade]
+                           [--main-host HOST --main-port PORT | --port PORT]
+                           [--place AGENT=CONTAINER,... | --place FILE]
+                   masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
+                           [--timeout SECONDS]
                    masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH]
                    masl compile FILE -d DIR [--agent-path PATH]
                    masl check FILE [--agent-path PATH]
@@ -39,6 +43,8 @@ public final class Masl {
                         the journal (and only the journal) goes to standard output
                         with --sim, the mission the scenario names runs on its simulated robots; trajectories,
                         events, trace, journal and a picture go to --out (default: NAME.out beside NAME.scenario.xml)
+              container join a JADE platform as container CONTAINER and host the bodies (the primitives) of the
+                        agents a run --place puts there; their programs run in the run's JVM; ends with the mission
               compile   translate a MASL program into Java sources under DIR (one folder per package)
               check     report every error of a MASL program and of the descriptors it imports
               timeline  draw a trace written by run --trace as a self-contained HTML page: one lane per
@@ -57,6 +63,10 @@ public final class Masl {
               --main-host HOST, --main-port PORT
                                   with --platform jade: join the platform whose main container listens there
                                   instead of starting one on loopback
+              --port PORT         with --platform jade: the port of the main container run starts (default: a free one)
+              --place AGENT=CONTAINER,... or FILE (lines AGENT=CONTAINER)
+                                  with --platform jade: run these agents' bodies in the containers named (started
+                                  with masl container), their programs in this JVM; other agents stay here
             exit status: 0 success, 1 errors in the program or its descriptors, 2 the mission failed,
                          deadlocked or timed out, 64 bad usage, 70 internal error
             """;
@@ -83,6 +93,7 @@ public final class Masl {
                 case "run" -> line.scenarioFile != null ? new SimRun(out, err).run(line)
                         : new RunCommand(out, err).run(line, readProgram(line.singleFile()));
                 case "timeline" -> new TimelineCommand(err).run(line);
+                case "container" -> new ContainerCommand(out, err).run(line);
                 default -> throw new UsageException("unknown command '" + line.command + "'");
             };
         } catch (UsageException usage) {

@@ -47,7 +47,17 @@ final class AgentCalls {
      */
     String call(Kind kind, Primitive primitive, Primitive countermeasure, String calleeClass, String callee,
             List<String> arguments) {
-        String helper = helper(kind, primitive, countermeasure, calleeClass);
+        return call(kind, primitive, countermeasure, calleeClass, calleeClass, callee, arguments);
+    }
+
+    /**
+     * The same, on a receiver of static class {@code receiverClass} that may not be a
+     * {@code calleeClass} (§4): the helper calls the primitive only on an agent of that class, and
+     * gives an agent without it (a nop) the default value.
+     */
+    String call(Kind kind, Primitive primitive, Primitive countermeasure, String calleeClass, String receiverClass,
+            String callee, List<String> arguments) {
+        String helper = helper(kind, primitive, countermeasure, calleeClass, receiverClass);
         List<String> all = new ArrayList<>();
         all.add("ctx");
         if (kind != Kind.INVOKE_SELF) {
@@ -69,8 +79,10 @@ final class AgentCalls {
                 ? javaType.substring(lang.length()) : javaType;
     }
 
-    private String helper(Kind kind, Primitive primitive, Primitive countermeasure, String calleeClass) {
-        String key = kind + " " + primitive.name() + " " + calleeClass;
+    private String helper(Kind kind, Primitive primitive, Primitive countermeasure, String calleeClass,
+            String receiverClass) {
+        String key = kind + " " + primitive.name() + " " + calleeClass + " " + receiverClass;
+        boolean dispatches = !calleeClass.equals(receiverClass);
         String existing = names.get(key);
         if (existing != null) {
             return existing;
@@ -82,7 +94,7 @@ final class AgentCalls {
         List<String> parameters = new ArrayList<>();
         parameters.add("AgentContext ctx");
         if (!self) {
-            parameters.add("final " + calleeClass + " callee");
+            parameters.add("final " + (dispatches ? receiverClass + " receiver" : calleeClass + " callee"));
         }
         List<String> argumentNames = new ArrayList<>();
         int i = 0;
@@ -105,6 +117,12 @@ final class AgentCalls {
         lines.add("    /** " + describe(kind, primitive, countermeasure) + " */");
         lines.add("    private " + (self ? "" : "static ") + type + " " + name + "(" + String.join(", ", parameters)
                 + ") {");
+        if (dispatches) {
+            lines.add("        if (!(receiver instanceof " + calleeClass + " callee)) {");
+            lines.add("            return CompletableFuture.completedFuture(" + defaultValue(primitive.returnType())
+                    + "); // a nop() for an agent whose type lacks " + primitive.name() + " (MASL 4)");
+            lines.add("        }");
+        }
         lines.add("        " + (self && isVoid ? "" : "return ") + runtimeCall + ";");
         lines.add("    }");
         helpers.put(name, lines);

@@ -70,7 +70,7 @@ final class ExpressionWriter {
      * A wait for a result inside an expression: {@code start} (null when the future is already
      * held) gives {@code future}, which the program awaits before evaluating the expression.
      */
-    record Suspension(String start, String future) {
+    record Suspension(String start, String future, String what) {
     }
 
     /** Takes the suspension points of the expressions written since the last call, in evaluation order. */
@@ -201,7 +201,8 @@ final class ExpressionWriter {
         if (primitive.synchronous()) {
             String future = assignments.temporary(AgentCalls.futureType(primitive));
             String invoke = calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeType.fullClassName(), callee, java);
-            suspensions.add(new Suspension(future + " = " + register + invoke + tail + ";", future));
+            suspensions.add(new Suspension(future + " = " + register + invoke + tail + ";", future,
+                    "the result of " + JavaText.snippet(where)));
             return future + ".join()";
         }
         Primitive countermeasure = primitive.countermeasure() == null ? null
@@ -509,7 +510,7 @@ final class ExpressionWriter {
         }
         if (futures.contains(variable)) {
             // Holding a future does not block; reading it waits for the result (MASL 9).
-            suspensions.add(new Suspension(null, local(variable)));
+            suspensions.add(new Suspension(null, local(variable), "the result " + variable.name() + " holds"));
             return local(variable) + ".join()";
         }
         return local(variable);
@@ -627,8 +628,19 @@ final class ExpressionWriter {
     private String primitiveCall(ExpressionContext receiver, String name, List<ExpressionContext> arguments,
             ParserRuleContext where) {
         boolean internal = receiver == null || TreeQueries.isThis(receiver);
-        var calleeType = internal ? selfType.descriptor() : queries.descriptorOf(program.typeOf(receiver));
+        var receiverType = internal ? selfType.descriptor() : queries.descriptorOf(program.typeOf(receiver));
+        var calleeType = receiverType;
         Optional<Primitive> found = calleeType == null ? Optional.empty() : calleeType.findPrimitive(name);
+        if (found.isEmpty() && !internal && receiverType != null) {
+            // Polymorphism (MASL 4): a type the receiver may be of declares it.
+            for (ImportedType declaring : declaringTypes(where)) {
+                if (declaring.isLoaded() && declaring.descriptor().isSubtypeOf(receiverType)) {
+                    calleeType = declaring.descriptor();
+                    found = calleeType.findPrimitive(name);
+                    break;
+                }
+            }
+        }
         if (found.isEmpty()) {
             return unsupported.report(where, internal
                     ? "a primitive call the agent's type lacks, inside an expression,"
@@ -638,16 +650,23 @@ final class ExpressionWriter {
         String callee = internal ? "self" : expr(receiver);
         List<String> java = arguments(primitive, arguments);
         String calleeClass = calleeType.fullClassName();
+        String receiverClass = receiverType.fullClassName();
         if (primitive.synchronous() && internal) {
             return calls.call(AgentCalls.Kind.INVOKE_SELF, primitive, null, calleeClass, callee, java);
         }
         if (primitive.synchronous()) {
-            return awaited(calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeClass, callee, java), primitive);
+            return awaited(calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeClass, receiverClass, callee, java),
+                    primitive, where);
         }
         Primitive countermeasure = primitive.countermeasure() == null ? null
                 : calleeType.findPrimitive(primitive.countermeasure()).orElse(null);
-        String launch = calls.call(AgentCalls.Kind.LAUNCH, primitive, countermeasure, calleeClass, callee, java);
-        return where == unawaited ? launch : awaited(launch, primitive);
+        String launch = calls.call(AgentCalls.Kind.LAUNCH, primitive, countermeasure, calleeClass, receiverClass,
+                callee, java);
+        return where == unawaited ? launch : awaited(launch, primitive, where);
+    }
+
+    private List<ImportedType> declaringTypes(ParserRuleContext call) {
+        return program.symbolOf(call).orElse(null) instanceof Member member ? member.declaringTypes() : List.of();
     }
 
     /** The arguments of a call, converted for the primitive's parameters (§3). */
@@ -662,9 +681,9 @@ final class ExpressionWriter {
     }
 
     /** A future started before the statement, awaited, and read where the call stood. */
-    private String awaited(String start, Primitive primitive) {
+    private String awaited(String start, Primitive primitive, ParserRuleContext call) {
         String future = assignments.temporary(AgentCalls.futureType(primitive));
-        suspensions.add(new Suspension(future + " = " + start + ";", future));
+        suspensions.add(new Suspension(future + " = " + start + ";", future, "the result of " + JavaText.snippet(call)));
         return future + ".join()";
     }
 

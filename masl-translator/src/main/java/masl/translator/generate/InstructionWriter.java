@@ -111,17 +111,24 @@ final class InstructionWriter {
      * Waits for the results that the condition, test or initialiser just written reads (contract
      * §3.11), then, as an external invocation is an instruction, the step boundary (§8.1).
      */
-    void awaitResults() {
+    void awaitResults(ParserRuleContext statement) {
         List<ExpressionWriter.Suspension> waits = expressions.takeSuspensions();
         for (ExpressionWriter.Suspension wait : waits) {
             if (wait.start() != null) {
                 cases.line(wait.start());
             }
-            cases.suspending("ctx.await(" + wait.future() + ")", cases.point());
+            awaitResult(wait, statement);
         }
         if (!waits.isEmpty()) {
             stepBoundary();
+            cases.note(at(statement) + ": " + JavaText.snippet(statement) + ", with the results it waited for");
         }
+    }
+
+    /** {@code ctx.await(future)}: the program continues in a case named after what it waited for. */
+    private void awaitResult(ExpressionWriter.Suspension wait, ParserRuleContext statement) {
+        cases.suspending("ctx.await(" + wait.future() + ")", cases.point());
+        cases.note(at(statement) + ": " + wait.what());
     }
 
     /** {@code setAcceptState(s);} (MASL 11): an instruction. */
@@ -144,7 +151,7 @@ final class InstructionWriter {
             if (wait.start() != null) {
                 cases.line(wait.start());
             }
-            cases.suspending("ctx.await(" + wait.future() + ")", cases.point());
+            awaitResult(wait, statement);
         }
         cases.suspending("ctx.waitFor(" + state + timeout + ")", cases.point());
         stepBoundary();
@@ -154,7 +161,8 @@ final class InstructionWriter {
      * A statement, preceded by the values hoisted out of it; wrapped in {@code try} when it calls
      * code that may throw: the exception raises {@code uncaught_exception} (MASL 8, 9).
      */
-    private void writeGuarded(ExpressionContext expression, String java) {
+    private void writeGuarded(ExpressionContext statement, String java) {
+        ExpressionContext expression = statement;
         List<ExpressionWriter.Suspension> waits = expressions.takeSuspensions();
         List<String> before = assignments.takeHoisted();
         boolean guarded = queries.mayThrow(expression);
@@ -173,7 +181,7 @@ final class InstructionWriter {
             } else if (wait.start() != null) {
                 cases.line(wait.start());
             }
-            cases.suspending("ctx.await(" + wait.future() + ")", cases.point());
+            awaitResult(wait, statement);
         }
         if (!guarded) {
             before.forEach(cases::line);

@@ -11,7 +11,7 @@ import org.antlr.v4.runtime.tree.ParseTree;
 /**
  * Decides, per loop, whether it is a busy-wait (generated-code contract §3.8): its condition and
  * the conditions in its body read only what the runtime sees change (shared variables, entry
- * members, literals, locals), and its body assigns no local. Such a loop parks when nothing it can
+ * members, label members, accept states, literals, locals), and its body assigns no local. Such a loop parks when nothing it can
  * observe changed; any other loop only yields.
  */
 final class LoopClassifier {
@@ -69,6 +69,8 @@ final class LoopClassifier {
     private static boolean isObservable(Member member) {
         return switch (member.kind()) {
             case ENTRY_MEMBER -> true;
+            // A label's completions and free() advance the change epoch (contract §8.3).
+            case LABEL_MEMBER -> member.name().equals("isFinished");
             // The agent's id never changes.
             case PRIMITIVE -> member.name().equals("getProxyID");
             case JAVA_FIELD -> member.name().equals("length") || member.name().equals("class");

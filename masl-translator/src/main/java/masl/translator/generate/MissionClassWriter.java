@@ -42,6 +42,7 @@ final class MissionClassWriter {
         out.add("import masl.runtime.SharedDeclaration;");
         out.add("import masl.runtime.descriptor.AgentPath;");
         out.add("import masl.runtime.descriptor.AgentType;");
+        out.add("import masl.runtime.descriptor.DescriptorException;");
         out.add("import masl.runtime.descriptor.DescriptorLoader;");
         out.add("import masl.runtime.descriptor.DescriptorSource;");
         out.add("");
@@ -165,12 +166,21 @@ final class MissionClassWriter {
         for (AgentDecl agent : agents) {
             if (done.add(agent.instantiatedType().name())) {
                 var source = agent.instantiatedType().descriptor().source();
-                out.add("        static final AgentType " + constants.get(agent.instantiatedType().name())
-                        + " = LOADER.load(new DescriptorSource(");
-                out.add("                URI.create(" + JavaText.quote(source.uri().toString()) + "), "
-                        + JavaText.quote(source.displayName()) + "));");
+                out.add("        static final AgentType " + constants.get(agent.instantiatedType().name()) + " = load("
+                        + JavaText.quote(source.uri().toString()) + ",");
+                out.add("                " + JavaText.quote(source.displayName()) + ", "
+                        + JavaText.quote(agent.instantiatedType().descriptor().fullClassName()) + ");");
             }
         }
+        out.add("");
+        out.add("        /** The descriptor the translator read; if it moved, the one for the class on the class path. */");
+        out.add("        private static AgentType load(String uri, String name, String className) {");
+        out.add("            try {");
+        out.add("                return LOADER.load(new DescriptorSource(URI.create(uri), name));");
+        out.add("            } catch (DescriptorException moved) {");
+        out.add("                return LOADER.loadByClassName(className);");
+        out.add("            }");
+        out.add("        }");
         out.add("    }");
         return out;
     }

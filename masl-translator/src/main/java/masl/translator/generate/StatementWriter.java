@@ -164,7 +164,7 @@ final class StatementWriter {
         boolean keeps = keptOnReelect.contains(block) && hasLocals(block);
         cases.place(test(block), at(tree) + ": " + JavaText.header(tree));
         String test = expressions.condition(tree.test);
-        instructions.awaitResults();
+        instructions.awaitResults(tree.test);
         CaseWriter.Point body = cases.point();
         cases.setPc(body);
         cases.open("switch (ctx.enter(" + definition + ", " + test + ")) {");
@@ -215,7 +215,7 @@ final class StatementWriter {
         for (Variable variable : variables) {
             if (variable.sharing() == Sharing.SHARED && variable.initializer() != null) {
                 String value = expressions.initializer(variable.type(), variable.initializer());
-                instructions.awaitResults();
+                instructions.awaitResults(variable.initializer());
                 cases.line("ctx.shared(" + structure.shared(variable) + ").initialise(() -> " + value + ");");
             }
         }
@@ -229,7 +229,7 @@ final class StatementWriter {
                     unsupported.report(variable.initializer(), "waiting for a result in the initialiser of a local"
                             + " that a reelect keeps");
                 }
-                instructions.awaitResults();
+                instructions.awaitResults(variable.initializer() != null ? variable.initializer() : block.tree());
                 cases.line(expressions.local(variable) + " = " + value + ";");
             }
         }
@@ -361,7 +361,7 @@ final class StatementWriter {
     private void ifStatement(MASLParser.IfStmtContext ifStmt) {
         cases.note(at(ifStmt) + ": " + JavaText.header(ifStmt));
         String condition = expressions.condition(ifStmt.expression());
-        instructions.awaitResults();
+        instructions.awaitResults(ifStmt.expression());
         if (instructions.isZeroDuration(ifStmt)) {
             // Nothing in it can suspend: a plain Java if.
             cases.open("if (" + condition + ") {");
@@ -392,7 +392,7 @@ final class StatementWriter {
         CaseWriter.Point exit = cases.point();
         cases.place(head, at(loop) + ": " + JavaText.header(loop));
         String condition = expressions.condition(loop.expression());
-        instructions.awaitResults();
+        instructions.awaitResults(loop.expression());
         cases.jumpLine("if (!(" + condition + ")) { ", exit, " }");
         body(loop.statement(), exit);
         iteration(head, loops.isBusyWait(loop.expression(), loop.statement()));
@@ -409,7 +409,7 @@ final class StatementWriter {
         cases.place(head, at(loop) + ": the test of " + JavaText.header(loop));
         if (loop.condition != null) {
             String condition = expressions.condition(loop.condition);
-            instructions.awaitResults();
+            instructions.awaitResults(loop.condition);
             cases.jumpLine("if (!(" + condition + ")) { ", exit, " }");
         }
         body(loop.statement(), exit);

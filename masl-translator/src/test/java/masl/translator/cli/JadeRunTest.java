@@ -76,4 +76,29 @@ class JadeRunTest {
                 .status());
         assertEquals(64, Run.of("run", program, "--main-host", "127.0.0.1", "--main-port", "1099").status());
     }
+
+    @Test
+    void aPlacementThatDoesNotFitTheProgramIsBadUsageWithItsPosition() throws IOException {
+        String program = write("one.masl", HEADER + "scalar entry main (true) { .nop(); }\n");
+        Run undeclared = Run.of("run", program, "--platform", "jade", "--place", "a=c2,zed=c2");
+        assertEquals(64, undeclared.status());
+        assertTrue(undeclared.err().startsWith("masl: --place names zed, which the program does not declare (it"
+                + " declares a, b)\n"), undeclared.err());
+        Run malformed = Run.of("run", program, "--platform", "jade", "--place", "a=c2,b");
+        assertEquals(64, malformed.status());
+        assertTrue(malformed.err().startsWith("masl: --place:1:6: error: expected AGENT=CONTAINER, got 'b'\n"),
+                malformed.err());
+        assertEquals(64, Run.of("run", program, "--place", "a=c2").status(), "--place needs --platform jade");
+        assertEquals(64, Run.of("run", program, "--platform", "jade", "--port", "1099", "--main-host", "h",
+                "--main-port", "1099").status(), "--port starts a main container, --main-* join one");
+    }
+
+    @Test
+    void aContainerNeedsItsPlatformAndName() {
+        Run noName = Run.of("container", "--main-host", "127.0.0.1", "--main-port", "1099");
+        assertEquals(64, noName.status());
+        assertTrue(noName.err().startsWith("masl: masl container needs --main-host, --main-port and --name\n"),
+                noName.err());
+        assertEquals(64, Run.of("container", "--main-host", "h", "--main-port", "1", "--name", "c", "x.masl").status());
+    }
 }

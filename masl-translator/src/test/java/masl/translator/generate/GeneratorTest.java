@@ -165,6 +165,37 @@ class GeneratorTest {
     }
 
     @Test
+    void anotherAgentsPrimitiveIsInvokedThenAwaitedInACaseOfItsOwn() {
+        Translation translation = Programs.translate("ask.masl", """
+                import Default.xml;
+                Default a, b = newAgent(Default);
+                synchronous entry main (true) {
+                  local int seen = b.getProxyID() + .getProxyID();
+                  seen = b.getProxyID();
+                }
+                """);
+        assertTrue(translation.succeeded(), () -> translation.diagnostics().sorted().toString());
+        String program = translation.javaSources().get("masl.generated.ask.DefaultProgram");
+        assertTrue(program.contains("private final masl.agents.Default agent$b;"), program);
+        assertTrue(program.contains("this.agent$b = (masl.agents.Default) agents[1];"), program);
+        assertTrue(program.contains("tmp$1 = invoke$getProxyID(ctx, agent$b);\n"
+                + "                    pc = 2;\n"
+                + "                    if (!ctx.await(tmp$1)) return;\n"
+                + "                case 2: // ask.masl:4: the result of b.getProxyID()\n"), program);
+        assertTrue(program.contains("main$seen = tmp$1.join() + invokeSelf$getProxyID(ctx);"), program);
+        assertTrue(program.contains("return ctx.invoke(callee, \"getProxyID\", 0, () -> callee.getProxyID());"),
+                program);
+        assertTrue(program.contains("return ctx.invokeSelf(\"getProxyID\", 0, () -> self.getProxyID());"), program);
+        MissionLoader.load(translation, AgentPath.parse(""));
+    }
+
+    @Test
+    void anInternalAccessorCallTakesNoStepBoundaryAnExternalOneDoes() {
+        String program = program(".getProxyID();\nthis.getProxyID();\na.getProxyID();");
+        assertEquals(1, occurrences(program, "ctx.stepBoundary()"), program);
+    }
+
+    @Test
     void unsupportedConstructsArePositionedErrors() {
         Translation translation = Programs.translate("wait.masl", """
                 import Default.xml;

@@ -1,5 +1,8 @@
 package masl.sim.output;
 
+import java.lang.reflect.Constructor;
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.RecordComponent;
 import java.util.function.LongSupplier;
 import masl.runtime.trace.Trace;
 import masl.runtime.trace.TraceEvent;
@@ -26,46 +29,26 @@ public final class SimulatedTimeTrace implements Trace {
         next.record(restamped(event, simulatedNanos.getAsLong()));
     }
 
+    /**
+     * A copy of {@code event} at time {@code t}. Every kind of trace event is a record whose first
+     * component is {@code nanos}; the copy goes through the record's canonical constructor so that
+     * kinds and components the runtime adds later are restamped too, not lost or failed on.
+     */
     static TraceEvent restamped(TraceEvent event, long t) {
-        if (event instanceof TraceEvent.Entered e) {
-            return new TraceEvent.Entered(t, e.agent(), e.block(), e.source());
-        } else if (event instanceof TraceEvent.WaitingIn e) {
-            return new TraceEvent.WaitingIn(t, e.agent(), e.block(), e.source());
-        } else if (event instanceof TraceEvent.Released e) {
-            return new TraceEvent.Released(t, e.agent(), e.block(), e.wave(), e.source());
-        } else if (event instanceof TraceEvent.WaitingOut e) {
-            return new TraceEvent.WaitingOut(t, e.agent(), e.block(), e.source());
-        } else if (event instanceof TraceEvent.Left e) {
-            return new TraceEvent.Left(t, e.agent(), e.block(), e.cause(), e.source());
-        } else if (event instanceof TraceEvent.BarrierTripped e) {
-            return new TraceEvent.BarrierTripped(t, e.domain(), e.agents());
-        } else if (event instanceof TraceEvent.WaveStarted e) {
-            return new TraceEvent.WaveStarted(t, e.block(), e.wave());
-        } else if (event instanceof TraceEvent.WaveEnded e) {
-            return new TraceEvent.WaveEnded(t, e.block(), e.wave());
-        } else if (event instanceof TraceEvent.MissionEnded e) {
-            return new TraceEvent.MissionEnded(t, e.status());
+        RecordComponent[] components = event.getClass().getRecordComponents();
+        Class<?>[] types = new Class<?>[components.length];
+        Object[] values = new Object[components.length];
+        try {
+            for (int i = 0; i < components.length; i++) {
+                types[i] = components[i].getType();
+                values[i] = i == 0 ? Long.valueOf(t) : components[i].getAccessor().invoke(event);
+            }
+            Constructor<? extends TraceEvent> canonical = event.getClass().getDeclaredConstructor(types);
+            return canonical.newInstance(values);
+        } catch (NoSuchMethodException | InstantiationException | IllegalAccessException e) {
+            throw new IllegalStateException("trace event " + event.getClass().getName() + " is not a record", e);
+        } catch (InvocationTargetException e) {
+            throw new IllegalStateException("trace event " + event + " cannot be restamped", e.getCause());
         }
-        return restampedAgentEvent(event, t);
-    }
-
-    private static TraceEvent restampedAgentEvent(TraceEvent event, long t) {
-        if (event instanceof TraceEvent.EventEmitted e) {
-            return new TraceEvent.EventEmitted(t, e.agent(), e.event(), e.block(), e.message(), e.receivers(), e.source());
-        } else if (event instanceof TraceEvent.EventReacted e) {
-            return new TraceEvent.EventReacted(t, e.agent(), e.event(), e.block(), e.byDefault(), e.source());
-        } else if (event instanceof TraceEvent.EventDropped e) {
-            return new TraceEvent.EventDropped(t, e.agent(), e.event(), e.source());
-        } else if (event instanceof TraceEvent.InvocationMade e) {
-            return new TraceEvent.InvocationMade(t, e.requester(), e.callee(), e.member(), e.source());
-        } else if (event instanceof TraceEvent.InvocationServed e) {
-            return new TraceEvent.InvocationServed(t, e.callee(), e.requester(), e.member(), e.source());
-        } else if (event instanceof TraceEvent.InvocationDenied e) {
-            return new TraceEvent.InvocationDenied(t, e.callee(), e.requester(), e.member(), e.state(), e.source());
-        } else if (event instanceof TraceEvent.CountermeasureFired e) {
-            return new TraceEvent.CountermeasureFired(t, e.agent(), e.callee(), e.member(), e.block(), e.source());
-        }
-        TraceEvent.AgentFailed e = (TraceEvent.AgentFailed) event;
-        return new TraceEvent.AgentFailed(t, e.agent(), e.cause(), e.source());
     }
 }

@@ -1,0 +1,174 @@
+package masl.jade;
+
+import jade.core.AID;
+import jade.core.Agent;
+import jade.core.behaviours.CyclicBehaviour;
+import jade.domain.DFService;
+import jade.domain.FIPAException;
+import jade.lang.acl.ACLMessage;
+import jade.lang.acl.MessageTemplate;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
+import masl.jade.acl.AclInvocations;
+import masl.jade.acl.ContentException;
+import masl.jade.acl.JsonContent;
+import masl.jade.acl.Reply;
+import masl.runtime.AgentImplementation;
+
+/**
+ * The body of a MASL agent placed in a container away from the coordinator: a JADE agent named
+ * after the MASL agent, registered with the DF like any MASL agent, holding the implementation
+ * object whose primitives run here. The agent's program runs in the coordinator's JVM.
+ *
+ * <ul>
+ * <li>A request from the coordinator runs its primitive on a thread of the container's pool (so
+ * a primitive that blocks holds no JADE thread) and is answered with the result, or the exception,
+ * and the journal text it wrote ({@link BodyJournal}).
+ * <li>A request from any other FIPA agent is read here ({@code NOT_UNDERSTOOD} at once if
+ * malformed), then relayed to the coordinator ({@value CoordinatorAgent#RELAY}), which filters it
+ * by the agent's permeability state as an <em>other</em> when the agent serves it, as in-process,
+ * and has it run here; its answer goes back to the requester with the requester's
+ * {@code in-reply-to}.
+ * <li>A shared event ({@code INFORM}, {@value CoordinatorAgent#EVENT}) is handed to the
+ * container's event listener.
+ * </ul>
+ */
+final class BodyAgent extends Agent {
+    private static final long serialVersionUID = 1L;
+
+    private final transient AgentImplementation implementation;
+    private final transient BodyJournal journal;
+    private final transient PrimitiveTable primitives;
+    private final transient AID coordinator;
+    private final transient ExecutorService primitiveThreads;
+    private final transient CountDownLatch ready;
+    private final transient Consumer<ACLMessage> events;
+    private final transient Map<String, ACLMessage> relayed = new ConcurrentHashMap<>();
+    private final transient AtomicLong relays = new AtomicLong();
+    private transient volatile Thread thread;
+    private transient volatile FIPAException registrationFailure;
+
+    BodyAgent(AgentImplementation implementation, BodyJournal journal, PrimitiveTable primitives, AID coordinator,
+            ExecutorService primitiveThreads, CountDownLatch ready, Consumer<ACLMessage> events) {
+        this.implementation = implementation;
+        this.journal = journal;
+        this.primitives = primitives;
+        this.coordinator = coordinator;
+        this.primitiveThreads = primitiveThreads;
+        this.ready = ready;
+        this.events = events;
+    }
+
+    @Override
+    protected void setup() {
+        thread = Thread.currentThread();
+        try {
+            DFService.register(this, DfEntries.maslAgent(getAID(), primitives));
+        } catch (FIPAException e) {
+            registrationFailure = e;
+        }
+        addBehaviour(new Receiver());
+        ready.countDown();
+    }
+
+    @Override
+    protected void takeDown() {
+        if (registrationFailure == null) {
+            try {
+                DFService.deregister(this);
+            } catch (FIPAException e) {
+                // The platform is going away with its DF.
+            }
+        }
+    }
+
+    FIPAException registrationFailure() {
+        return registrationFailure;
+    }
+
+    Thread thread() {
+        return thread;
+    }
+
+    private void take(ACLMessage message) {
+        ACLMessage requester = message.getInReplyTo() == null ? null : relayed.remove(message.getInReplyTo());
+        if (requester != null) {
+            send(forwarded(requester, message));
+            return;
+        }
+        if (message.getPerformative() == ACLMessage.INFORM && CoordinatorAgent.EVENT.equals(message.getConversationId())) {
+            events.accept(message);
+            return;
+        }
+        if (message.getPerformative() == ACLMessage.NOT_UNDERSTOOD) {
+            return; // never answered: two agents would echo forever
+        }
+        PrimitiveTable.Call call;
+        try {
+            call = primitives.bind(AclInvocations.readRequest(message));
+        } catch (ContentException problem) {
+            send(AclInvocations.notUnderstood(message, problem));
+            return;
+        }
+        if (coordinator.equals(message.getSender())) {
+            serve(message, call);
+        } else {
+            relay(message);
+        }
+    }
+
+    private void serve(ACLMessage request, PrimitiveTable.Call call) {
+        try {
+            primitiveThreads.execute(() -> send(journal.collecting(
+                    written -> Answers.run(request, call, implementation, written))));
+        } catch (RejectedExecutionException missionEnded) {
+            send(AclInvocations.reply(request, Reply.Kind.REFUSED,
+                    JsonContent.refusal(getLocalName() + " no longer serves: its mission has ended")));
+        }
+    }
+
+    private void relay(ACLMessage request) {
+        ACLMessage relay = new ACLMessage(ACLMessage.REQUEST);
+        relay.addReceiver(coordinator);
+        relay.setConversationId(CoordinatorAgent.RELAY);
+        relay.setLanguage(AclInvocations.LANGUAGE);
+        relay.setOntology(AclInvocations.ONTOLOGY);
+        relay.setContent(request.getContent());
+        String replyWith = getLocalName() + "-relay-" + relays.incrementAndGet();
+        relay.setReplyWith(replyWith);
+        relayed.put(replyWith, request);
+        send(relay);
+    }
+
+    /** The coordinator's answer to a relayed request, as the answer of this agent to its requester. */
+    private static ACLMessage forwarded(ACLMessage request, ACLMessage answer) {
+        ACLMessage reply = request.createReply();
+        reply.setPerformative(answer.getPerformative());
+        reply.setLanguage(AclInvocations.LANGUAGE);
+        reply.setOntology(AclInvocations.ONTOLOGY);
+        reply.setContent(answer.getContent());
+        return reply;
+    }
+
+    /** Takes every message but the DF's (the DF calls of this agent wait for those). */
+    private final class Receiver extends CyclicBehaviour {
+        private static final long serialVersionUID = 1L;
+
+        private final MessageTemplate notFromTheDf = MessageTemplate.not(MessageTemplate.MatchSender(getDefaultDF()));
+
+        @Override
+        public void action() {
+            ACLMessage message = myAgent.receive(notFromTheDf);
+            if (message == null) {
+                block();
+            } else {
+                take(message);
+            }
+        }
+    }
+}

@@ -1,0 +1,58 @@
+package masl.jade;
+
+import jade.core.AID;
+import jade.domain.FIPAAgentManagement.DFAgentDescription;
+import jade.domain.FIPAAgentManagement.Property;
+import jade.domain.FIPAAgentManagement.ServiceDescription;
+import masl.jade.acl.AclInvocations;
+import masl.runtime.descriptor.Primitive;
+
+/** What the bridge's agents register with the DF. */
+final class DfEntries {
+
+    /** DF service type of a MASL agent's type; the service's name is the type's short name. */
+    static final String TYPE_SERVICE = "masl-agent";
+    /** DF service type of each primitive; the service's name is the primitive's name. */
+    static final String PRIMITIVE_SERVICE = "masl-primitive";
+    /** DF service type of a container hosting bodies ({@link MaslContainer}); named after the container. */
+    static final String CONTAINER_SERVICE = "masl-container";
+    /** DF service type of the coordinator of a mission spanning containers. */
+    static final String COORDINATOR_SERVICE = "masl-coordinator";
+
+    private DfEntries() {
+    }
+
+    /** A MASL agent: its type and one service per primitive, invocable with JSON requests. */
+    static DFAgentDescription maslAgent(AID agent, PrimitiveTable primitives) {
+        DFAgentDescription description = new DFAgentDescription();
+        description.setName(agent);
+        ServiceDescription type = new ServiceDescription();
+        type.setType(TYPE_SERVICE);
+        type.setName(primitives.type().shortName());
+        type.addProperties(new Property("class", primitives.type().fullClassName()));
+        description.addServices(type);
+        for (Primitive primitive : primitives.primitives()) {
+            ServiceDescription service = new ServiceDescription();
+            service.setType(PRIMITIVE_SERVICE);
+            service.setName(primitive.name());
+            service.addLanguages(AclInvocations.LANGUAGE);
+            service.addOntologies(AclInvocations.ONTOLOGY);
+            service.addProperties(new Property("signature", primitive.signature()));
+            description.addServices(service);
+        }
+        return description;
+    }
+
+    /** One service of {@code serviceType} named {@code name}: a search template too. */
+    static DFAgentDescription service(AID agent, String serviceType, String name) {
+        DFAgentDescription description = new DFAgentDescription();
+        if (agent != null) {
+            description.setName(agent);
+        }
+        ServiceDescription service = new ServiceDescription();
+        service.setType(serviceType);
+        service.setName(name);
+        description.addServices(service);
+        return description;
+    }
+}

@@ -1,0 +1,242 @@
+package masl.jade;
+
+import jade.core.AID;
+import jade.domain.DFService;
+import jade.domain.FIPAAgentManagement.DFAgentDescription;
+import jade.domain.FIPAException;
+import jade.lang.acl.ACLMessage;
+import jade.wrapper.AgentController;
+import jade.wrapper.StaleProxyException;
+import java.lang.reflect.Method;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import masl.jade.acl.AclInvocations;
+import masl.jade.acl.ContentException;
+import masl.jade.acl.JsonContent;
+import masl.jade.acl.PlacementContent;
+import masl.runtime.AgentImplementation;
+import masl.runtime.Mission;
+import masl.runtime.descriptor.AgentType;
+import masl.runtime.trace.Trace;
+import masl.runtime.trace.TraceEvent;
+
+/**
+ * The coordinator's side of one mission whose agents are placed in several containers
+ * ({@link JadeLauncher#place}): the {@link CoordinatorAgent}, a stub with its {@link RemoteBody} for
+ * each agent placed away from the main container, the bodies' placement in their containers
+ * ({@link ContainerHost}), the requests FIPA agents send to those bodies, shared events sent to
+ * the bodies, and the end of the mission in every container. One mission; not thread-safe but
+ * where said.
+ */
+final class Distribution {
+
+    private final Map<String, String> containerOfAgent;
+    private final Duration agentsTimeout;
+    private final CoordinatorAgent coordinator;
+    private final AgentController controller;
+    /** Remote agents by proxy id, in proxy id order. */
+    private final Map<Integer, Remote> remotes = new LinkedHashMap<>();
+    /** The agent of each container that hosts bodies, once found. */
+    private final Map<String, AID> containers = new LinkedHashMap<>();
+    private volatile Served served;
+
+    private record Remote(String name, String container, String className, RemoteBody body) {
+    }
+
+    /** What a relayed request needs: the mission, and each agent's name, primitives and implementation. */
+    private record Served(Mission mission, List<String> names, List<PrimitiveTable> tables,
+            List<AgentImplementation> implementations) {
+    }
+
+    /**
+     * Starts the coordinator agent in {@code platform}'s container (the main container).
+     *
+     * @throws JadeException if it cannot start (another mission spanning containers runs on the platform)
+     */
+    Distribution(JadePlatform platform, Map<String, String> containerOfAgent, Duration agentsTimeout)
+            throws InterruptedException {
+        this.containerOfAgent = Map.copyOf(containerOfAgent);
+        this.agentsTimeout = agentsTimeout;
+        CountDownLatch ready = new CountDownLatch(1);
+        coordinator = new CoordinatorAgent(ready, this::serveRelayed);
+        try {
+            controller = platform.container().acceptNewAgent(CoordinatorAgent.NAME, coordinator);
+            controller.start();
+        } catch (StaleProxyException e) {
+            throw new JadeException("cannot start " + CoordinatorAgent.NAME
+                    + " (does another mission spanning containers run on this platform?)", e);
+        }
+        if (!ready.await(agentsTimeout.toMillis(), TimeUnit.MILLISECONDS)) {
+            throw new JadeException(CoordinatorAgent.NAME + " did not start within " + agentsTimeout);
+        }
+    }
+
+    CoordinatorAgent coordinator() {
+        return coordinator;
+    }
+
+    /** The container agent {@code agent} is placed in, or null for the main container. */
+    String containerOf(String agent) {
+        return containerOfAgent.get(agent);
+    }
+
+    /**
+     * The stand-in of agent {@code proxyId} placed in {@code container}: a stub of its
+     * implementation class whose primitives are requests to its body.
+     */
+    AgentImplementation stub(int proxyId, String name, String container, AgentType type,
+            Class<? extends AgentImplementation> implementation) {
+        List<Method> methods = new PrimitiveTable(type, implementation).methods();
+        RemoteBody body = new RemoteBody(name, new AID(name, AID.ISLOCALNAME), methods, coordinator,
+                implementation.getClassLoader());
+        remotes.put(proxyId, new Remote(name, container, implementation.getName(), body));
+        return StubClasses.instantiate(implementation, methods, body);
+    }
+
+    /**
+     * Once the mission is built: gives the bodies' stand-ins its journal, lets the coordinator serve
+     * the requests bodies relay, and has each container create its bodies (waiting, up to the agents'
+     * timeout, for each container to join the platform).
+     *
+     * @throws JadeException if a container does not join in time or cannot host its bodies
+     */
+    void place(Mission mission, List<String> names, List<PrimitiveTable> tables,
+            List<AgentImplementation> implementations) throws InterruptedException {
+        remotes.values().forEach(remote -> remote.body().journal(mission.journal()));
+        served = new Served(mission, names, tables, implementations);
+        Map<String, List<PlacementContent.Body>> byContainer = new LinkedHashMap<>();
+        remotes.forEach((id, remote) -> byContainer.computeIfAbsent(remote.container(), c -> new ArrayList<>())
+                .add(new PlacementContent.Body(remote.name(), id, remote.className())));
+        for (Map.Entry<String, List<PlacementContent.Body>> placed : byContainer.entrySet()) {
+            AID host = find(placed.getKey());
+            containers.put(placed.getKey(), host);
+            ACLMessage request = request(host, CoordinatorAgent.PLACE, PlacementContent.write(placed.getValue()));
+            ACLMessage answer = await(request, "container " + placed.getKey() + " to create its bodies");
+            if (answer.getPerformative() != ACLMessage.INFORM) {
+                throw new JadeException("container " + placed.getKey() + " cannot host "
+                        + placed.getValue().stream().map(PlacementContent.Body::name).toList() + ": "
+                        + answer.getContent());
+            }
+        }
+    }
+
+    /**
+     * The mission's trace, plus shared events sent as {@code INFORM}s (conversation
+     * {@value CoordinatorAgent#EVENT}) to every body placed away from the main container:
+     * {@code {"event": "go", "block": "main", "emitter": "leader", "message": "now"}}.
+     */
+    Trace sendingEvents(Trace trace, List<String> names) {
+        return event -> {
+            trace.record(event);
+            if (event instanceof TraceEvent.EventEmitted emitted && emitted.block() != null && !remotes.isEmpty()) {
+                ACLMessage inform = new ACLMessage(ACLMessage.INFORM);
+                inform.setConversationId(CoordinatorAgent.EVENT);
+                inform.setLanguage(AclInvocations.LANGUAGE);
+                inform.setOntology(AclInvocations.ONTOLOGY);
+                inform.setContent(JsonContent.event(emitted.event(), emitted.block(), names.get(emitted.agent()),
+                        emitted.message()));
+                remotes.values().forEach(remote -> inform.addReceiver(new AID(remote.name(), AID.ISLOCALNAME)));
+                coordinator.post(inform);
+            }
+        };
+    }
+
+    /**
+     * Tells every container the mission has ended (each deletes its bodies, answers, and ends), waits
+     * for their answers, bounded, and deletes the coordinator.
+     */
+    void end() throws InterruptedException {
+        for (Map.Entry<String, AID> container : containers.entrySet()) {
+            try {
+                await(request(container.getValue(), CoordinatorAgent.END, "{}"), "container " + container.getKey()
+                        + " to end");
+            } catch (JadeException gone) {
+                // It ended on its own, or its JVM is gone: nothing of it is left to end.
+            }
+        }
+        try {
+            controller.kill();
+        } catch (StaleProxyException alreadyGone) {
+            // The platform is shutting down.
+        }
+        Thread thread = coordinator.thread();
+        if (thread != null) {
+            thread.join(agentsTimeout.toMillis());
+        }
+    }
+
+    private AID find(String container) throws InterruptedException {
+        DFAgentDescription template = DfEntries.service(null, DfEntries.CONTAINER_SERVICE, container);
+        long deadline = System.nanoTime() + agentsTimeout.toNanos();
+        try {
+            while (true) {
+                DFAgentDescription[] found = DFService.search(coordinator, template);
+                if (found.length > 0) {
+                    return found[0].getName();
+                }
+                if (System.nanoTime() - deadline > 0) {
+                    throw new JadeException("container " + container + " did not join the platform within "
+                            + agentsTimeout + " (start it with: masl container --main-host HOST --main-port PORT"
+                            + " --name " + container + ")");
+                }
+                Thread.sleep(50);
+            }
+        } catch (FIPAException e) {
+            throw new JadeException("the DF did not answer a search for container " + container, e);
+        }
+    }
+
+    private static ACLMessage request(AID receiver, String conversation, String content) {
+        ACLMessage request = new ACLMessage(ACLMessage.REQUEST);
+        request.addReceiver(receiver);
+        request.setConversationId(conversation);
+        request.setLanguage(AclInvocations.LANGUAGE);
+        request.setOntology(AclInvocations.ONTOLOGY);
+        request.setContent(content);
+        return request;
+    }
+
+    private ACLMessage await(ACLMessage request, String what) throws InterruptedException {
+        try {
+            return coordinator.ask(request).get(agentsTimeout.toMillis(), TimeUnit.MILLISECONDS);
+        } catch (TimeoutException e) {
+            throw new JadeException("waited " + agentsTimeout + " for " + what, e);
+        } catch (ExecutionException e) {
+            throw new JadeException(e.getCause().getMessage(), e.getCause());
+        }
+    }
+
+    /**
+     * A FIPA agent's request that a body relayed: filtered by the agent's state as an "other" when the
+     * agent serves it, then run through its stub (so on its body); the answer goes back to the body,
+     * which forwards it. On the coordinator's JADE thread; never blocks.
+     */
+    private void serveRelayed(ACLMessage relay) {
+        Served mission = served;
+        int id = mission == null ? -1 : mission.names().indexOf(relay.getSender().getLocalName());
+        if (id < 0 || !remotes.containsKey(id)) {
+            coordinator.post(AclInvocations.notUnderstood(relay, new ContentException(
+                    relay.getSender().getLocalName() + " is no body of this mission")));
+            return;
+        }
+        PrimitiveTable.Call call;
+        try {
+            call = mission.tables().get(id).bind(AclInvocations.readRequest(relay));
+        } catch (ContentException problem) {
+            coordinator.post(AclInvocations.notUnderstood(relay, problem));
+            return;
+        }
+        String name = mission.names().get(id);
+        String primitive = call.primitive().name();
+        mission.mission().submitInvocation(id, primitive,
+                () -> coordinator.post(Answers.run(relay, call, mission.implementations().get(id), null)),
+                () -> coordinator.post(Answers.refusal(relay, name, primitive)));
+    }
+}

@@ -1,0 +1,86 @@
+package masl.jade;
+
+import jade.lang.acl.ACLMessage;
+import jade.wrapper.StaleProxyException;
+import java.time.Duration;
+import java.util.List;
+import java.util.Objects;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import java.util.function.Function;
+import masl.runtime.descriptor.AgentType;
+
+/**
+ * A container that joins a platform to host the bodies of the MASL agents a mission places on it
+ * ({@code masl container --main-host H --main-port P --name C}): the programs run in the
+ * coordinator's JVM ({@link JadeLauncher#place}), the primitives here. It waits for the
+ * coordinator, hosts the bodies it asks for, and its mission ends when the coordinator says so.
+ *
+ * <pre>{@code
+ * try (MaslContainer container = MaslContainer.start(JadeOptions.join(host, port), "c2",
+ *         loader::loadByClassName, loader.implementationClasses())) {
+ *     container.awaitMissionEnd(Duration.ofMinutes(5));
+ * }
+ * }</pre>
+ */
+public final class MaslContainer implements AutoCloseable {
+
+    private static final Duration START_TIMEOUT = Duration.ofSeconds(30);
+
+    private final JadePlatform platform;
+    private final ContainerHost host;
+
+    private MaslContainer(JadePlatform platform, ContainerHost host) {
+        this.platform = platform;
+        this.host = host;
+    }
+
+    /**
+     * Joins the platform as container {@code name} and waits for a coordinator.
+     *
+     * @param types     the agent type of an implementation class name (its descriptor)
+     * @param classes   where the implementation classes are loaded from
+     * @param events    receives the shared events the coordinator sends the bodies ({@code INFORM},
+     *                  conversation {@value CoordinatorAgent#EVENT}), on a body's JADE thread
+     * @throws JadeException if the container cannot join or its agent cannot start
+     */
+    public static MaslContainer start(JadeOptions joining, String name, Function<String, AgentType> types,
+            ClassLoader classes, Consumer<ACLMessage> events) {
+        Objects.requireNonNull(name, "name");
+        JadePlatform platform = JadePlatform.start(joining.withContainerName(name));
+        try {
+            ContainerHost host = new ContainerHost(name, types, classes, events);
+            platform.container().acceptNewAgent(ContainerHost.agentName(name), host).start();
+            if (!host.ready().await(START_TIMEOUT.toMillis(), TimeUnit.MILLISECONDS)) {
+                throw new JadeException("container " + name + " did not register within " + START_TIMEOUT);
+            }
+            return new MaslContainer(platform, host);
+        } catch (StaleProxyException e) {
+            platform.close();
+            throw new JadeException("cannot start the agent of container " + name + " (is the name taken?)", e);
+        } catch (InterruptedException e) {
+            platform.close();
+            Thread.currentThread().interrupt();
+            throw new JadeException("interrupted while container " + name + " started", e);
+        } catch (RuntimeException e) {
+            platform.close();
+            throw e;
+        }
+    }
+
+    /** Waits until the coordinator says the mission ended; false if {@code timeout} elapsed first. */
+    public boolean awaitMissionEnd(Duration timeout) throws InterruptedException {
+        return host.ended().await(timeout.toMillis(), TimeUnit.MILLISECONDS);
+    }
+
+    /** The agents whose bodies the coordinator placed in this container, in its order. */
+    public List<String> hostedAgents() {
+        return host.hosted();
+    }
+
+    /** Deletes the bodies if the mission has not ended, and closes the container. */
+    @Override
+    public void close() {
+        platform.close();
+    }
+}

@@ -1,0 +1,35 @@
+package masl.jade;
+
+import java.time.Duration;
+import java.util.List;
+import masl.runtime.MissionProgram;
+
+/**
+ * Run in a second JVM by the tests of missions spanning containers: joins the platform at
+ * {@code host port} as container {@code name}, hosts the bodies the coordinator asks for (test
+ * agent types), prints each shared event it is sent and the bodies it hosted, and returns from {@code main} once the
+ * coordinator says the mission ended (exit status 0), without {@code System.exit}: the JVM ends by
+ * itself only if no thread is left. Exit status 3 if no mission ended within a minute.
+ */
+public final class BodyContainerMain {
+
+    private BodyContainerMain() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        boolean ended;
+        List<String> hosted;
+        try (MaslContainer container = MaslContainer.start(JadeOptions.join(args[0], Integer.parseInt(args[1])),
+                args[2], className -> TestPrograms.type(new MissionProgram.AgentSpec("", className)),
+                BodyContainerMain.class.getClassLoader(),
+                event -> System.out.println("event " + event.getContent()))) {
+            ended = container.awaitMissionEnd(Duration.ofMinutes(1));
+            hosted = container.hostedAgents();
+        }
+        System.out.println("hosted " + String.join(", ", hosted));
+        System.out.println(ended ? "mission ended" : "no mission ended");
+        if (!ended) {
+            System.exit(3);
+        }
+    }
+}

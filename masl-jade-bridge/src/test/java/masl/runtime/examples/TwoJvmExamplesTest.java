@@ -1,0 +1,94 @@
+package masl.runtime.examples;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Duration;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Function;
+import masl.jade.BodyContainerProcess;
+import masl.jade.JadeLauncher;
+import masl.jade.JadeOptions;
+import masl.jade.JadePlatform;
+import masl.jade.JadeThreads;
+import masl.jade.TestPrograms;
+import masl.runtime.AgentProgram;
+import masl.runtime.EntryDefinition;
+import masl.runtime.MissionOutcome;
+import masl.runtime.testing.Driver;
+import masl.runtime.testing.Missions;
+import masl.runtime.testing.TestAgent;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * The hand-translated E2, E4 and E6 with their agents split across two containers in two JVMs:
+ * this JVM's main container runs the mission (the coordinator), a second JVM
+ * ({@link BodyContainerProcess}) hosts the bodies of some agents. Journals as in-process.
+ */
+@Timeout(120)
+class TwoJvmExamplesTest {
+
+    private static final Duration TIMEOUT = Duration.ofSeconds(60);
+
+    private static JadePlatform platform;
+
+    @BeforeAll
+    static void startPlatform() {
+        platform = JadePlatform.start(JadeOptions.mainContainer());
+    }
+
+    @AfterAll
+    static void closePlatform() {
+        platform.close();
+        assertEquals(List.of(), JadeThreads.live(), "JADE threads left after the platform closed");
+    }
+
+    @Test
+    void e2WithTwoOfFiveAgentsInAnotherJvm() throws Exception {
+        Split run = split(E2SharedAndLocal.MAIN, 5, E2SharedAndLocal::new, Map.of("a1", "c2", "a3", "c2"));
+        assertEquals(inProcess(E2SharedAndLocal.MAIN, 5, E2SharedAndLocal::new), run.journal());
+        assertTrue(run.containerOutput().contains("hosted a1, a3\n"), run.containerOutput());
+    }
+
+    /** The leader and one worker away: the event reaches them as INFORMs; the journal as in-process. */
+    @Test
+    void e4WithTheLeaderAndAWorkerInAnotherJvm() throws Exception {
+        Split run = split(E4Events.MAIN, 4, E4Events::new, Map.of("a0", "c2", "a2", "c2"));
+        assertEquals(sortedLines(inProcess(E4Events.MAIN, 4, E4Events::new)), sortedLines(run.journal()));
+        assertTrue(run.journal().startsWith("heard now\n"), run.journal());
+        assertTrue(run.containerOutput().contains(
+                "event {\"event\":\"go\",\"block\":\"main\",\"emitter\":\"a0\",\"message\":\"now\"}\n"),
+                run.containerOutput());
+    }
+
+    @Test
+    void e6WithTheKeeperAndAPassengerInAnotherJvm() throws Exception {
+        Split run = split(E6OneAtATime.MAIN, 4, E6OneAtATime::new, Map.of("a0", "c2", "a3", "c2"));
+        assertEquals(inProcess(E6OneAtATime.MAIN, 4, E6OneAtATime::new), run.journal());
+    }
+
+    private record Split(String journal, String containerOutput) {
+    }
+
+    private static String sortedLines(String journal) {
+        return String.join("\n", journal.lines().sorted().toList());
+    }
+
+    private static String inProcess(EntryDefinition main, int agents, Function<TestAgent, AgentProgram> program) {
+        return Missions.run(Driver.THREADS, main, agents, program).journal();
+    }
+
+    private static Split split(EntryDefinition main, int agents, Function<TestAgent, AgentProgram> program,
+            Map<String, String> placement) throws Exception {
+        try (BodyContainerProcess container = BodyContainerProcess.start(platform, "c2")) {
+            MissionOutcome outcome = JadeLauncher.of(TestPrograms.of(main, agents, program))
+                    .types(TestPrograms::type).place(placement).run(platform, TIMEOUT);
+            assertTrue(outcome.completed(), outcome + "\n" + container.output());
+            return new Split(outcome.journal(), container.assertEndsByItself());
+        }
+    }
+}

@@ -1,0 +1,71 @@
+package masl.e2e;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.regex.Pattern;
+import masl.translator.cli.Masl;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Issue 11, mission 3: {@code missions/planner-team.masl}, three wheeled robots and a software
+ * planner through {@code masl run --sim}, lock-step. Two boxes the robots do not know about stand
+ * across the paths of k0 and k2; they report them to the planner by events, drive around them on
+ * the way-points the planner returns to their asynchronous invocations (collected by labels), and
+ * every robot ends at its goal without touching a box.
+ */
+class PlannerTeamMissionTest {
+
+    private static final Path MISSIONS = Path.of(System.getProperty("user.dir")).resolve("missions");
+    /** How close to its goal a robot's hull centre must end (m); the mission stops within 2 cm by odometry. */
+    private static final double TOLERANCE = 0.05;
+    /** The hull's centre ahead of the centre of mass, and the hull's half diagonal (wheeled-robot.xode). */
+    private static final double HULL_AHEAD = 0.0045;
+    private static final double HALF_DIAGONAL = Math.hypot(0.05, 0.035);
+    /** The boxes of planner-arena.xode: centre x, centre y, half size. */
+    private static final double[][] BOXES = {{0.8, 0.03, 0.1}, {1.0, 1.57, 0.1}};
+
+    @TempDir
+    Path folder;
+
+    @Test
+    void everyRobotReachesItsGoalAroundTheObstaclesItReported() throws Exception {
+        String journal = masl(MISSIONS.resolve("planner-team.scenario.xml"), folder);
+        Trajectories trajectories = Trajectories.read(folder.resolve("trajectories.csv"));
+
+        double[][] goals = {{1.6, 0.0}, {1.6, 0.8}, {1.6, 1.6}};
+        for (int robot = 0; robot < goals.length; robot++) {
+            Trajectories.Sample end = trajectories.last("k" + robot);
+            double x = end.x() + HULL_AHEAD * Math.cos(end.heading());
+            double y = end.y() + HULL_AHEAD * Math.sin(end.heading());
+            double miss = Math.hypot(x - goals[robot][0], y - goals[robot][1]);
+            assertTrue(miss < TOLERANCE, "k" + robot + " ended " + miss + " m from its goal");
+            assertTrue(journal.contains("k" + robot + " reached its goal"), journal);
+            for (Trajectories.Sample sample : trajectories.of("k" + robot)) {
+                for (double[] box : BOXES) {
+                    double clearance = Math.max(Math.abs(sample.x() - box[0]), Math.abs(sample.y() - box[1])) - box[2];
+                    assertTrue(clearance > HALF_DIAGONAL, "k" + robot + " touched a box at " + sample);
+                }
+            }
+        }
+        assertEquals(List.of("k0", "k2"), Pattern.compile("(k\\d) saw an obstacle").matcher(journal)
+                .results().map(match -> match.group(1)).sorted().toList(), journal);
+        assertTrue(journal.contains("), 1 known\n") && journal.contains("), 2 known\n"), journal);
+    }
+
+    private static String masl(Path scenario, Path out) {
+        ByteArrayOutputStream stdout = new ByteArrayOutputStream();
+        ByteArrayOutputStream stderr = new ByteArrayOutputStream();
+        int status = new Masl(new PrintStream(stdout, true, StandardCharsets.UTF_8),
+                new PrintStream(stderr, true, StandardCharsets.UTF_8))
+                .run("run", "--sim", scenario.toString(), "--out", out.toString(), "--timeout", "120");
+        assertEquals(0, status, () -> stderr.toString(StandardCharsets.UTF_8));
+        return stdout.toString(StandardCharsets.UTF_8);
+    }
+}
