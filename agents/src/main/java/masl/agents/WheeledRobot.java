@@ -6,12 +6,12 @@ import masl.agents.robots.DifferentialDrive;
  * A two-wheeled differential robot, Khepera-like (descriptor {@code WheeledRobot.xml}): wheel speed
  * control, eight infra-red proximity sensors, odometry and a battery. The primitives act on a
  * {@link DifferentialDrive} the launcher attaches before the mission starts (the simulator's body,
- * or a real robot's driver).
+ * or a real robot's driver). A {@link Robot}: programs written for any robot drive it too.
  *
  * <p>Sensors 0…7 look, relative to the robot's forward direction: 90°, 45°, 10°, −10°, −45°,
  * −90° (left side to right side, as a Khepera's front ring), then 170° and −170° (back).
  */
-public class WheeledRobot extends Default {
+public class WheeledRobot extends Robot {
 
     /** Number of proximity sensors. */
     public static final int SENSORS = 8;
@@ -53,6 +53,7 @@ public class WheeledRobot extends Default {
     }
 
     /** Stops both wheels. */
+    @Override
     public void stop() {
         drive().setWheelSpeeds(0, 0);
     }
@@ -63,21 +64,25 @@ public class WheeledRobot extends Default {
     }
 
     /** Odometry: x (m) since the start, in the frame of the starting pose's world. */
+    @Override
     public double getX() {
         return drive().odometry()[0];
     }
 
     /** Odometry: y (m). */
+    @Override
     public double getY() {
         return drive().odometry()[1];
     }
 
     /** Odometry: heading (rad, counter-clockwise from world +X). */
+    @Override
     public double getHeading() {
         return drive().odometry()[2];
     }
 
     /** Battery charge in [0, 1]. */
+    @Override
     public double getBattery() {
         return drive().battery();
     }

@@ -1,19 +1,14 @@
 package masl.jade;
 
 import jade.core.AID;
-import jade.core.Agent;
-import jade.core.behaviours.CyclicBehaviour;
-import jade.domain.DFService;
-import jade.domain.FIPAException;
+import jade.core.behaviours.Behaviour;
 import jade.lang.acl.ACLMessage;
-import jade.lang.acl.MessageTemplate;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.function.Consumer;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
 import masl.jade.acl.JsonContent;
@@ -34,75 +29,36 @@ import masl.runtime.AgentImplementation;
  * by the agent's permeability state as an <em>other</em> when the agent serves it, as in-process,
  * and has it run here; its answer goes back to the requester with the requester's
  * {@code in-reply-to}.
- * <li>A shared event ({@code INFORM}, {@value CoordinatorAgent#EVENT}) is handed to the
- * container's event listener.
  * </ul>
  */
-final class BodyAgent extends Agent {
+final class BodyAgent extends RegisteredMaslAgent {
     private static final long serialVersionUID = 1L;
 
     private final transient AgentImplementation implementation;
     private final transient BodyJournal journal;
-    private final transient PrimitiveTable primitives;
     private final transient AID coordinator;
     private final transient ExecutorService primitiveThreads;
-    private final transient CountDownLatch ready;
-    private final transient Consumer<ACLMessage> events;
     private final transient Map<String, ACLMessage> relayed = new ConcurrentHashMap<>();
     private final transient AtomicLong relays = new AtomicLong();
-    private transient volatile Thread thread;
-    private transient volatile FIPAException registrationFailure;
 
     BodyAgent(AgentImplementation implementation, BodyJournal journal, PrimitiveTable primitives, AID coordinator,
-            ExecutorService primitiveThreads, CountDownLatch ready, Consumer<ACLMessage> events) {
+            ExecutorService primitiveThreads, CountDownLatch ready) {
+        super(primitives, ready);
         this.implementation = implementation;
         this.journal = journal;
-        this.primitives = primitives;
         this.coordinator = coordinator;
         this.primitiveThreads = primitiveThreads;
-        this.ready = ready;
-        this.events = events;
     }
 
     @Override
-    protected void setup() {
-        thread = Thread.currentThread();
-        try {
-            DFService.register(this, DfEntries.maslAgent(getAID(), primitives));
-        } catch (FIPAException e) {
-            registrationFailure = e;
-        }
-        addBehaviour(new Receiver());
-        ready.countDown();
-    }
-
-    @Override
-    protected void takeDown() {
-        if (registrationFailure == null) {
-            try {
-                DFService.deregister(this);
-            } catch (FIPAException e) {
-                // The platform is going away with its DF.
-            }
-        }
-    }
-
-    FIPAException registrationFailure() {
-        return registrationFailure;
-    }
-
-    Thread thread() {
-        return thread;
+    Behaviour requestServer() {
+        return new MessagesButTheDfs(this, this::take);
     }
 
     private void take(ACLMessage message) {
         ACLMessage requester = message.getInReplyTo() == null ? null : relayed.remove(message.getInReplyTo());
         if (requester != null) {
             send(forwarded(requester, message));
-            return;
-        }
-        if (message.getPerformative() == ACLMessage.INFORM && CoordinatorAgent.EVENT.equals(message.getConversationId())) {
-            events.accept(message);
             return;
         }
         if (message.getPerformative() == ACLMessage.NOT_UNDERSTOOD) {
@@ -153,22 +109,5 @@ final class BodyAgent extends Agent {
         reply.setOntology(AclInvocations.ONTOLOGY);
         reply.setContent(answer.getContent());
         return reply;
-    }
-
-    /** Takes every message but the DF's (the DF calls of this agent wait for those). */
-    private final class Receiver extends CyclicBehaviour {
-        private static final long serialVersionUID = 1L;
-
-        private final MessageTemplate notFromTheDf = MessageTemplate.not(MessageTemplate.MatchSender(getDefaultDF()));
-
-        @Override
-        public void action() {
-            ACLMessage message = myAgent.receive(notFromTheDf);
-            if (message == null) {
-                block();
-            } else {
-                take(message);
-            }
-        }
     }
 }

@@ -1,11 +1,9 @@
 package masl.jade;
 
 import jade.core.Agent;
-import jade.core.behaviours.CyclicBehaviour;
 import jade.domain.DFService;
 import jade.domain.FIPAException;
 import jade.lang.acl.ACLMessage;
-import jade.lang.acl.MessageTemplate;
 import jade.wrapper.AgentController;
 import jade.wrapper.StaleProxyException;
 import java.util.ArrayList;
@@ -31,7 +29,8 @@ import masl.runtime.descriptor.AgentType;
  * {@code NAME}. It answers the coordinator: {@value CoordinatorAgent#PLACE} creates the bodies of
  * the agents placed here ({@link BodyAgent}; {@code INFORM} once they exist and are registered,
  * {@code FAILURE} with the reason otherwise), {@value CoordinatorAgent#END} deletes them, answers,
- * and ends the container's mission.
+ * and ends the container's mission. Shared events ({@code INFORM} {@value CoordinatorAgent#EVENT})
+ * go to the container's listener.
  */
 final class ContainerHost extends Agent {
     private static final long serialVersionUID = 1L;
@@ -67,7 +66,7 @@ final class ContainerHost extends Agent {
         } catch (FIPAException e) {
             throw new JadeException("the DF refused to register container " + containerName, e);
         }
-        addBehaviour(new Receiver());
+        addBehaviour(new MessagesButTheDfs(this, this::take));
         ready.countDown();
     }
 
@@ -102,6 +101,9 @@ final class ContainerHost extends Agent {
             deleteBodies();
             send(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)));
             ended.countDown();
+        } else if (message.getPerformative() == ACLMessage.INFORM
+                && CoordinatorAgent.EVENT.equals(message.getConversationId())) {
+            events.accept(message);
         } else if (message.getPerformative() != ACLMessage.NOT_UNDERSTOOD) {
             send(AclInvocations.notUnderstood(message, new ContentException(
                     "a MASL container answers its mission's coordinator only")));
@@ -152,7 +154,7 @@ final class ContainerHost extends Agent {
         BodyJournal journal = new BodyJournal(body.proxyId());
         implementation.bind(journal);
         return new BodyAgent(implementation, journal, new PrimitiveTable(type, implementation.getClass()),
-                request.getSender(), primitiveThreads, registered, events);
+                request.getSender(), primitiveThreads, registered);
     }
 
     /** Deletes the bodies and waits, bounded, until their threads have ended; stops their primitives' threads. */
@@ -178,23 +180,6 @@ final class ContainerHost extends Agent {
         bodies.clear();
         if (primitiveThreads != null) {
             primitiveThreads.shutdownNow();
-        }
-    }
-
-    /** Takes every message but the DF's, which the DF calls made by this agent wait for. */
-    private final class Receiver extends CyclicBehaviour {
-        private static final long serialVersionUID = 1L;
-
-        private final MessageTemplate notFromTheDf = MessageTemplate.not(MessageTemplate.MatchSender(getDefaultDF()));
-
-        @Override
-        public void action() {
-            ACLMessage message = myAgent.receive(notFromTheDf);
-            if (message == null) {
-                block();
-            } else {
-                take(message);
-            }
         }
     }
 }

@@ -1,11 +1,9 @@
 package masl.jade;
 
 import jade.core.Agent;
-import jade.core.behaviours.CyclicBehaviour;
 import jade.domain.DFService;
 import jade.domain.FIPAException;
 import jade.lang.acl.ACLMessage;
-import jade.lang.acl.MessageTemplate;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
@@ -36,7 +34,7 @@ final class CoordinatorAgent extends Agent {
     static final String END = "masl-end";
     /** A body relaying a FIPA agent's request, which the coordinator filters and serves. */
     static final String RELAY = "masl-relay";
-    /** A shared event emitted in the mission, sent to the bodies of its perceivers. */
+    /** A shared event emitted in the mission, sent to the containers hosting bodies. */
     static final String EVENT = "masl-event";
 
     private final transient Map<String, CompletableFuture<ACLMessage>> pending = new ConcurrentHashMap<>();
@@ -59,7 +57,7 @@ final class CoordinatorAgent extends Agent {
         } catch (FIPAException e) {
             // Only a directory entry: the mission does not need it.
         }
-        addBehaviour(new Receiver());
+        addBehaviour(new MessagesButTheDfs(this, this::take));
         ready.countDown();
     }
 
@@ -106,23 +104,6 @@ final class CoordinatorAgent extends Agent {
         } else if (message.getPerformative() != ACLMessage.NOT_UNDERSTOOD) {
             send(AclInvocations.notUnderstood(message, new ContentException(
                     "the mission's coordinator answers its bodies and containers only")));
-        }
-    }
-
-    /** Takes every message but the DF's, which the DF calls made on this agent wait for. */
-    private final class Receiver extends CyclicBehaviour {
-        private static final long serialVersionUID = 1L;
-
-        private final MessageTemplate notFromTheDf = MessageTemplate.not(MessageTemplate.MatchSender(getDefaultDF()));
-
-        @Override
-        public void action() {
-            ACLMessage message = myAgent.receive(notFromTheDf);
-            if (message == null) {
-                block();
-            } else {
-                take(message);
-            }
         }
     }
 }

@@ -13,6 +13,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
@@ -43,8 +44,8 @@ final class Distribution {
     private final AgentController controller;
     /** Remote agents by proxy id, in proxy id order. */
     private final Map<Integer, Remote> remotes = new LinkedHashMap<>();
-    /** The agent of each container that hosts bodies, once found. */
-    private final Map<String, AID> containers = new LinkedHashMap<>();
+    /** The agent of each container that hosts bodies, once found; read by emitting agents' threads. */
+    private final Map<String, AID> containers = new ConcurrentHashMap<>();
     private volatile Served served;
 
     private record Remote(String name, String container, String className, RemoteBody body) {
@@ -129,20 +130,20 @@ final class Distribution {
 
     /**
      * The mission's trace, plus shared events sent as {@code INFORM}s (conversation
-     * {@value CoordinatorAgent#EVENT}) to every body placed away from the main container:
+     * {@value CoordinatorAgent#EVENT}) to every container hosting bodies, for its observers:
      * {@code {"event": "go", "block": "main", "emitter": "leader", "message": "now"}}.
      */
     Trace sendingEvents(Trace trace, List<String> names) {
         return event -> {
             trace.record(event);
-            if (event instanceof TraceEvent.EventEmitted emitted && emitted.block() != null && !remotes.isEmpty()) {
+            if (event instanceof TraceEvent.EventEmitted emitted && emitted.block() != null && !containers.isEmpty()) {
                 ACLMessage inform = new ACLMessage(ACLMessage.INFORM);
                 inform.setConversationId(CoordinatorAgent.EVENT);
                 inform.setLanguage(AclInvocations.LANGUAGE);
                 inform.setOntology(AclInvocations.ONTOLOGY);
                 inform.setContent(JsonContent.event(emitted.event(), emitted.block(), names.get(emitted.agent()),
                         emitted.message()));
-                remotes.values().forEach(remote -> inform.addReceiver(new AID(remote.name(), AID.ISLOCALNAME)));
+                containers.values().forEach(inform::addReceiver);
                 coordinator.post(inform);
             }
         };

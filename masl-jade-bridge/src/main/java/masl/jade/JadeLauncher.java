@@ -26,7 +26,9 @@ import masl.runtime.trace.Trace;
  * running in a threaded behaviour of its JADE agent ({@link MaslJadeAgent},
  * {@link ThreadedBehaviourScheduler}). The mission starts once every JADE agent exists and is
  * registered; afterwards the JADE agents are deleted (and deregistered). The outcome is the one the
- * runtime gives in-process: status, journal, report.
+ * runtime gives in-process: status, journal, report. With {@link #place}, the bodies of some agents
+ * live in other containers ({@link MaslContainer}) while every program still runs here, through the
+ * {@code masl-coordinator} agent ({@link Distribution}).
  *
  * <pre>{@code
  * MissionOutcome outcome = JadeLauncher.of(program)

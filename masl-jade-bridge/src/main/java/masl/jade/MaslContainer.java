@@ -40,8 +40,8 @@ public final class MaslContainer implements AutoCloseable {
      *
      * @param types     the agent type of an implementation class name (its descriptor)
      * @param classes   where the implementation classes are loaded from
-     * @param events    receives the shared events the coordinator sends the bodies ({@code INFORM},
-     *                  conversation {@value CoordinatorAgent#EVENT}), on a body's JADE thread
+     * @param events    receives the shared events the coordinator sends this container ({@code INFORM},
+     *                  conversation {@value CoordinatorAgent#EVENT}), on the container agent's JADE thread
      * @throws JadeException if the container cannot join or its agent cannot start
      */
     public static MaslContainer start(JadeOptions joining, String name, Function<String, AgentType> types,

@@ -1,9 +1,7 @@
 package masl.jade;
 
-import jade.core.Agent;
+import jade.core.behaviours.Behaviour;
 import jade.core.behaviours.CyclicBehaviour;
-import jade.domain.DFService;
-import jade.domain.FIPAException;
 import jade.lang.acl.ACLMessage;
 import java.util.concurrent.CountDownLatch;
 import masl.jade.acl.AclInvocations;
@@ -24,57 +22,24 @@ import masl.runtime.Mission;
  * <em>other</em>, else the primitive runs and the answer is {@code INFORM} with its result or
  * {@code FAILURE} with what it threw.
  */
-final class MaslJadeAgent extends Agent {
+final class MaslJadeAgent extends RegisteredMaslAgent {
     private static final long serialVersionUID = 1L;
 
     private final transient int proxyId;
     private final transient AgentImplementation implementation;
-    private final transient PrimitiveTable primitives;
     private final transient Mission mission;
-    private final transient CountDownLatch ready;
-    private transient volatile Thread thread;
-    private transient volatile FIPAException registrationFailure;
 
     MaslJadeAgent(int proxyId, AgentImplementation implementation, PrimitiveTable primitives, Mission mission,
             CountDownLatch ready) {
+        super(primitives, ready);
         this.proxyId = proxyId;
         this.implementation = implementation;
-        this.primitives = primitives;
         this.mission = mission;
-        this.ready = ready;
     }
 
     @Override
-    protected void setup() {
-        thread = Thread.currentThread();
-        try {
-            DFService.register(this, DfEntries.maslAgent(getAID(), primitives));
-        } catch (FIPAException e) {
-            registrationFailure = e;
-        }
-        addBehaviour(new RequestServer());
-        ready.countDown();
-    }
-
-    @Override
-    protected void takeDown() {
-        if (registrationFailure == null) {
-            try {
-                DFService.deregister(this);
-            } catch (FIPAException e) {
-                // The platform is going away with its DF: nothing is left to deregister from.
-            }
-        }
-    }
-
-    /** Why the DF refused the registration, or null if it accepted it. */
-    FIPAException registrationFailure() {
-        return registrationFailure;
-    }
-
-    /** The agent's own JADE thread (set once it has started). */
-    Thread thread() {
-        return thread;
+    Behaviour requestServer() {
+        return new RequestServer();
     }
 
     private void answer(ACLMessage message) {

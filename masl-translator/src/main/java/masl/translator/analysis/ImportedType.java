@@ -20,14 +20,19 @@ public record ImportedType(String name, String file, AgentType descriptor, boole
     }
 
     /**
-     * Whether agents of this type are agents of {@code other}. A type made by {@code type … use} is a
-     * subtype of nothing but itself and has no subtypes: it exists to be told apart.
+     * Whether agents of this type are agents of {@code other}. A type made by {@code type … use} exists
+     * to be told apart: it has no subtypes, and it is no subtype of another name of its own
+     * descriptor; it is still a subtype of the types its descriptor extends ({@code type Spare use
+     * SoftWheeledRobot.xml;} makes robots: {@code Robot r = newAgent(Spare);} is fine).
      */
     public boolean isSubtypeOf(ImportedType other) {
         if (this.equals(other)) {
             return true;
         }
-        if (!isLoaded() || !other.isLoaded() || definedByType || other.definedByType) {
+        if (!isLoaded() || !other.isLoaded() || other.definedByType) {
+            return false;
+        }
+        if (definedByType && descriptor.fullClassName().equals(other.descriptor.fullClassName())) {
             return false;
         }
         return descriptor.isSubtypeOf(other.descriptor);

@@ -51,6 +51,7 @@ final class ExpressionWriter {
     /** The expression whose asynchronous invocation gives its future rather than its awaited value. */
     private ExpressionContext unawaited;
     private boolean usesDynamicMembers;
+    private final TypeTests typeTests;
     /** Inside the function of an atomic update: the variable updated and the function's parameter. */
     private Variable updated;
     private String updatedParameter;
@@ -62,6 +63,7 @@ final class ExpressionWriter {
         this.selfType = selfType;
         this.unsupported = unsupported;
         this.queries = new TreeQueries(program, selfType);
+        this.typeTests = new TypeTests(program, selfType);
         this.assignments = new AssignmentWriter(program, structure, this, queries, unsupported);
         this.futures = new FutureVariables(program, queries);
     }
@@ -189,7 +191,7 @@ final class ExpressionWriter {
      */
     String labelLaunch(Label label, ExpressionContext agent, String callee, String name,
             List<ExpressionContext> arguments, String store, ParserRuleContext where) {
-        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(program.typeOf(agent));
+        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(agent);
         Optional<Primitive> found = calleeType == null ? Optional.empty() : calleeType.findPrimitive(name);
         if (found.isEmpty()) {
             return unsupported.report(where, "a label invocation of a primitive that the addressee's declared type lacks");
@@ -230,7 +232,7 @@ final class ExpressionWriter {
                 ? (call instanceof MASLParser.MethodCallContext method && !TreeQueries.isThis(method.expression())
                         ? method.expression() : null)
                 : labelForm(((MASLParser.MethodCallContext) call).expression()).agent();
-        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(program.typeOf(agent));
+        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(agent);
         Primitive primitive = calleeType == null || name == null ? null : calleeType.findPrimitive(name).orElse(null);
         return primitive != null && !primitive.synchronous();
     }
@@ -248,6 +250,11 @@ final class ExpressionWriter {
     /** Whether members of Object-typed values were used: the program class then needs {@link DynamicMembers}. */
     boolean usesDynamicMembers() {
         return usesDynamicMembers;
+    }
+
+    /** Whether a type test on another agent was written: the program class then needs {@link TypeTests#helper()}. */
+    boolean usesAgentTypeTests() {
+        return typeTests.used();
     }
 
     ImportedType selfType() {
@@ -398,7 +405,10 @@ final class ExpressionWriter {
         } else if (expression instanceof MASLParser.AssignExprContext assignment) {
             return assignments.assignment(assignment, false);
         } else if (expression instanceof MASLParser.InstanceofExprContext test) {
-            // An agent type is its implementation class; type arguments are erased, as the analysis does.
+            if (typeTests.isAgentTypeTest(test)) {
+                return typeTests.write(test, expr(test.expression()));
+            }
+            // Type arguments are erased, as the analysis does.
             return expr(test.expression()) + " instanceof " + JavaTypes.name(program.typeOf(test.javaType()));
         }
         return unsupported.report(expression, "this expression");
@@ -628,7 +638,7 @@ final class ExpressionWriter {
     private String primitiveCall(ExpressionContext receiver, String name, List<ExpressionContext> arguments,
             ParserRuleContext where) {
         boolean internal = receiver == null || TreeQueries.isThis(receiver);
-        var receiverType = internal ? selfType.descriptor() : queries.descriptorOf(program.typeOf(receiver));
+        var receiverType = internal ? selfType.descriptor() : queries.descriptorOf(receiver);
         var calleeType = receiverType;
         Optional<Primitive> found = calleeType == null ? Optional.empty() : calleeType.findPrimitive(name);
         if (found.isEmpty() && !internal && receiverType != null) {
@@ -690,7 +700,7 @@ final class ExpressionWriter {
     /** A read of attribute {@code name} of {@code owner}'s agent (the current one when null or {@code this}), §8.4. */
     private String attributeRead(ExpressionContext owner, String name, ParserRuleContext where) {
         boolean own = owner == null || TreeQueries.isThis(owner);
-        var ownerType = own ? selfType.descriptor() : queries.descriptorOf(program.typeOf(owner));
+        var ownerType = own ? selfType.descriptor() : queries.descriptorOf(owner);
         Optional<Attribute> attribute = ownerType == null ? Optional.empty() : ownerType.findAttribute(name);
         if (attribute.isEmpty()) {
             return unsupported.report(where, "an attribute that the owner's declared type lacks");
@@ -699,23 +709,29 @@ final class ExpressionWriter {
         if (constant != null) {
             return constant;
         }
+        if (!own && queries.namedType(owner) != null) {
+            return unsupported.report(where, "a static attribute read through its type, unless a constant,");
+        }
         return calls.read(attribute.get(), ownerType.fullClassName(), own ? "self" : expr(owner));
     }
 
     /** A write of attribute {@code name} of {@code owner}'s agent, §8.4; {@code value} is Java. */
     String attributeWrite(ExpressionContext owner, String name, String value, ParserRuleContext where) {
         boolean own = owner == null || TreeQueries.isThis(owner);
-        var ownerType = own ? selfType.descriptor() : queries.descriptorOf(program.typeOf(owner));
+        var ownerType = own ? selfType.descriptor() : queries.descriptorOf(owner);
         Optional<Attribute> attribute = ownerType == null ? Optional.empty() : ownerType.findAttribute(name);
         if (attribute.isEmpty()) {
             return unsupported.report(where, "an attribute that the owner's declared type lacks");
+        }
+        if (!own && queries.namedType(owner) != null) {
+            return unsupported.report(where, "a write of a static attribute through its type");
         }
         return calls.write(attribute.get(), ownerType.fullClassName(), own ? "self" : expr(owner), value);
     }
 
     /** The consumer storing a label's result in attribute {@code name} of an agent (§10): no permeability filter. */
     String attributeStore(ExpressionContext owner, String ownerJava, String name, ParserRuleContext where) {
-        var ownerType = owner == null ? selfType.descriptor() : queries.descriptorOf(program.typeOf(owner));
+        var ownerType = owner == null ? selfType.descriptor() : queries.descriptorOf(owner);
         Optional<Attribute> attribute = ownerType == null ? Optional.empty() : ownerType.findAttribute(name);
         if (attribute.isEmpty()) {
             return unsupported.report(where, "an attribute that the owner's declared type lacks");

@@ -65,7 +65,7 @@ final class ProgramClassWriter {
         out.add("");
         out.add("    private final " + implementation + " self;");
         for (Map.Entry<AgentDecl, String> agent : expressions.agents().entrySet()) {
-            out.add("    private final " + agent.getKey().declaredType().descriptor().fullClassName() + " "
+            out.add("    private final " + agent.getKey().instantiatedType().descriptor().fullClassName() + " "
                     + agent.getValue() + ";");
         }
         for (String label : expressions.localLabels().values()) {
@@ -91,7 +91,7 @@ final class ProgramClassWriter {
         out.add("    " + className + "(" + implementation + " self, AgentImplementation[] agents) {");
         out.add("        this.self = self;");
         for (Map.Entry<AgentDecl, String> agent : expressions.agents().entrySet()) {
-            out.add("        this." + agent.getValue() + " = (" + agent.getKey().declaredType().descriptor().fullClassName()
+            out.add("        this." + agent.getValue() + " = (" + agent.getKey().instantiatedType().descriptor().fullClassName()
                     + ") agents[" + agent.getKey().proxyId() + "];");
         }
         out.add("    }");
@@ -126,6 +126,10 @@ final class ProgramClassWriter {
         if (expressions.usesDynamicMembers()) {
             out.add("");
             out.addAll(DynamicMembers.helpers());
+        }
+        if (expressions.usesAgentTypeTests()) {
+            out.add("");
+            out.addAll(TypeTests.helper());
         }
         for (List<String> helper : expressions.calls().helpers()) {
             out.add("");

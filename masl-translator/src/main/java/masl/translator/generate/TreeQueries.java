@@ -5,7 +5,9 @@ import masl.runtime.descriptor.AgentType;
 import masl.runtime.descriptor.Primitive;
 import masl.translator.analysis.MaslType;
 import masl.translator.analysis.Symbol;
+import masl.translator.analysis.TypeRef;
 import masl.grammar.MASLParser.ExpressionContext;
+import masl.translator.analysis.AgentDecl;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.ImportedType;
 import masl.translator.analysis.Member;
@@ -34,6 +36,7 @@ final class TreeQueries {
     /**
      * Whether {@code tree} uses a primitive or attribute of the current agent that this agent's type
      * lacks: the statement is then a {@code nop()} for it, and a test or condition is false (§4).
+     * Another agent's missing member is the call's business (a polymorphic receiver gives the default).
      */
     boolean usesAbsentMember(ParseTree tree) {
         if (tree instanceof ParserRuleContext node && isSelfAccess(node)
@@ -72,6 +75,31 @@ final class TreeQueries {
                 && primary.primary() instanceof MASLParser.ThisExprContext;
     }
 
+    /**
+     * The descriptor of the agent {@code receiver} stands for: a named agent's instantiated type (its
+     * members are those of the agent it names, MASL §4), else {@link #descriptorOf(MaslType) its static type's}.
+     */
+    AgentType descriptorOf(ExpressionContext receiver) {
+        AgentType named = namedAgentType(receiver);
+        if (named == null) {
+            named = namedType(receiver);
+        }
+        return named != null ? named : descriptorOf(program.typeOf(receiver));
+    }
+
+    /** The instantiated type of the agent {@code receiver} names ({@code rover} of {@code Robot rover = newAgent(Rover)}), or null. */
+    private AgentType namedAgentType(ExpressionContext receiver) {
+        return program.symbolOf(receiver).orElse(null) instanceof AgentDecl agent && agent.instantiatedType().isLoaded()
+                ? agent.instantiatedType().descriptor() : null;
+    }
+
+    /** The agent type {@code receiver} names, as {@code Soft} in {@code Soft.MOVE_COST} (a static member), or null. */
+    AgentType namedType(ExpressionContext receiver) {
+        return program.symbolOf(receiver).orElse(null) instanceof TypeRef ref
+                && ref.type() instanceof MaslType.AgentRef agent && agent.type() != null && agent.type().isLoaded()
+                ? agent.type().descriptor() : null;
+    }
+
     /** The descriptor of an agent-typed value's static type: the root type's for "any agent"; null if not an agent. */
     AgentType descriptorOf(MaslType type) {
         if (!(type instanceof MaslType.AgentRef agent)) {
@@ -94,7 +122,7 @@ final class TreeQueries {
             return null;
         }
         AgentType callee = isInternalCall(node) ? selfType.descriptor()
-                : node instanceof MASLParser.MethodCallContext call ? descriptorOf(program.typeOf(call.expression()))
+                : node instanceof MASLParser.MethodCallContext call ? descriptorOf(call.expression())
                 : null;
         return callee == null ? null : callee.findPrimitive(member.name()).orElse(null);
     }

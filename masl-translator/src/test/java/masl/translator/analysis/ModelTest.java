@@ -62,6 +62,23 @@ class ModelTest {
     }
 
     @Test
+    void typeMadeByTypeUseIsDistinctFromItsDescriptorsOtherNamesButASubtypeOfWhatItExtends() {
+        Analysis.Result spare = Analysis.analyze("""
+                import robots/Khepera.xml as K;
+                import robots/Explorer.xml;
+                type Spare use robots/Explorer.xml;
+                K k = newAgent(Spare);
+                """);
+        spare.assertNoError();
+        ImportedType made = spare.program().types().get("Spare");
+        ImportedType explorer = spare.program().types().get("Explorer");
+        assertTrue(made.isSubtypeOf(spare.program().types().get("K")));
+        assertFalse(made.isSubtypeOf(explorer));
+        assertFalse(explorer.isSubtypeOf(made));
+        assertEquals("Spare", spare.program().agents().get(0).instantiatedType().name());
+    }
+
+    @Test
     void agentsWithTheirTypesAndProxyIds() {
         List<AgentDecl> agents = program.agents();
         assertEquals(List.of("k1", "k2", "d", "o"), agents.stream().map(AgentDecl::name).toList());
