@@ -121,7 +121,7 @@ public final class Bench {
                 "MASL/bare", "MASL (cpu)", "bare (cpu)", "MASL/bare");
         MaslSimulation simulation = MaslSimulation.prepare();
         // ode4j's code is still being compiled after one run of each: the first runs would measure the JIT.
-        Map<String, double[]> figures = interleaved(3, RUNS, List.of(new Measure("masl", simulation.masl(false)),
+        Map<String, double[]> figures = interleaved(2, RUNS, List.of(new Measure("masl", simulation.masl(false)),
                 new Measure("bare", simulation.bare(false)), new Measure("masl-cpu", simulation.masl(true)),
                 new Measure("bare-cpu", simulation.bare(true))));
         double masl = median(figures.get("masl"));
@@ -185,29 +185,55 @@ public final class Bench {
         LockStepRun pool = new TaskPoolWaves();
         LockStepRun threads = new PhaserThreads();
         System.out.println("1. Lock-step: N agents in one synchronous block, steps per second (one barrier trip = one step),");
-        System.out.println("   timed from the end of the first step to the end of the last (start-up left out), median of " + RUNS);
-        System.out.printf(Locale.ROOT, "%8s | %14s | %14s | %14s | %12s | %12s%n",
-                "N", "MASL (pool)", pool.name().replace("Java tasks, ", ""), "threads+Phaser", "MASL/pool", "MASL/threads");
+        System.out.println("   timed from the end of the first step to the end of the last (start-up left out), median of " + RUNS + ";");
+        System.out.println("   then steps per second of process CPU time over those runs (every thread of the JVM, start-up included),");
+        System.out.println("   which other jobs on the machine change much less than elapsed time");
+        System.out.printf(Locale.ROOT, "%8s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s%n",
+                "N", "MASL (pool)", "2-thr pool", "thr+Phaser", "MASL/pool", "MASL/threads", "MASL cpu", "pool cpu", "MASL/pool");
         for (int agents : options.sizes) {
             int steps = stepsFor(agents, options.seconds);
             List<LockStepRun> runs = new ArrayList<>(List.of(masl, pool));
             if (agents <= options.threadLimit) {
                 runs.add(threads);
             }
+            Map<String, List<Long>> cpuTimes = new LinkedHashMap<>();
             List<Measure> measures = new ArrayList<>();
             for (LockStepRun run : runs) {
-                // Translating and compiling MASL's program is left out of the timing: prepare() does it.
-                measures.add(new Measure(run.name(), () -> run.prepare(agents, steps).call()));
+                measures.add(new Measure(run.name(), () -> {
+                    // Translating and compiling MASL's program is left out: prepare() does it.
+                    Callable<Double> prepared = run.prepare(agents, steps);
+                    long cpu = processCpuNanos();
+                    double rate = prepared.call();
+                    cpuTimes.computeIfAbsent(run.name(), name -> new ArrayList<>()).add(processCpuNanos() - cpu);
+                    return rate;
+                }));
             }
             Map<String, double[]> figures = interleaved(RUNS, measures);
             Double maslRate = median(figures.get(masl.name()));
             Double poolRate = median(figures.get(pool.name()));
             Double threadRate = figures.containsKey(threads.name()) ? median(figures.get(threads.name())) : null;
-            System.out.printf(Locale.ROOT, "%8d | %14s | %14s | %14s | %12s | %12s%n", agents,
-                    rate(maslRate), rate(poolRate), rate(threadRate), ratio(maslRate, poolRate), ratio(maslRate, threadRate));
+            double maslCpu = stepsPerCpuSecond(steps, cpuTimes.get(masl.name()));
+            double poolCpu = stepsPerCpuSecond(steps, cpuTimes.get(pool.name()));
+            System.out.printf(Locale.ROOT, "%8d | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s%n", agents,
+                    rate(maslRate), rate(poolRate), rate(threadRate), ratio(maslRate, poolRate), ratio(maslRate, threadRate),
+                    rate(maslCpu), rate(poolCpu), ratio(maslCpu, poolCpu));
         }
         System.out.printf(Locale.ROOT, "   (threads+Phaser not run above N=%d: one platform thread per agent; goal: MASL/pool >= 0.5x at N=1000)%n%n",
                 options.threadLimit);
+    }
+
+    /**
+     * Steps per CPU second over all the runs after the warm-up together: the process's CPU time is
+     * counted in ticks of 10 ms here, too coarse for one short run on a loaded machine.
+     */
+    private static double stepsPerCpuSecond(int stepsPerRun, List<Long> cpuNanosPerRun) {
+        List<Long> measured = cpuNanosPerRun.subList(1, cpuNanosPerRun.size());
+        return (double) stepsPerRun * measured.size() / (measured.stream().mapToLong(Long::longValue).sum() / 1e9);
+    }
+
+    static long processCpuNanos() {
+        return ((com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory.getOperatingSystemMXBean())
+                .getProcessCpuTime();
     }
 
     /** Enough steps for about {@code seconds} at the rates seen on a 2-core machine. */

@@ -37,7 +37,7 @@ import masl.sim.xode.XodeSource;
 final class MaslSimulation {
 
     static final int ROBOTS = 100;
-    private static final double SIMULATED_SECONDS = 10;
+    private static final double SIMULATED_SECONDS = 5;
     private static final double LEFT = 5.0;
     private static final double RIGHT = 4.0;
 

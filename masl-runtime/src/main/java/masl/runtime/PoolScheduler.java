@@ -112,17 +112,18 @@ public final class PoolScheduler implements Scheduler {
     }
 
     private void drainRunQueue() {
-        while (true) {
-            AgentTask agent;
-            while (!shutDown && (agent = runQueue.poll()) != null) {
-                agent.runSlice();
+        do {
+            try {
+                AgentTask agent;
+                while (!shutDown && (agent = runQueue.poll()) != null) {
+                    agent.runSlice();
+                }
+            } finally {
+                // Also when a slice throws (a runtime bug): the count must not keep a dead runner.
+                runners.decrementAndGet();
             }
-            runners.decrementAndGet();
             // An agent queued after the last poll saw this runner still counted and started none.
-            if (runQueue.isEmpty() || shutDown || !claimRunner()) {
-                return;
-            }
-        }
+        } while (!runQueue.isEmpty() && !shutDown && claimRunner());
     }
 
     /** Counts the calling runner again, if fewer than {@link #workers} are counted. */
