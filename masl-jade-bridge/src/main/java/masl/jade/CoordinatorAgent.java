@@ -50,6 +50,7 @@ final class CoordinatorAgent extends Agent {
     private final transient Consumer<String> containerRemoved;
     private final transient Consumer<String> unreachable;
     private transient volatile Thread thread;
+    private transient ContainerRemovals removals;
 
     private record Pending(String receiver, CompletableFuture<ACLMessage> answer) {
     }
@@ -77,13 +78,15 @@ final class CoordinatorAgent extends Agent {
         } catch (FIPAException e) {
             // Only a directory entry: the mission does not need it.
         }
-        addBehaviour(new ContainerRemovals());
+        removals = new ContainerRemovals();
+        addBehaviour(removals);
         addBehaviour(new MessagesButTheDfs(this, this::take));
         ready.countDown();
     }
 
     @Override
     protected void takeDown() {
+        removals.cancel();
         try {
             DFService.deregister(this);
         } catch (FIPAException e) {
