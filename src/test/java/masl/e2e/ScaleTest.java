@@ -35,6 +35,7 @@ class ScaleTest {
                     i++;
                   }
                   scalar entry count (true) { steps = i; }
+                  .nop();
                   scalar entry report (main.count == 1000) { .logln("steps " + steps); }
                 }
                 """);

@@ -100,6 +100,18 @@ final class Agent implements AgentContext, AgentTask {
     private ReactionRun reacting;
     /** The processing whose last reaction has ended and is applying its ending (resume, break, …). */
     private ReactionRun ending;
+    /**
+     * The resumption point whose MASL statement the agent is at, for trace records and reports: the
+     * case making the current runtime call. A suspending call comes after {@code pc} was set to the
+     * case that follows it (the contract numbers cases in program order), a loop iteration or a call
+     * in the middle of a case finds {@code pc} at its own case. Read by others only while parked.
+     */
+    private int statementPc;
+    /** Whether {@link #statementPc} is a loop's head, whose statement is the loop, not the last one of its body. */
+    private boolean statementIsLoop;
+    /** {@link #statementPc} of the boundary whose events are being reacted to. */
+    private int interruptedStatementPc;
+    private boolean interruptedStatementIsLoop;
 
     // Guarded by the EntryCoordinator's lock (see its invariant for the agent's own reads).
     final List<Membership> memberships = new ArrayList<>();
@@ -107,6 +119,8 @@ final class Agent implements AgentContext, AgentTask {
     List<SynchronisationBarrier> participatesIn = new ArrayList<>();
     /** The synchronous block the agent left last, until its next step boundary or arrival. */
     EntryDefinition lastLeftSynchronous;
+    /** Its program died: it counts in no wave, not even the mission's (see {@link EntryCoordinator#leaveAll}). */
+    boolean departed;
 
     Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
             Mission mission) {
@@ -145,8 +159,7 @@ final class Agent implements AgentContext, AgentTask {
                 program.resume(this);
             } while (redirected && !finished);
         } catch (Throwable failure) {
-            end();
-            mission.agentFailed(this, failure);
+            die(failure);
             return;
         }
         if (finished) {
@@ -154,9 +167,7 @@ final class Agent implements AgentContext, AgentTask {
             mission.agentFinished(this);
             serveIfPending();
         } else if (!suspended) {
-            end();
-            mission.agentFailed(this, new IllegalStateException(describe()
-                    + ": resume returned without a suspension or finish()"));
+            die(new IllegalStateException(describe() + ": resume returned without a suspension or finish()"));
         } else if (state.compareAndSet(RUNNING, PARKED)) {
             // Invocations queued while the slice ran are served now that the agent is blocked.
             serveIfPending();
@@ -218,6 +229,30 @@ final class Agent implements AgentContext, AgentTask {
     private void end() {
         finished = true;
         state.set(DONE);
+    }
+
+    /**
+     * Something escaped from the program (an {@code Error}, or an exception outside the calls the
+     * translator guards): the agent's program is over. It fires its armed countermeasures and leaves
+     * every block, so barriers shrink and the others go on; the trace says why ({@code agent-failed})
+     * and the mission, once over, fails with this cause.
+     */
+    private void die(Throwable failure) {
+        statementPc = program.pc();
+        statementIsLoop = false;
+        mission.trace().record(new TraceEvent.AgentFailed(now(), id, String.valueOf(failure), source()));
+        try {
+            reacting = null;
+            ending = null;
+            fireCountermeasures(0);
+            mission.coordinator().leaveAll(this);
+        } catch (RuntimeException leaving) {
+            failure.addSuppressed(leaving);
+            mission.agentFailed(this, failure);
+        }
+        end();
+        mission.agentDied(this, failure);
+        serveIfPending();
     }
 
     /** Issues the ticket of a park: the caller (this agent's own slice) then returns {@code false}. */
@@ -291,6 +326,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean stepBoundary() {
+        atCallBefore();
         requireOutsideReaction("a step boundary");
         progress++;
         boolean synchronous = isInnermostSynchronous();
@@ -312,6 +348,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean endOfSequence(ESequence sequence) {
+        atCallBefore();
         EntryDefinition innermost = memberships.isEmpty() ? null : innermost().entry.definition();
         if (innermost != sequence.parent()) {
             throw new IllegalStateException(describe() + " ends " + sequence + " inside " + innermost);
@@ -329,6 +366,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean loopIteration() {
+        atLoopHead();
         progress++;
         if (isReacting()) {
             return yieldIfSliceUsed();
@@ -341,6 +379,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean busyWaitIteration() {
+        atLoopHead();
         if (!isReacting()) {
             // Reactions assign locals: running them is progress, so the next iteration does not park.
             if (startReactions(false)) {
@@ -366,12 +405,14 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public Arrival enter(EntryDefinition block, boolean test) {
+        atCallBefore();
         requireOutsideReaction("arriving at " + block);
         return mission.coordinator().enter(this, mission.entry(block), test);
     }
 
     @Override
     public boolean leave(EntryDefinition block) {
+        atCallBefore();
         requireOutsideReaction("leaving " + block);
         fireCountermeasures(memberships.size() - 1);
         return mission.coordinator().leaveAtEnd(this, mission.entry(block));
@@ -379,6 +420,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void breakOut(EntryDefinition outermost) {
+        atCurrentCase();
         requireNoReactionRunning("break");
         ending = null;
         fireCountermeasures(depthOf(outermost));
@@ -387,6 +429,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void reelect(EntryDefinition block) {
+        atCurrentCase();
         requireNoReactionRunning("reelect");
         ending = null;
         fireCountermeasures(depthOf(block));
@@ -395,6 +438,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void restart(EntryDefinition block) {
+        atCurrentCase();
         requireNoReactionRunning("restart");
         ending = null;
         fireCountermeasures(depthOf(block) + 1);
@@ -419,6 +463,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean sleep(long ms) {
+        atCallBefore();
         progress++;
         if (ms <= 0) {
             return yieldIfSliceUsed();
@@ -434,6 +479,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean await(CompletionStage<?> result) {
+        atCallBefore();
         CompletableFuture<?> future = result.toCompletableFuture();
         if (future.isDone()) {
             return yieldIfSliceUsed();
@@ -454,6 +500,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void emit(Event event, String message) {
+        atCurrentCase();
         if (event.isSystemEvent()) {
             raise(event, message);
             return;
@@ -463,7 +510,7 @@ final class Agent implements AgentContext, AgentTask {
         Agent[] receivers = event.isShared() ? block.perceivers() : new Agent[] {this};
         EventOccurrence occurrence = new EventOccurrence(event, message, id);
         mission.trace().record(new TraceEvent.EventEmitted(now(), id, event.name(), block.name(), message,
-                receivers.length));
+                receivers.length, source()));
         for (Agent receiver : receivers) {
             receiver.perceive(occurrence);
         }
@@ -471,6 +518,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void uncaughtException(Throwable thrown) {
+        atCurrentCase();
         emit(Event.UNCAUGHT_EXCEPTION, thrown.getClass().getName());
     }
 
@@ -504,6 +552,8 @@ final class Agent implements AgentContext, AgentTask {
         ReactionRun ended = ending;
         ending = null;
         program.jump(ended.interruptedPc());
+        statementPc = interruptedStatementPc;
+        statementIsLoop = interruptedStatementIsLoop;
         return completeBoundary(ended.barrierDue());
     }
 
@@ -527,6 +577,7 @@ final class Agent implements AgentContext, AgentTask {
     @Override
     public <T> CompletableFuture<T> invoke(AgentImplementation callee, String primitive, T defaultValue,
             Callable<T> call) {
+        atCurrentCase();
         if (callee == null) {
             return CompletableFuture.completedFuture(nullAgent(defaultValue));
         }
@@ -536,9 +587,9 @@ final class Agent implements AgentContext, AgentTask {
             return CompletableFuture.completedFuture(invokeSelf(primitive, defaultValue, call));
         }
         CompletableFuture<T> result = new CompletableFuture<>();
-        mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive));
+        mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive, source()));
         target.submitInvocation(new PendingInvocation(this, primitive,
-                () -> result.complete(runFor(this, call, defaultValue)),
+                () -> result.complete(runFor(this, primitive, call, defaultValue)),
                 () -> {
                     raise(Event.TIMEOUT, primitive);
                     result.complete(defaultValue);
@@ -548,11 +599,12 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public <T> T invokeSelf(String primitive, T defaultValue, Callable<T> call) {
+        atCurrentCase();
         disarm(this, primitive);
         if (!allowsOwn(primitive)) {
             return defaultValue;
         }
-        return runFor(this, call, defaultValue);
+        return runFor(this, primitive, call, defaultValue);
     }
 
     /**
@@ -564,7 +616,7 @@ final class Agent implements AgentContext, AgentTask {
         if (Permeability.allows(state, permeability.primitiveId(primitive), Requester.SELF, PermeabilityState.INVOKE)) {
             return true;
         }
-        mission.trace().record(new TraceEvent.InvocationDenied(now(), id, id, primitive, state.name()));
+        mission.trace().record(new TraceEvent.InvocationDenied(now(), id, id, primitive, state.name(), source()));
         raise(Event.TIMEOUT, primitive);
         return false;
     }
@@ -578,6 +630,7 @@ final class Agent implements AgentContext, AgentTask {
     @Override
     public <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue,
             Callable<T> call, String countermeasure, Callable<?> countermeasureCall) {
+        atCurrentCase();
         if (callee == null) {
             return CompletableFuture.completedFuture(nullAgent(defaultValue));
         }
@@ -594,7 +647,7 @@ final class Agent implements AgentContext, AgentTask {
     /** Launches an asynchronous primitive of {@code target}, filtered by permeability, without (dis)arming anything. */
     private <T> CompletableFuture<T> start(Agent target, String primitive, T defaultValue, Callable<T> call) {
         CompletableFuture<T> result = new CompletableFuture<>();
-        Runnable start = () -> mission.runAsynchronously(this, () -> result.complete(runFor(this, call, defaultValue)));
+        Runnable start = () -> mission.runAsynchronously(this, () -> result.complete(runFor(this, primitive, call, defaultValue)));
         if (target == this) {
             if (allowsOwn(primitive)) {
                 start.run();
@@ -602,7 +655,7 @@ final class Agent implements AgentContext, AgentTask {
                 result.complete(defaultValue);
             }
         } else {
-            mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive));
+            mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive, source()));
             target.submitInvocation(new PendingInvocation(this, primitive, start, () -> {
                 raise(Event.TIMEOUT, primitive);
                 result.complete(defaultValue);
@@ -644,7 +697,7 @@ final class Agent implements AgentContext, AgentTask {
 
     private void fire(Countermeasure countermeasure) {
         mission.trace().record(new TraceEvent.CountermeasureFired(now(), id, countermeasure.target().id,
-                countermeasure.name(), countermeasure.block().name()));
+                countermeasure.name(), countermeasure.block().name(), source()));
         countermeasure.completeLaunch();
         // Not launch(): a fired countermeasure disarms no other armed one (of an outer block).
         start(countermeasure.target(), countermeasure.name(), null, countermeasure.call());
@@ -672,12 +725,16 @@ final class Agent implements AgentContext, AgentTask {
     }
 
     /**
-     * Runs a primitive for {@code requester}: an exception becomes its {@code uncaught_exception}
-     * (§9), a refusal by the agent's body its {@code timeout}.
+     * Runs primitive {@code primitive} for {@code requester}: an exception becomes its
+     * {@code uncaught_exception} (§9); a refusal by the agent's body, or running past the mission's
+     * call timeout, its {@code timeout}.
      */
-    private static <T> T runFor(Agent requester, Callable<T> call, T defaultValue) {
+    private static <T> T runFor(Agent requester, String primitive, Callable<T> call, T defaultValue) {
         try {
-            return call.call();
+            return requester.mission.callPrimitive(call);
+        } catch (Mission.PrimitiveTimedOut late) {
+            requester.raise(Event.TIMEOUT, primitive);
+            return defaultValue;
         } catch (InvocationRefusedException refused) {
             requester.raise(Event.TIMEOUT, refused.primitive());
             return defaultValue;
@@ -753,6 +810,7 @@ final class Agent implements AgentContext, AgentTask {
 
     @Override
     public boolean waitFor(String state, long ms) {
+        atCallBefore();
         progress++;
         PermeabilityState attentiveTo = permeability.find(state).orElse(null);
         if (attentiveTo == null) {
@@ -805,7 +863,7 @@ final class Agent implements AgentContext, AgentTask {
         if (!systemEvent.isSystemEvent()) {
             throw new IllegalArgumentException(systemEvent + " is not a system event");
         }
-        mission.trace().record(new TraceEvent.EventEmitted(now(), id, systemEvent.name(), null, message, 1));
+        mission.trace().record(new TraceEvent.EventEmitted(now(), id, systemEvent.name(), null, message, 1, source()));
         perceive(new EventOccurrence(systemEvent, message, id));
     }
 
@@ -839,6 +897,8 @@ final class Agent implements AgentContext, AgentTask {
             return false;
         }
         progress++;
+        interruptedStatementPc = statementPc;
+        interruptedStatementIsLoop = statementIsLoop;
         reacting = new ReactionRun(plan.steps(), program.pc(), barrierDue);
         redirectToNextReaction();
         return true;
@@ -848,14 +908,15 @@ final class Agent implements AgentContext, AgentTask {
         ReactionPlan.Step step = reacting.next();
         Reaction reaction = step.reaction();
         mission.trace().record(new TraceEvent.EventReacted(now(), id,
-                step.occurrence().event().name(), reaction.block().name(), reaction.isDefault()));
+                step.occurrence().event().name(), reaction.block().name(), reaction.isDefault(),
+                sourceOf(interruptedStatementPc, interruptedStatementIsLoop)));
         program.jump(program.reactionPc(reaction));
         suspended = true;
         redirected = true;
     }
 
     private void traceDropped(EventOccurrence occurrence) {
-        mission.trace().record(new TraceEvent.EventDropped(now(), id, occurrence.event().name()));
+        mission.trace().record(new TraceEvent.EventDropped(now(), id, occurrence.event().name(), source()));
     }
 
     /** The mission clock, for trace timestamps. */
@@ -910,7 +971,7 @@ final class Agent implements AgentContext, AgentTask {
                 serve(invocation);
             } else {
                 mission.trace().record(new TraceEvent.InvocationDenied(now(), id, invocation.requesterId(),
-                        invocation.primitive(), permeability.currentName()));
+                        invocation.primitive(), permeability.currentName(), source()));
                 invocation.deny();
             }
         }
@@ -929,7 +990,7 @@ final class Agent implements AgentContext, AgentTask {
 
     private void serve(PendingInvocation invocation) {
         mission.trace().record(new TraceEvent.InvocationServed(now(), id, invocation.requesterId(),
-                invocation.primitive()));
+                invocation.primitive(), source()));
         invocation.run();
     }
 
@@ -1003,8 +1064,43 @@ final class Agent implements AgentContext, AgentTask {
         return !memberships.isEmpty() && innermost().status != Membership.Status.ACTIVE;
     }
 
+    /** The current runtime call comes after {@code pc} was set to the case that follows its own. */
+    private void atCallBefore() {
+        statementPc = program.pc() - 1;
+        statementIsLoop = false;
+    }
+
+    /** The current runtime call is made from the case {@code pc} names. */
+    private void atCurrentCase() {
+        statementPc = program.pc();
+        statementIsLoop = false;
+    }
+
+    /** The current runtime call is a loop's iteration, made from its head, the case {@code pc} names. */
+    private void atLoopHead() {
+        statementPc = program.pc();
+        statementIsLoop = true;
+    }
+
+    /**
+     * The MASL statement the agent is at ({@code "e6.masl:14: synchronous entry turn (…)"}), or null
+     * if its program does not say: the last statement of the case making the current call (a loop's
+     * own statement at its head), or of the nearest case before it that has one.
+     */
+    String source() {
+        return sourceOf(statementPc, statementIsLoop);
+    }
+
+    private String sourceOf(int statement, boolean loopHead) {
+        String source = loopHead ? program.sourceAt(statement) : program.sourceOfCallIn(statement);
+        for (int pc = statement - 1; source == null && pc >= 0 && pc > statement - 4; pc--) {
+            source = program.sourceOfCallIn(pc);
+        }
+        return source;
+    }
+
     String describe() {
-        String source = program.sourceAt(program.pc());
+        String source = source();
         return "agent " + name + " (" + id + ") at pc " + program.pc() + (source == null ? "" : " (" + source + ")");
     }
 

@@ -43,6 +43,15 @@ public abstract class AgentProgram {
         return null;
     }
 
+    /**
+     * The MASL source of the statement whose runtime call ends the case of resumption point {@code pc}:
+     * the last statement written in it, where {@link #sourceAt} gives the first (an {@code else}
+     * followed by {@code .logln(x);}). The trace and reports name a suspended agent's statement so.
+     */
+    protected String sourceOfCallIn(int pc) {
+        return sourceAt(pc);
+    }
+
     /** The current resumption point, for diagnostics. */
     public final int pc() {
         return pc;

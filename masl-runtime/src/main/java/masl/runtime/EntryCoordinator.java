@@ -121,7 +121,7 @@ final class EntryCoordinator {
             }
             membership.status = Membership.Status.WAITING_OUT;
             membership.wave.waitingOut.add(agent);
-            trace.record(new TraceEvent.WaitingOut(clock.getAsLong(), agent.id(), entry.name()));
+            trace.record(new TraceEvent.WaitingOut(clock.getAsLong(), agent.id(), entry.name(), agent.source()));
             reconcile(agent);
             settle();
             if (agent.memberships.contains(membership)) {
@@ -149,6 +149,41 @@ final class EntryCoordinator {
             if (cause != LeaveCause.RESTART) {
                 pop(agent, cause);
             }
+            settle();
+        } finally {
+            end();
+        }
+    }
+
+    /**
+     * The agent's program died: it leaves every block it is in, from the innermost, whatever its
+     * status there (active, or held by a barrier if it died in a runtime call), with cause
+     * {@code FAILED}. Barriers shrink, exit barriers it held back open, as when a member leaves.
+     */
+    void leaveAll(Agent agent) {
+        begin();
+        try {
+            changed = true;
+            for (SynchronisationBarrier barrier : agent.participatesIn) {
+                barrier.arrived.remove(agent);
+            }
+            while (!agent.memberships.isEmpty()) {
+                Membership innermost = agent.innermost();
+                if (innermost.status == Membership.Status.WAITING_IN) {
+                    innermost.entry.waitingIn.remove(agent);
+                    agent.memberships.remove(agent.memberships.size() - 1);
+                    trace.record(new TraceEvent.Left(clock.getAsLong(), agent.id(), innermost.entry.name(),
+                            LeaveCause.FAILED, agent.source()));
+                    reconcile(agent);
+                    innermost.entry.memberLeft(agent);
+                } else {
+                    innermost.wave.waitingOut.remove(agent);
+                    innermost.status = Membership.Status.ACTIVE;
+                    pop(agent, LeaveCause.FAILED);
+                }
+            }
+            agent.departed = true;
+            reconcile(agent);
             settle();
         } finally {
             end();
@@ -233,7 +268,7 @@ final class EntryCoordinator {
         wave.members.add(agent);
         entry.memberJoined(agent);
         agent.memberships.add(new Membership(entry, wave, Membership.Status.ACTIVE));
-        trace.record(new TraceEvent.Entered(clock.getAsLong(), agent.id(), entry.name()));
+        trace.record(new TraceEvent.Entered(clock.getAsLong(), agent.id(), entry.name(), agent.source()));
         reconcile(agent);
         changed = true;
     }
@@ -242,7 +277,7 @@ final class EntryCoordinator {
         agent.memberships.add(new Membership(entry, null, Membership.Status.WAITING_IN));
         entry.waitingIn.add(agent);
         entry.memberJoined(agent);
-        trace.record(new TraceEvent.WaitingIn(clock.getAsLong(), agent.id(), entry.name()));
+        trace.record(new TraceEvent.WaitingIn(clock.getAsLong(), agent.id(), entry.name(), agent.source()));
         reconcile(agent);
         if (entry.policy == LockPolicy.FREE) {
             awaitingFirstRelease.add(entry);
@@ -271,7 +306,8 @@ final class EntryCoordinator {
         membership.wave = wave;
         membership.status = Membership.Status.ACTIVE;
         wave.members.add(agent);
-        trace.record(new TraceEvent.Released(clock.getAsLong(), agent.id(), entry.name(), wave.number));
+        trace.record(new TraceEvent.Released(clock.getAsLong(), agent.id(), entry.name(), wave.number,
+                agent.source()));
         reconcile(agent);
         wake(agent);
     }
@@ -284,7 +320,8 @@ final class EntryCoordinator {
         if (membership.entry.mode() == Mode.SYNCHRONOUS) {
             agent.lastLeftSynchronous = membership.entry.definition();
         }
-        trace.record(new TraceEvent.Left(clock.getAsLong(), agent.id(), membership.entry.name(), cause));
+        trace.record(new TraceEvent.Left(clock.getAsLong(), agent.id(), membership.entry.name(), cause,
+                agent.source()));
         reconcile(agent);
         if (wave.members.isEmpty() && wave.entry.currentWave == wave) {
             wave.entry.currentWave = null;
@@ -303,13 +340,14 @@ final class EntryCoordinator {
     /**
      * Brings the agent's contribution to active counts and barrier participants in line with its
      * memberships: it counts in the waves of all its blocks (and the mission wave) and in the
-     * barriers of all its synchronous blocks, unless it is held, in which case it counts nowhere.
+     * barriers of all its synchronous blocks, unless it is held or its program died, in which case
+     * it counts nowhere.
      * Counts that drop are queued for {@link #settle()}.
      */
     private void reconcile(Agent agent) {
         List<Wave> waves = new ArrayList<>();
         List<SynchronisationBarrier> barriers = new ArrayList<>();
-        if (!agent.isHeld()) {
+        if (!agent.isHeld() && !agent.departed) {
             waves.add(missionWave);
             for (Membership membership : agent.memberships) {
                 waves.add(membership.wave);

@@ -5,10 +5,15 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeoutException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
@@ -20,6 +25,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
 import masl.runtime.descriptor.AgentType;
 import masl.runtime.trace.Trace;
+import masl.runtime.trace.TraceEvent;
 
 /**
  * One run of a MASL program: its agents (proxy ids 0, 1, 2, … in declaration order, each with its
@@ -55,6 +61,10 @@ public final class Mission {
     private final AtomicInteger running;
     private final CountDownLatch ended = new CountDownLatch(1);
     private final AtomicReference<Throwable> failure = new AtomicReference<>();
+    /** The first agent whose program died; the mission went on without it, and fails once over. */
+    private final AtomicReference<Throwable> firstDeath = new AtomicReference<>();
+    /** How long a primitive may run before its caller gets {@code timeout}; null: no limit. */
+    private final Duration callTimeout;
     private volatile boolean stopped;
     /** Transitions of agents to SCHEDULED after their start: the watchdog's sign of life. */
     private final AtomicLong schedules = new AtomicLong();
@@ -74,6 +84,7 @@ public final class Mission {
         journal = new Journal(builder.journalSink);
         trace = builder.trace;
         openToOutsideInvocations = builder.openToOutsideInvocations;
+        callTimeout = builder.callTimeout;
         coordinator = new EntryCoordinator(this, trace, scheduler::nanoTime, changes);
         Map<EntryDefinition, Entry> blocks = new IdentityHashMap<>();
         if (builder.main != null) {
@@ -116,11 +127,13 @@ public final class Mission {
         }
         scheduler.start(agents);
         MissionOutcome.Status status = awaitEnd(timeout);
+        trace.record(new TraceEvent.MissionEnded(scheduler.nanoTime(), status.name().toLowerCase(Locale.ROOT)));
         String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
         scheduler.shutdown();
         primitives.shutdownNow();
         journal.flush();
-        return new MissionOutcome(status, journal.text(), Optional.ofNullable(failure.get()), report);
+        Throwable cause = failure.get() != null ? failure.get() : firstDeath.get();
+        return new MissionOutcome(status, journal.text(), Optional.ofNullable(cause), report);
     }
 
     /**
@@ -147,7 +160,7 @@ public final class Mission {
                 return MissionOutcome.Status.STOPPED;
             }
             if (ended) {
-                return MissionOutcome.Status.COMPLETED;
+                return firstDeath.get() == null ? MissionOutcome.Status.COMPLETED : MissionOutcome.Status.FAILED;
             }
             if (deadline - System.nanoTime() <= 0) {
                 return MissionOutcome.Status.TIMED_OUT;
@@ -156,7 +169,7 @@ public final class Mission {
             boolean idle = pendingOutsideWakeUps.get() == 0 && agents.stream().allMatch(Agent::isIdle)
                     && !(openToOutsideInvocations && agents.stream().anyMatch(Agent::isParkedInBusyWait));
             if (idle && scheduled == schedules.get() && scheduled == schedulesAtLastIdleLook) {
-                return MissionOutcome.Status.DEADLOCKED;
+                return firstDeath.get() == null ? MissionOutcome.Status.DEADLOCKED : MissionOutcome.Status.FAILED;
             }
             schedulesAtLastIdleLook = idle ? scheduled : -1;
         }
@@ -298,6 +311,46 @@ public final class Mission {
         }
     }
 
+    /** The agent's program died and it has left its blocks: the others go on, the mission will fail. */
+    void agentDied(Agent agent, Throwable cause) {
+        firstDeath.compareAndSet(null, new IllegalStateException(agent.describe() + " failed", cause));
+        agentFinished(agent);
+    }
+
+    /**
+     * Runs a primitive's Java code for a caller, within the mission's call timeout if it has one: then
+     * on a thread of its own, the caller's blocking wait letting the pool go on ({@link Blocking}).
+     *
+     * @throws PrimitiveTimedOut if it ran past the timeout: its thread is interrupted, its result dropped
+     * @throws Exception what the primitive threw
+     */
+    <T> T callPrimitive(Callable<T> call) throws Exception {
+        if (callTimeout == null) {
+            return call.call();
+        }
+        Future<T> running = primitives.submit(call);
+        try {
+            return Blocking.call(() -> running.get(callTimeout.toNanos(), TimeUnit.NANOSECONDS));
+        } catch (TimeoutException late) {
+            running.cancel(true);
+            throw new PrimitiveTimedOut();
+        } catch (ExecutionException failed) {
+            if (failed.getCause() instanceof Error error) {
+                throw error;
+            }
+            throw (Exception) failed.getCause();
+        }
+    }
+
+    /** A primitive ran past the mission's call timeout. */
+    static final class PrimitiveTimedOut extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        PrimitiveTimedOut() {
+            super(null, null, false, false);
+        }
+    }
+
     void agentFailed(Agent agent, Throwable cause) {
         if (failure.compareAndSet(null, new IllegalStateException(agent.describe() + " failed", cause))) {
             ended.countDown();
@@ -322,6 +375,7 @@ public final class Mission {
         private Appendable journalSink;
         private Trace trace = Trace.NONE;
         private boolean openToOutsideInvocations;
+        private Duration callTimeout;
 
         private Builder() {
         }
@@ -387,6 +441,19 @@ public final class Mission {
          */
         public Builder openToOutsideInvocations() {
             this.openToOutsideInvocations = true;
+            return this;
+        }
+
+        /**
+         * Bounds every primitive call of the mission's agents (internal, external, asynchronous): a
+         * call that runs longer gives its caller the primitive's default value and {@code timeout}
+         * (its message the primitive's name), and the mission goes on. Without it, calls are not bounded.
+         */
+        public Builder callTimeout(Duration timeout) {
+            if (timeout.isNegative() || timeout.isZero()) {
+                throw new IllegalArgumentException("a call timeout must be positive: " + timeout);
+            }
+            this.callTimeout = timeout;
             return this;
         }
 

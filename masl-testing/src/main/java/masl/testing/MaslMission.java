@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.LongStream;
+import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.trace.MemoryTrace;
@@ -37,6 +38,7 @@ public final class MaslMission {
     private final SourceFile source;
     private String agentPath = "";
     private Duration timeout = DEFAULT_TIMEOUT;
+    private Duration callTimeout;
     private MissionLoader loaded;
 
     private MaslMission(SourceFile source) {
@@ -70,6 +72,15 @@ public final class MaslMission {
         return this;
     }
 
+    /**
+     * Bounds every primitive call as {@code masl run --call-timeout} does: a call running longer gives
+     * its caller the default value and {@code timeout}. Unbounded unless set.
+     */
+    public MaslMission callTimeout(Duration callTimeout) {
+        this.callTimeout = callTimeout;
+        return this;
+    }
+
     /** One run on the pool scheduler, as {@code masl run} runs it. */
     public MissionRun run() {
         return runWith(Schedule.pool());
@@ -79,12 +90,14 @@ public final class MaslMission {
         MemoryTrace trace = new MemoryTrace();
         MissionOutcome outcome;
         try {
-            outcome = loaded().newMission()
+            Mission.Builder mission = loaded().newMission()
                     .scheduler(schedule.newScheduler())
                     .journal(new StringBuilder())
-                    .trace(trace)
-                    .build()
-                    .run(timeout);
+                    .trace(trace);
+            if (callTimeout != null) {
+                mission.callTimeout(callTimeout);
+            }
+            outcome = mission.build().run(timeout);
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
             throw new AssertionError(source.name() + " was interrupted under " + schedule, interrupted);

@@ -5,6 +5,10 @@ import java.io.FileNotFoundException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.net.URL;
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CoderResult;
+import java.nio.charset.StandardCharsets;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
@@ -61,7 +65,7 @@ final class DescriptorReader {
                 reader.close();
             }
         } catch (XMLStreamException e) {
-            problems.add(notWellFormed(file, e));
+            problems.add(notWellFormed(file, e, source));
         } catch (IOException e) {
             String reason = e instanceof FileNotFoundException ? "file not found" : "cannot read the descriptor: " + e;
             problems.add(new DescriptorProblem(file, 0, 0, reason));
@@ -138,7 +142,11 @@ final class DescriptorReader {
         return root;
     }
 
-    private static DescriptorProblem notWellFormed(String file, XMLStreamException e) {
+    /**
+     * The parser's problem at its position; one it gives without a position (a byte sequence that is
+     * not UTF-8, found by the decoder under the parser) is placed at the first such byte.
+     */
+    private static DescriptorProblem notWellFormed(String file, XMLStreamException e, DescriptorSource source) {
         Location location = e.getLocation();
         String message = String.valueOf(e.getMessage());
         // Woodstox appends "\n at [row,col ...]" to its messages; the position has its own fields.
@@ -147,8 +155,40 @@ final class DescriptorReader {
             message = message.substring(0, positionSuffix);
         }
         int line = location == null ? 0 : Math.max(location.getLineNumber(), 0);
-        int column = location == null ? 0 : Math.max(location.getColumnNumber(), 0);
+        // At the end of the input the parser may give column 0: the position is the line's start.
+        int column = location == null ? 0 : Math.max(location.getColumnNumber(), 1);
+        if (line == 0) {
+            int[] position = firstMalformedUtf8(source);
+            line = position[0];
+            column = position[1];
+        }
         return new DescriptorProblem(file, line, column, "not well-formed XML: " + message.strip());
+    }
+
+    /** Line and column (from 1) of the first byte of {@code source} that is not UTF-8, or of its start if none. */
+    private static int[] firstMalformedUtf8(DescriptorSource source) {
+        byte[] bytes;
+        try (InputStream in = source.open()) {
+            bytes = in.readAllBytes();
+        } catch (IOException unreadable) {
+            return new int[] {1, 1};
+        }
+        ByteBuffer input = ByteBuffer.wrap(bytes);
+        CoderResult result = StandardCharsets.UTF_8.newDecoder()
+                .decode(input, CharBuffer.allocate(bytes.length), true);
+        if (!result.isError()) {
+            return new int[] {1, 1};
+        }
+        int bad = input.position();
+        int line = 1;
+        int lineStart = 0;
+        for (int i = 0; i < bad; i++) {
+            if (bytes[i] == '\n') {
+                line++;
+                lineStart = i + 1;
+            }
+        }
+        return new int[] {line, new String(bytes, lineStart, bad - lineStart, StandardCharsets.UTF_8).length() + 1};
     }
 
     private static AttributesImpl saxAttributes(XMLStreamReader reader) {
@@ -285,8 +325,8 @@ final class DescriptorReader {
             }
             String element = validating == null ? "" : validating.name;
             Map<String, String> attributes = validating == null ? Map.of() : validating.attributes;
-            problems.add(new DescriptorProblem(file, Math.max(exception.getLineNumber(), 0),
-                    Math.max(exception.getColumnNumber(), 0), SchemaMessages.rephrase(message, element, attributes)));
+            problems.add(new DescriptorProblem(file, Math.max(exception.getLineNumber(), 1),
+                    Math.max(exception.getColumnNumber(), 1), SchemaMessages.rephrase(message, element, attributes)));
         }
 
         @Override

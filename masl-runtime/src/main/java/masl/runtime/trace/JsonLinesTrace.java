@@ -3,6 +3,8 @@ package masl.runtime.trace;
 import java.io.Flushable;
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * Writes one JSON object per line for every event (components.md, "Runtime"), in the order they
@@ -10,9 +12,13 @@ import java.io.UncheckedIOException;
  * {@code {"nanos":123,"event":"left","agent":2,"block":"work","cause":"reelect"}}. Names are
  * written as JSON strings, escaped; a MASL event's own name goes under {@code "name"}, as in
  * {@code {"nanos":124,"event":"event-reacted","agent":1,"name":"go","block":"main","reaction":"go"}}.
- * Source positions are not known to the runtime yet.
+ * A record made where an agent's program stands at a statement ends with that statement's MASL line
+ * and source, when the program knows them: {@code ,"line":14,"source":"e6.masl:14: synchronous entry turn (…)"}.
  */
 public final class JsonLinesTrace implements Trace, Flushable {
+
+    /** The line in a source {@code "file.masl:14: …"}: the number after the file's name. */
+    private static final Pattern POSITION = Pattern.compile("[^:]*:(\\d+):");
 
     private final Appendable out;
 
@@ -23,7 +29,11 @@ public final class JsonLinesTrace implements Trace, Flushable {
     @Override
     public synchronized void record(TraceEvent event) {
         String line;
-        if (event instanceof TraceEvent.Entered e) {
+        if (event instanceof TraceEvent.MissionEnded e) {
+            line = head(e.nanos(), "mission-ended") + ",\"status\":" + string(e.status());
+        } else if (event instanceof TraceEvent.AgentFailed e) {
+            line = head(e.nanos(), "agent-failed") + ",\"agent\":" + e.agent() + ",\"cause\":" + string(e.cause());
+        } else if (event instanceof TraceEvent.Entered e) {
             line = membership(e.nanos(), "entered", e.agent(), e.block());
         } else if (event instanceof TraceEvent.WaitingIn e) {
             line = membership(e.nanos(), "waiting-in", e.agent(), e.block());
@@ -44,7 +54,7 @@ public final class JsonLinesTrace implements Trace, Flushable {
             line = eventLine(event);
         }
         try {
-            out.append(line).append("}\n");
+            out.append(line).append(source(event.source())).append("}\n");
         } catch (IOException e) {
             throw new UncheckedIOException("trace output failed", e);
         }
@@ -92,6 +102,19 @@ public final class JsonLinesTrace implements Trace, Flushable {
         TraceEvent.InvocationDenied e = (TraceEvent.InvocationDenied) event;
         return head(e.nanos(), "invocation-denied") + ",\"requester\":" + e.requester() + ",\"callee\":"
                 + e.callee() + ",\"member\":" + string(e.member()) + ",\"state\":" + string(e.state());
+    }
+
+    /**
+     * {@code ,"line":N,"source":"…"} for a source {@code "file.masl:N: statement"}; only the source if
+     * it names no line, nothing if there is none.
+     */
+    private static String source(String source) {
+        if (source == null) {
+            return "";
+        }
+        Matcher position = POSITION.matcher(source);
+        String line = position.lookingAt() ? ",\"line\":" + position.group(1) : "";
+        return line + ",\"source\":" + string(source);
     }
 
     private static String head(long nanos, String event) {

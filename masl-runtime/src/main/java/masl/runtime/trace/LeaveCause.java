@@ -9,5 +9,7 @@ public enum LeaveCause {
     /** {@code reelect}: it leaves and arrives at the block again. */
     REELECT,
     /** {@code restart} of an enclosing block left this inner one. */
-    RESTART
+    RESTART,
+    /** Its program threw: the agent left every block it was in (record {@code agent-failed}). */
+    FAILED
 }

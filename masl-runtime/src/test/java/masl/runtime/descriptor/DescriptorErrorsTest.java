@@ -53,7 +53,7 @@ class DescriptorErrorsTest {
 
     @Test
     void emptyFile() {
-        assertSingleProblem(load(""), file(), 1, 0, "not well-formed XML", "Unexpected EOF");
+        assertSingleProblem(load(""), file(), 1, 1, "not well-formed XML", "Unexpected EOF");
     }
 
     @Test

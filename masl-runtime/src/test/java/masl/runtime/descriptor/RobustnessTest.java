@@ -1,9 +1,11 @@
 package masl.runtime.descriptor;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.fail;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
@@ -46,6 +48,23 @@ class RobustnessTest {
                 bytes[random.nextInt(bytes.length)] = (byte) random.nextInt(256);
             }
             loadEndsCleanly(bytes, "corruption #" + i);
+        }
+    }
+
+    /** The decoder under the parser gives no position: the problem is placed at the first byte that is not UTF-8. */
+    @Test
+    void aByteThatIsNotUtf8IsReportedAtItsLineAndColumn() throws IOException {
+        byte[] text = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<!-- é -->\n<Agent short_class_name=\"K?\"/>\n"
+                .getBytes(StandardCharsets.UTF_8);
+        int question = new String(text, StandardCharsets.ISO_8859_1).indexOf('?', 60);
+        text[question] = (byte) 0xcb;
+        try {
+            load(text);
+            fail("a descriptor that is not UTF-8 was accepted");
+        } catch (DescriptorException expected) {
+            DescriptorProblem problem = expected.problems().get(0);
+            assertEquals(3, problem.line(), problem::toString);
+            assertEquals(27, problem.column(), problem::toString);
         }
     }
 

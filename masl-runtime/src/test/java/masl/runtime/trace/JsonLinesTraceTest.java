@@ -11,11 +11,11 @@ class JsonLinesTraceTest {
     void writesOneJsonObjectPerEvent() {
         StringWriter out = new StringWriter();
         JsonLinesTrace trace = new JsonLinesTrace(out);
-        trace.record(new TraceEvent.Entered(1, 0, "main"));
-        trace.record(new TraceEvent.WaitingIn(2, 1, "turn"));
-        trace.record(new TraceEvent.Released(3, 1, "turn", 4));
-        trace.record(new TraceEvent.WaitingOut(4, 1, "turn"));
-        trace.record(new TraceEvent.Left(5, 1, "turn", LeaveCause.REELECT));
+        trace.record(new TraceEvent.Entered(1, 0, "main", null));
+        trace.record(new TraceEvent.WaitingIn(2, 1, "turn", null));
+        trace.record(new TraceEvent.Released(3, 1, "turn", 4, null));
+        trace.record(new TraceEvent.WaitingOut(4, 1, "turn", null));
+        trace.record(new TraceEvent.Left(5, 1, "turn", LeaveCause.REELECT, null));
         trace.record(new TraceEvent.BarrierTripped(6, "main", 3));
         trace.record(new TraceEvent.WaveStarted(7, "a\"b\\c\n", 1));
         trace.record(new TraceEvent.WaveEnded(8, "turn", 2));
@@ -34,11 +34,11 @@ class JsonLinesTraceTest {
     void writesEventsWithTheMaslEventsNameUnderName() {
         StringWriter out = new StringWriter();
         JsonLinesTrace trace = new JsonLinesTrace(out);
-        trace.record(new TraceEvent.EventEmitted(1, 0, "go", "main", "now \"quoted\"", 4));
-        trace.record(new TraceEvent.EventEmitted(2, 3, "uncaught_exception", null, "java.lang.NullPointerException", 1));
-        trace.record(new TraceEvent.EventReacted(3, 1, "go", "main", false));
-        trace.record(new TraceEvent.EventReacted(4, 2, "go", "work", true));
-        trace.record(new TraceEvent.EventDropped(5, 0, "go"));
+        trace.record(new TraceEvent.EventEmitted(1, 0, "go", "main", "now \"quoted\"", 4, null));
+        trace.record(new TraceEvent.EventEmitted(2, 3, "uncaught_exception", null, "java.lang.NullPointerException", 1, null));
+        trace.record(new TraceEvent.EventReacted(3, 1, "go", "main", false, null));
+        trace.record(new TraceEvent.EventReacted(4, 2, "go", "work", true, null));
+        trace.record(new TraceEvent.EventDropped(5, 0, "go", null));
         assertEquals(String.join("\n",
                 "{\"nanos\":1,\"event\":\"event-emitted\",\"agent\":0,\"name\":\"go\",\"block\":\"main\","
                         + "\"message\":\"now \\\"quoted\\\"\",\"receivers\":4}",
@@ -55,10 +55,10 @@ class JsonLinesTraceTest {
     void writesInvocationsAndCountermeasuresWithThePrimitiveUnderMember() {
         StringWriter out = new StringWriter();
         JsonLinesTrace trace = new JsonLinesTrace(out);
-        trace.record(new TraceEvent.InvocationMade(1, 0, 1, "getProxyID"));
-        trace.record(new TraceEvent.InvocationServed(2, 1, 0, "getProxyID"));
-        trace.record(new TraceEvent.InvocationDenied(3, 1, -1, "log", "nothing"));
-        trace.record(new TraceEvent.CountermeasureFired(4, 2, 2, "stopGripper", "grip"));
+        trace.record(new TraceEvent.InvocationMade(1, 0, 1, "getProxyID", null));
+        trace.record(new TraceEvent.InvocationServed(2, 1, 0, "getProxyID", null));
+        trace.record(new TraceEvent.InvocationDenied(3, 1, -1, "log", "nothing", null));
+        trace.record(new TraceEvent.CountermeasureFired(4, 2, 2, "stopGripper", "grip", null));
         assertEquals(String.join("\n",
                 "{\"nanos\":1,\"event\":\"invocation-made\",\"requester\":0,\"callee\":1,"
                         + "\"member\":\"getProxyID\"}",
@@ -68,5 +68,21 @@ class JsonLinesTraceTest {
                         + "\"state\":\"nothing\"}",
                 "{\"nanos\":4,\"event\":\"countermeasure-fired\",\"agent\":2,\"callee\":2,\"member\":\"stopGripper\","
                         + "\"block\":\"grip\"}") + "\n", out.toString());
+    }
+
+    @Test
+    void endsAnAgentsRecordWithItsMaslLineAndSource() {
+        StringWriter out = new StringWriter();
+        JsonLinesTrace trace = new JsonLinesTrace(out);
+        trace.record(new TraceEvent.WaitingIn(1, 2, "turn", "e6.masl:14: synchronous entry turn (\"x\")"));
+        trace.record(new TraceEvent.AgentFailed(2, 1, "java.lang.ArithmeticException: / by zero", "e.masl:7: x = 1 / y;"));
+        trace.record(new TraceEvent.EventDropped(3, 0, "go", "no position"));
+        assertEquals(String.join("\n",
+                "{\"nanos\":1,\"event\":\"waiting-in\",\"agent\":2,\"block\":\"turn\",\"line\":14,"
+                        + "\"source\":\"e6.masl:14: synchronous entry turn (\\\"x\\\")\"}",
+                "{\"nanos\":2,\"event\":\"agent-failed\",\"agent\":1,\"cause\":\"java.lang.ArithmeticException: / by zero\","
+                        + "\"line\":7,\"source\":\"e.masl:7: x = 1 / y;\"}",
+                "{\"nanos\":3,\"event\":\"event-dropped\",\"agent\":0,\"name\":\"go\",\"source\":\"no position\"}") + "\n",
+                out.toString());
     }
 }

@@ -15,7 +15,7 @@ final class CommandLine {
     private static final Map<String, Set<String>> OPTIONS = Map.of(
             "check", Set.of("--agent-path"),
             "compile", Set.of("--agent-path", "-d"),
-            "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--trace", "--platform", "--main-host",
+            "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--platform", "--main-host",
                     "--main-port", "--sim", "--out", "--place", "--port"),
             "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout"),
             "timeline", Set.of("-o"));
@@ -29,6 +29,7 @@ final class CommandLine {
     boolean threads;
     Long seed;
     Long timeoutSeconds;
+    Long callTimeoutMillis;
     String traceFile;
     String platform = "inproc";
     String mainHost;
@@ -88,6 +89,7 @@ final class CommandLine {
             case "--trace" -> traceFile = value;
             case "--seed" -> seed = number(option, value, Long.MIN_VALUE);
             case "--timeout" -> timeoutSeconds = number(option, value, 1);
+            case "--call-timeout" -> callTimeoutMillis = number(option, value, 1);
             case "--platform" -> platform = oneOf(option, value, "inproc", "jade");
             case "--main-host" -> mainHost = value;
             case "--main-port" -> mainPort = port(option, value);

@@ -30,7 +30,8 @@ public final class Masl {
 
     static final String USAGE_TEXT = """
             usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE]
-                           [--platform inproc|jade] [--main-host HOST --main-port PORT | --port PORT]
+                           [--call-timeout MS] [--platform inproc|jade]
+                           [--main-host HOST --main-port PORT | --port PORT]
                            [--place AGENT=CONTAINER,... | --place FILE]
                    masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
                            [--timeout SECONDS]
@@ -54,6 +55,8 @@ public final class Masl {
               --threads           run each agent on a thread of its own instead of a small pool
               --seed N            run on one thread, every scheduling choice drawn from seed N (replayable)
               --timeout SECONDS   stop the mission after SECONDS (default: no limit)
+              --call-timeout MS   a primitive running longer than MS milliseconds gives its caller its default
+                                  value and the event timeout; the mission goes on (default: no limit)
               --trace FILE        write the trace (one JSON object per line) to FILE
               --platform P        inproc (default): run in this process; jade: run inside a JADE platform,
                                   one JADE agent per MASL agent, registered with the DF, answering FIPA requests

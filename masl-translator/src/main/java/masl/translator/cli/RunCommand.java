@@ -46,6 +46,9 @@ final class RunCommand {
         if (!line.platform.equals("jade") && (line.mainHost != null || line.mainPort != null)) {
             throw new UsageException("--main-host and --main-port join a JADE platform: give them with --platform jade");
         }
+        if (line.callTimeoutMillis != null && line.platform.equals("jade")) {
+            throw new UsageException("--call-timeout bounds calls in-process: not with --platform jade yet");
+        }
         if (!line.platform.equals("jade") && (line.place != null || line.port != null)) {
             throw new UsageException("--place and --port are for a JADE platform: give them with --platform jade");
         }
@@ -79,6 +82,9 @@ final class RunCommand {
             builder.scheduler(new ThreadPerAgentScheduler());
         } else if (line.seed != null) {
             builder.scheduler(new SeededScheduler(line.seed));
+        }
+        if (line.callTimeoutMillis != null) {
+            builder.callTimeout(Duration.ofMillis(line.callTimeoutMillis));
         }
         builder.journal(out);
         Writer trace = openTrace(line.traceFile);

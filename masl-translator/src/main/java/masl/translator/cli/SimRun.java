@@ -47,6 +47,9 @@ final class SimRun {
         if (!line.operands.isEmpty()) {
             throw new UsageException("masl run --sim takes the scenario only: its <mission file=...> names the program");
         }
+        if (line.callTimeoutMillis != null) {
+            throw new UsageException("--call-timeout and --sim: simulated robots' primitives are not bounded yet");
+        }
         if (line.threads) {
             throw new UsageException("--threads and --sim: the scenario chooses how agents and physics share time");
         }

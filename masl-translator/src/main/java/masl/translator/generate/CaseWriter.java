@@ -27,10 +27,13 @@ final class CaseWriter {
     private static final class Case {
         int number;
         String comment;
+        /** The MASL statement written last in the case: the one whose runtime call ends it. */
+        String lastStatement;
         final List<Object> lines = new ArrayList<>();
 
         Case(String comment) {
             this.comment = comment;
+            this.lastStatement = comment;
         }
     }
 
@@ -61,6 +64,9 @@ final class CaseWriter {
         } else if (current.comment == null) {
             current.comment = comment;
         }
+        if (comment != null) {
+            current.lastStatement = comment;
+        }
         point.target = current;
         terminated = false;
     }
@@ -83,6 +89,7 @@ final class CaseWriter {
         } else {
             comment(text);
         }
+        current.lastStatement = text;
     }
 
     /** {@code } else {}: closes a Java block and opens the next one. */
@@ -167,6 +174,27 @@ final class CaseWriter {
             }
         }
         out.add("            default -> null;");
+        out.add("        };");
+        out.add("    }");
+        return out;
+    }
+
+    /**
+     * The {@code sourceOfCallIn} method: for each case holding several statements, the last one (the
+     * statement whose runtime call ends the case, say {@code .logln(x);} in a case that begins with
+     * {@code else}); other cases fall back on {@code sourceAt}. Call after {@link #render}.
+     */
+    List<String> sourceOfCallInMethod() {
+        List<String> out = new ArrayList<>();
+        out.add("    @Override");
+        out.add("    protected String sourceOfCallIn(int pc) {");
+        out.add("        return switch (pc) {");
+        for (Case c : cases) {
+            if (c.lastStatement != null && !c.lastStatement.equals(c.comment)) {
+                out.add("            case " + c.number + " -> " + JavaText.quote(c.lastStatement) + ";");
+            }
+        }
+        out.add("            default -> sourceAt(pc);");
         out.add("        };");
         out.add("    }");
         return out;

@@ -121,6 +121,8 @@ final class ProgramClassWriter {
         out.add("    }");
         out.add("");
         out.addAll(resumptionPoints.sourceAtMethod());
+        out.add("");
+        out.addAll(resumptionPoints.sourceOfCallInMethod());
         if (expressions.usesDynamicMembers()) {
             out.add("");
             out.addAll(DynamicMembers.helpers());

@@ -37,13 +37,14 @@ public class MaslPlugin implements Plugin<Project> {
 
         MaslRun run = project.getTasks().create("maslRun", MaslRun.class);
         run.setGroup("masl");
-        run.setDescription("Runs a MASL mission of src/main/masl and prints its journal (-Pmission=NAME, -Pplatform=inproc|jade)");
+        run.setDescription("Runs a MASL mission of src/main/masl and prints its journal (-Pmission=NAME, -Pplatform=inproc|jade, -Ptimeout=S, -PcallTimeout=MS)");
         run.setPrograms(main.getSource());
         run.setAgentPath(extension.getAgentPath());
         run.setMission(stringProperty(project, "mission"));
         run.setPlatform(stringProperty(project, "platform"));
         run.setSeed(stringProperty(project, "seed"));
         run.setTimeoutSeconds(stringProperty(project, "timeout"));
+        run.setCallTimeoutMillis(stringProperty(project, "callTimeout"));
         run.dependsOn(main);
     }
 

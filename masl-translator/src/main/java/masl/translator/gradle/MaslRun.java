@@ -29,6 +29,7 @@ public class MaslRun extends DefaultTask {
     private String platform;
     private String seed;
     private String timeoutSeconds;
+    private String callTimeoutMillis;
 
     public MaslRun() {
         getOutputs().upToDateWhen(task -> false);
@@ -90,6 +91,15 @@ public class MaslRun extends DefaultTask {
         this.timeoutSeconds = timeoutSeconds;
     }
 
+    @Internal
+    public String getCallTimeoutMillis() {
+        return callTimeoutMillis;
+    }
+
+    public void setCallTimeoutMillis(String callTimeoutMillis) {
+        this.callTimeoutMillis = callTimeoutMillis;
+    }
+
     @TaskAction
     public void runMission() {
         File program = chosenProgram();
@@ -131,6 +141,9 @@ public class MaslRun extends DefaultTask {
         }
         if (timeoutSeconds != null) {
             arguments.addAll(List.of("--timeout", timeoutSeconds));
+        }
+        if (callTimeoutMillis != null) {
+            arguments.addAll(List.of("--call-timeout", callTimeoutMillis));
         }
         return arguments.toArray(String[]::new);
     }
