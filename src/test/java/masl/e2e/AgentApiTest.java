@@ -301,6 +301,42 @@ class AgentApiTest {
 
     @ParameterizedTest
     @MethodSource("schedules")
+    void aCallInAnInitialiserIsAnInstructionReactedToAtItsStepBoundary(Schedule schedule) {
+        everyRun(schedule, "initialiser", """
+                Worker a = newAgent(Worker);
+                scalar entry main (true) {
+                  local int got = .broken();
+                  .logln("declared " + got);
+                  react (uncaught_exception) { .logln("caught"); resume; }
+                }
+                """, run -> run.assertJournal("caught\ndeclared 0\n"));
+    }
+
+    @ParameterizedTest
+    @MethodSource("schedules")
+    void initialisersCallingInstructionsTakeOneLockStepEachAndAccessorsNone(Schedule schedule) {
+        String declarations = """
+                  local int id = .getProxyID();
+                  local int doubled = .twice(id);
+                  local int later = b.slow(id);
+                """;
+        String plain = declarations.replaceAll("= .*;", "= 0;");
+        int withCalls = lockSteps(schedule, "calling", declarations);
+        assertEquals(lockSteps(schedule, "plain", plain) + 2, withCalls);
+    }
+
+    /** The barrier trips of a synchronous block of two Workers declaring {@code declarations}, the same in every run. */
+    private static int lockSteps(Schedule schedule, String name, String declarations) {
+        List<Integer> trips = new ArrayList<>();
+        everyRun(schedule, name, "Worker a, b = newAgent(Worker);\nsynchronous entry main (true) {\n"
+                + declarations + "  .open(b);\n}\n",
+                run -> trips.add(run.assertCompleted().trace(TraceEvent.BarrierTripped.class).size()));
+        assertEquals(1, trips.stream().distinct().count(), trips::toString);
+        return trips.get(0);
+    }
+
+    @ParameterizedTest
+    @MethodSource("schedules")
     void agentVariablesAndEntryListElementsAreReceivers(Schedule schedule) {
         everyRun(schedule, "receivers", """
                 Worker a, b, c = newAgent(Worker);

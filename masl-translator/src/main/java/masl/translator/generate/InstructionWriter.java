@@ -109,9 +109,10 @@ final class InstructionWriter {
 
     /**
      * Waits for the results that the condition, test or initialiser just written reads (contract
-     * §3.11), then, as an external invocation is an instruction, the step boundary (§8.1).
+     * §3.11), then, as an external invocation is an instruction, the step boundary (§8.1). Returns
+     * whether it waited (and so stepped).
      */
-    void awaitResults(ParserRuleContext statement) {
+    boolean awaitResults(ParserRuleContext statement) {
         List<ExpressionWriter.Suspension> waits = expressions.takeSuspensions();
         for (ExpressionWriter.Suspension wait : waits) {
             if (wait.start() != null) {
@@ -122,6 +123,15 @@ final class InstructionWriter {
         if (!waits.isEmpty()) {
             stepBoundary();
             cases.note(at(statement) + ": " + JavaText.snippet(statement) + ", with the results it waited for");
+        }
+        return !waits.isEmpty();
+    }
+
+    /** The step boundary after {@code instruction}, written elsewhere (an initialiser calling a primitive). */
+    void stepAfter(ParserRuleContext instruction) {
+        stepBoundary();
+        if (!inReaction) {
+            cases.note(at(instruction) + ": after " + JavaText.snippet(instruction));
         }
     }
 

@@ -215,27 +215,42 @@ final class StatementWriter {
         for (Variable variable : variables) {
             if (variable.sharing() == Sharing.SHARED && variable.initializer() != null) {
                 String value = expressions.initializer(variable.type(), variable.initializer());
-                instructions.awaitResults(variable.initializer());
+                boolean stepped = instructions.awaitResults(variable.initializer());
                 cases.line("ctx.shared(" + structure.shared(variable) + ").initialise(() -> " + value + ");");
+                stepAfterInitialiser(variable, stepped);
             }
         }
+        CaseWriter.Point kept = cases.point();
         if (keeps) {
-            cases.open("if (!keep$" + block.name() + ") {");
+            // A step boundary cannot stand inside an if: a reelected member jumps over its locals instead.
+            cases.open("if (keep$" + block.name() + ") {");
+            cases.comment("reelected: " + block.name() + "'s locals keep their values");
+            cases.jump(kept);
+            cases.close("}");
         }
         for (Variable variable : variables) {
             if (variable.sharing() == Sharing.LOCAL) {
                 String value = localInitialValue(variable);
-                if (keeps && variable.initializer() != null && expressions.suspends(variable.initializer())) {
-                    unsupported.report(variable.initializer(), "waiting for a result in the initialiser of a local"
-                            + " that a reelect keeps");
-                }
-                instructions.awaitResults(variable.initializer() != null ? variable.initializer() : block.tree());
+                boolean stepped = instructions.awaitResults(
+                        variable.initializer() != null ? variable.initializer() : block.tree());
                 cases.line(expressions.local(variable) + " = " + value + ";");
+                stepAfterInitialiser(variable, stepped);
             }
         }
         if (keeps) {
-            cases.close("}");
+            cases.place(kept, null);
             cases.line("keep$" + block.name() + " = false;");
+        }
+    }
+
+    /**
+     * An initialiser calling a primitive that is an instruction (contract §8.1) is followed by its
+     * step boundary, as the same call in an assignment; unless waiting for its results took it already.
+     */
+    private void stepAfterInitialiser(Variable variable, boolean stepped) {
+        if (!stepped && variable.initializer() != null
+                && expressions.queries().callsInstruction(variable.initializer())) {
+            instructions.stepAfter(variable.initializer());
         }
     }
 

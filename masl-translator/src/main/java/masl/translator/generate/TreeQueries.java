@@ -157,6 +157,27 @@ final class TreeQueries {
         return false;
     }
 
+    /**
+     * Whether {@code tree} calls a primitive that is an instruction (contract §8.1): any external
+     * invocation or launch, and an internal call unless of a synchronous accessor. A primitive the
+     * callee's type lacks counts too: its {@code nop()} has duration, like a statement's (§4).
+     */
+    boolean callsInstruction(ParseTree tree) {
+        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
+                && member.kind() == Member.Kind.PRIMITIVE) {
+            Primitive primitive = invokedPrimitive(node);
+            if (!isInternalCall(node) || primitive == null || !primitive.accessor() || !primitive.synchronous()) {
+                return true;
+            }
+        }
+        for (int i = 0; i < tree.getChildCount(); i++) {
+            if (callsInstruction(tree.getChild(i))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** Whether {@code tree} reads or writes {@code variable}. */
     boolean mentions(ParseTree tree, Variable variable) {
         if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) == variable) {

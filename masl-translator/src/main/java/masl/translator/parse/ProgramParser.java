@@ -6,16 +6,20 @@ import masl.grammar.MASLLexer;
 import masl.grammar.MASLParser;
 import masl.translator.diagnostics.Diagnostics;
 import masl.translator.source.SourceFile;
+import org.antlr.v4.runtime.BailErrorStrategy;
 import org.antlr.v4.runtime.BaseErrorListener;
 import org.antlr.v4.runtime.CharStreams;
 import org.antlr.v4.runtime.CommonTokenStream;
+import org.antlr.v4.runtime.DefaultErrorStrategy;
 import org.antlr.v4.runtime.InputMismatchException;
 import org.antlr.v4.runtime.Parser;
 import org.antlr.v4.runtime.RecognitionException;
 import org.antlr.v4.runtime.Recognizer;
 import org.antlr.v4.runtime.Token;
 import org.antlr.v4.runtime.Vocabulary;
+import org.antlr.v4.runtime.atn.PredictionMode;
 import org.antlr.v4.runtime.misc.IntervalSet;
+import org.antlr.v4.runtime.misc.ParseCancellationException;
 
 /**
  * Parses a MASL program with the ANTLR grammar and turns every syntax error into a positioned
@@ -30,14 +34,29 @@ public final class ProgramParser {
     private ProgramParser() {
     }
 
+    /**
+     * Parses in ANTLR's fast SLL mode first, giving up at the first error; only a program that
+     * fails there is parsed again in full LL mode, which reports every error (ANTLR's two-stage
+     * parsing: SLL accepts the same valid programs of this grammar with the same tree, much faster).
+     */
     public static Parsed parse(SourceFile source, Diagnostics diagnostics) {
         MASLLexer lexer = new MASLLexer(CharStreams.fromString(source.text(), source.name()));
         lexer.removeErrorListeners();
         CommonTokenStream tokens = new CommonTokenStream(lexer);
         MASLParser parser = new MASLParser(tokens);
         parser.removeErrorListeners();
-        parser.addErrorListener(new Reporter(source.name(), diagnostics));
-        return new Parsed(source, parser.program(), tokens);
+        parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
+        parser.setErrorHandler(new BailErrorStrategy());
+        try {
+            return new Parsed(source, parser.program(), tokens);
+        } catch (ParseCancellationException notSll) {
+            tokens.seek(0);
+            parser.reset();
+            parser.getInterpreter().setPredictionMode(PredictionMode.LL);
+            parser.setErrorHandler(new DefaultErrorStrategy());
+            parser.addErrorListener(new Reporter(source.name(), diagnostics));
+            return new Parsed(source, parser.program(), tokens);
+        }
     }
 
     /** Rewords ANTLR's messages: which token was found, and what was expected when that is short. */

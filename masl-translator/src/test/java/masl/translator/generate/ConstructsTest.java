@@ -117,6 +117,23 @@ class ConstructsTest {
     }
 
     @Test
+    void aReelectKeepsLocalsWhoseInitialisersWaitedForAnotherAgent() {
+        assertJournal("visits=2 seen=1\nvisits=2 seen=1\n", "import Default.xml;\nDefault a, b = newAgent(Default);\n" + """
+                asynchronous entry main (true) {
+                  asynchronous entry outer (true) {
+                    local int visits = 0;
+                    local int seen = b.getProxyID() + visits;
+                    visits++;
+                    asynchronous entry inner (true) {
+                      if (visits < 2) reelect(outer);
+                      .logln("visits=" + visits + " seen=" + seen);
+                    }
+                  }
+                }
+                """);
+    }
+
+    @Test
     void relaxedTypingFinalAndValueEquality() {
         assertJournal("equal\ndifferent\n4\ny\n7\n0\n", ONE + """
                 scalar entry main (true) {

@@ -196,6 +196,26 @@ class GeneratorTest {
     }
 
     @Test
+    void anInitialiserCallingAnInstructionIsFollowedByItsStepBoundary() {
+        Translation translation = Programs.translate("init.masl", """
+                import robots/Khepera.xml;
+                Khepera k, j = newAgent(Khepera);
+                synchronous entry main (true) {
+                  local int near = .getProximity(1);
+                  local Vector2d where = .position();
+                  shared int theirs = j.getProximity(2);
+                }
+                """);
+        assertTrue(translation.succeeded(), () -> translation.diagnostics().sorted().toString());
+        String program = translation.javaSources().get("masl.generated.init.KheperaProgram");
+        // The internal accessor takes no time; .position() and the external invocation take a step each.
+        assertEquals(2, occurrences(program, "ctx.stepBoundary()"), program);
+        assertTrue(program.contains("main$where = invokeSelf$position(ctx);\n"
+                + "                    pc = "), program);
+        assertTrue(program.contains("case 4: // init.masl:5: after .position()"), program);
+    }
+
+    @Test
     void unsupportedConstructsArePositionedErrors() {
         Translation translation = Programs.translate("wait.masl", """
                 import Default.xml;
