@@ -24,15 +24,21 @@ class SuspensionTest {
      * <pre>
      * asynchronous entry main (true) {
      *   shared int flag = 0;
-     *   if (.getProxyID() == 0) { .sleep(30); flag = 1; }
-     *   else { while (flag == 0) {} .logln("woke"); }
+     *   shared int in = 0;
+     *   if (.getProxyID() == 0) { while (in == 0) {} .sleep(30); flag = 1; }
+     *   else { in = 1; while (flag == 0) {} .logln("woke"); }
      * }
      * </pre>
+     *
+     * Agent 0 waits for agent 1 to be in the block before it sleeps: without that, an agent 1
+     * whose first slice came late (a starved thread) entered a new wave of {@code main} after agent
+     * 0 had left it, with a fresh {@code flag}, and waited for ever: a real deadlock, reported so.
      */
     static final class SleepAndBusyWait extends CompactProgram {
         static final long SLEEP_MS = 30;
         static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
         static final SharedDeclaration<Integer> FLAG = MAIN.declareShared("flag", 0);
+        static final SharedDeclaration<Integer> IN = MAIN.declareShared("in", 0);
 
         private final AtomicLong sleptNanos;
         private final AtomicInteger iterations;
@@ -52,10 +58,18 @@ class SuspensionTest {
                     case 0: if (!arrive(ctx, MAIN, true, 1, 7)) return; continue;
                     case 1:
                         ctx.shared(FLAG).initialise(() -> 0);
+                        ctx.shared(IN).initialise(() -> 0);
                         if (self.getProxyID() != 0) {
+                            ctx.shared(IN).set(1);
                             pc = 4;
                             continue;
                         }
+                        pc = 9;
+                        continue;
+                    case 9:
+                        if (!busyWait(ctx, ctx.shared(IN).get() == 0, 10)) return;
+                        continue;
+                    case 10:
                         sleepStart = System.nanoTime();
                         pc = 2;
                         if (!ctx.sleep(SLEEP_MS)) return;
@@ -93,9 +107,9 @@ class SuspensionTest {
             }
             // A spinning loop iterates thousands of times during the sleep. A parked one iterates
             // at most three times per change the mission makes (it sees the change, finds nothing
-            // new, and may be woken once more by the same change), and this mission makes five:
-            // two arrivals at main, the write, two departures.
-            assertTrue(iterations.get() <= 2 + 3 * 5, () -> iterations + " iterations");
+            // new, and may be woken once more by the same change), and this mission makes six:
+            // two arrivals at main, two writes, two departures.
+            assertTrue(iterations.get() <= 2 + 3 * 6, () -> iterations + " iterations");
         }
     }
 
