@@ -3,13 +3,9 @@ package masl.e2e;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.regex.Pattern;
-import masl.translator.cli.Masl;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -60,12 +56,8 @@ class PlannerTeamMissionTest {
     }
 
     private static String masl(Path scenario, Path out) {
-        ByteArrayOutputStream stdout = new ByteArrayOutputStream();
-        ByteArrayOutputStream stderr = new ByteArrayOutputStream();
-        int status = new Masl(new PrintStream(stdout, true, StandardCharsets.UTF_8),
-                new PrintStream(stderr, true, StandardCharsets.UTF_8))
-                .run("run", "--sim", scenario.toString(), "--out", out.toString(), "--timeout", "120");
-        assertEquals(0, status, () -> stderr.toString(StandardCharsets.UTF_8));
-        return stdout.toString(StandardCharsets.UTF_8);
+        MaslCommand run = MaslCommand.run("run", "--sim", scenario.toString(), "--out", out.toString(), "--timeout", "120");
+        assertEquals(0, run.status(), run::err);
+        return run.out();
     }
 }

@@ -4,13 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import masl.translator.cli.Masl;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.io.TempDir;
@@ -58,13 +54,9 @@ class RowWalkingMissionTest {
     private static final int Y = 3;
 
     private static String masl(Path scenario, Path out) {
-        ByteArrayOutputStream stdout = new ByteArrayOutputStream();
-        ByteArrayOutputStream stderr = new ByteArrayOutputStream();
-        int status = new Masl(new PrintStream(stdout, true, StandardCharsets.UTF_8),
-                new PrintStream(stderr, true, StandardCharsets.UTF_8))
-                .run("run", "--sim", scenario.toString(), "--out", out.toString(), "--timeout", "120");
-        assertEquals(0, status, () -> stderr.toString(StandardCharsets.UTF_8));
-        return stdout.toString(StandardCharsets.UTF_8);
+        MaslCommand run = MaslCommand.run("run", "--sim", scenario.toString(), "--out", out.toString(), "--timeout", "120");
+        assertEquals(0, run.status(), run::err);
+        return run.out();
     }
 
     private static String lastTime(List<String> csv) {

@@ -4,9 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -14,7 +11,6 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import masl.translator.cli.Masl;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -138,13 +134,9 @@ class SweepMissionTest {
     }
 
     private static String masl(Path scenario, int seed, Path out) {
-        ByteArrayOutputStream stdout = new ByteArrayOutputStream();
-        ByteArrayOutputStream stderr = new ByteArrayOutputStream();
-        int status = new Masl(new PrintStream(stdout, true, StandardCharsets.UTF_8),
-                new PrintStream(stderr, true, StandardCharsets.UTF_8))
-                .run("run", "--sim", scenario.toString(), "--seed", String.valueOf(seed), "--out", out.toString(),
+        MaslCommand run = MaslCommand.run("run", "--sim", scenario.toString(), "--seed", String.valueOf(seed), "--out", out.toString(),
                         "--timeout", "120");
-        assertEquals(0, status, () -> stderr.toString(StandardCharsets.UTF_8));
-        return stdout.toString(StandardCharsets.UTF_8);
+        assertEquals(0, run.status(), run::err);
+        return run.out();
     }
 }
