@@ -10,7 +10,6 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicLong;
 import masl.jade.acl.AclInvocations;
-import masl.jade.acl.ContentException;
 import masl.jade.acl.JsonContent;
 import masl.jade.acl.Reply;
 import masl.runtime.AgentImplementation;
@@ -61,14 +60,8 @@ final class BodyAgent extends RegisteredMaslAgent {
             send(forwarded(requester, message));
             return;
         }
-        if (message.getPerformative() == ACLMessage.NOT_UNDERSTOOD) {
-            return; // never answered: two agents would echo forever
-        }
-        PrimitiveTable.Call call;
-        try {
-            call = primitives.bind(AclInvocations.readRequest(message));
-        } catch (ContentException problem) {
-            send(AclInvocations.notUnderstood(message, problem));
+        PrimitiveTable.Call call = requestedCall(message);
+        if (call == null) {
             return;
         }
         if (coordinator.equals(message.getSender())) {

@@ -4,8 +4,6 @@ import jade.core.behaviours.Behaviour;
 import jade.core.behaviours.CyclicBehaviour;
 import jade.lang.acl.ACLMessage;
 import java.util.concurrent.CountDownLatch;
-import masl.jade.acl.AclInvocations;
-import masl.jade.acl.ContentException;
 import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 
@@ -43,14 +41,8 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
     }
 
     private void answer(ACLMessage message) {
-        if (message.getPerformative() == ACLMessage.NOT_UNDERSTOOD) {
-            return; // never answer a NOT_UNDERSTOOD with another: two agents would echo forever
-        }
-        PrimitiveTable.Call call;
-        try {
-            call = primitives.bind(AclInvocations.readRequest(message));
-        } catch (ContentException problem) {
-            send(AclInvocations.notUnderstood(message, problem));
+        PrimitiveTable.Call call = requestedCall(message);
+        if (call == null) {
             return;
         }
         String primitive = call.primitive().name();

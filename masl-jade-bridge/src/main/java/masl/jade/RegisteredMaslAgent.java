@@ -4,7 +4,10 @@ import jade.core.Agent;
 import jade.core.behaviours.Behaviour;
 import jade.domain.DFService;
 import jade.domain.FIPAException;
+import jade.lang.acl.ACLMessage;
 import java.util.concurrent.CountDownLatch;
+import masl.jade.acl.AclInvocations;
+import masl.jade.acl.ContentException;
 
 /**
  * A JADE agent standing for one MASL agent: registered with the DF under the agent's type and
@@ -14,7 +17,7 @@ import java.util.concurrent.CountDownLatch;
 abstract class RegisteredMaslAgent extends Agent {
     private static final long serialVersionUID = 1L;
 
-    final transient PrimitiveTable primitives;
+    private final transient PrimitiveTable primitives;
     private final transient CountDownLatch ready;
     private transient volatile Thread thread;
     private transient volatile FIPAException registrationFailure;
@@ -47,6 +50,24 @@ abstract class RegisteredMaslAgent extends Agent {
             } catch (FIPAException e) {
                 // The platform is going away with its DF: nothing is left to deregister from.
             }
+        }
+    }
+
+    /**
+     * The primitive call a request asks for, or null when there is none to serve: a
+     * {@code NOT_UNDERSTOOD} is never answered (two agents would echo each other forever), and a
+     * malformed request, an unknown primitive or unusable arguments are answered
+     * {@code NOT_UNDERSTOOD} here.
+     */
+    final PrimitiveTable.Call requestedCall(ACLMessage message) {
+        if (message.getPerformative() == ACLMessage.NOT_UNDERSTOOD) {
+            return null;
+        }
+        try {
+            return primitives.bind(AclInvocations.readRequest(message));
+        } catch (ContentException problem) {
+            send(AclInvocations.notUnderstood(message, problem));
+            return null;
         }
     }
 
