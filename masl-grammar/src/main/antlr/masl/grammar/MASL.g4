@@ -11,6 +11,9 @@
  */
 grammar MASL;
 
+// Rule nodes are numbered once parsed, for the analysis's tables (MaslRuleContext).
+options { contextSuperClass = MaslRuleContext; }
+
 // ---------------------------------------------------------------- program structure (§3)
 
 program

@@ -94,7 +94,7 @@ class CorpusTest {
         static List<String> all() {
             List<String> names = new ArrayList<>();
             for (Class<?> type : MASLParser.class.getDeclaredClasses()) {
-                boolean labelledParent = type.getSuperclass() != ParserRuleContext.class
+                boolean labelledParent = type.getSuperclass() != MaslRuleContext.class
                         && ParserRuleContext.class.isAssignableFrom(type.getSuperclass());
                 boolean hasLabelledChildren = false;
                 for (Class<?> other : MASLParser.class.getDeclaredClasses()) {

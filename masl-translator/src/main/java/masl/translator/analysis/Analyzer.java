@@ -7,10 +7,7 @@ import masl.grammar.MASLParser;
 import masl.runtime.descriptor.DescriptorLoader;
 import masl.translator.diagnostics.Diagnostics;
 import masl.translator.parse.ProgramParser;
-import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.Token;
-import org.antlr.v4.runtime.tree.ErrorNode;
-import org.antlr.v4.runtime.tree.ParseTree;
 
 /**
  * Name resolution and type checking of a parsed MASL program: reports every semantic error of the file
@@ -28,8 +25,8 @@ public final class Analyzer {
     public static AnalyzedProgram analyze(ProgramParser.Parsed parsed, DescriptorLoader descriptors,
             Diagnostics diagnostics) {
         MASLParser.ProgramContext tree = parsed.tree();
-        if (hasSyntaxErrors(tree)) {
-            return new AnalyzedProgram(parsed, Map.of(), List.of(), new LinkedHashSet<>(), null, new Bindings());
+        if (parsed.repaired()) {
+            return new AnalyzedProgram(parsed, Map.of(), List.of(), new LinkedHashSet<>(), null, new Bindings(0));
         }
         Errors errors = new Errors(parsed.source().name(), diagnostics);
         HeaderChecker headers = new HeaderChecker(descriptors, parsed.source().folder(), parsed.tokens(), errors);
@@ -43,7 +40,7 @@ public final class Analyzer {
             }
         }
 
-        Bindings bindings = new Bindings();
+        Bindings bindings = new Bindings(parsed.nodes());
         TypeNames typeNames = new TypeNames(headers.types(), descriptors.implementationClasses());
         EntryNames entryNames = new EntryNames(root, blockTree.blocksByName(), headers.declaredEntries().keySet(),
                 errors);
@@ -67,20 +64,5 @@ public final class Analyzer {
             scope.declare(event.name(), event);
         }
         return scope;
-    }
-
-    private static boolean hasSyntaxErrors(ParseTree tree) {
-        if (tree instanceof ErrorNode) {
-            return true;
-        }
-        if (tree instanceof ParserRuleContext rule && rule.exception != null) {
-            return true;
-        }
-        for (int i = 0; i < tree.getChildCount(); i++) {
-            if (hasSyntaxErrors(tree.getChild(i))) {
-                return true;
-            }
-        }
-        return false;
     }
 }

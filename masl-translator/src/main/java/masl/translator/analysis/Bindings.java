@@ -1,18 +1,25 @@
 package masl.translator.analysis;
 
-import java.util.HashMap;
-import java.util.Map;
 import java.util.Optional;
+import masl.grammar.MaslRuleContext;
 import org.antlr.v4.runtime.ParserRuleContext;
 
 /**
  * The analysis's findings on parse-tree nodes: the {@link Symbol} each name or member access resolved to,
- * and the {@link MaslType} of each expression. Keys are the parse-tree nodes themselves (identity).
+ * and the {@link MaslType} of each expression. Kept in arrays indexed by the nodes' numbers
+ * ({@link MaslRuleContext#index()}, given when the tree was parsed): the analysis records, and the
+ * generator asks, several times per node of a program of thousands of lines.
  */
 public final class Bindings {
 
-    private final Map<ParserRuleContext, Symbol> symbols = new HashMap<>();
-    private final Map<ParserRuleContext, MaslType> types = new HashMap<>();
+    private final Symbol[] symbols;
+    private final MaslType[] types;
+
+    /** Bindings for a tree of {@code nodes} numbered rule nodes. */
+    Bindings(int nodes) {
+        symbols = new Symbol[nodes];
+        types = new MaslType[nodes];
+    }
 
     /**
      * The symbol of a {@code nameExpr}, {@code fieldAccess}, {@code methodCall}, {@code selfInvocation},
@@ -20,7 +27,13 @@ public final class Bindings {
      * event, or of a jump's target block; empty when unresolved (an error was reported) or not a name.
      */
     public Optional<Symbol> symbolOf(ParserRuleContext tree) {
-        return Optional.ofNullable(symbols.get(tree));
+        return Optional.ofNullable(symbol(tree));
+    }
+
+    /** {@link #symbolOf}, or null: for the many questions of the generator about every node of a subtree. */
+    public Symbol symbol(ParserRuleContext tree) {
+        int index = ((MaslRuleContext) tree).index();
+        return index >= 0 && index < symbols.length ? symbols[index] : null;
     }
 
     /**
@@ -29,15 +42,25 @@ public final class Bindings {
      * label, an entry or a type name before a {@code .}).
      */
     public MaslType typeOf(ParserRuleContext expression) {
-        return types.getOrDefault(expression, MaslType.ERROR);
+        int index = ((MaslRuleContext) expression).index();
+        MaslType type = index >= 0 && index < types.length ? types[index] : null;
+        return type == null ? MaslType.ERROR : type;
     }
 
     void bind(ParserRuleContext tree, Symbol symbol) {
-        symbols.put(tree, symbol);
+        symbols[slot(tree)] = symbol;
     }
 
     MaslType type(ParserRuleContext expression, MaslType type) {
-        types.put(expression, type);
+        types[slot(expression)] = type;
         return type;
+    }
+
+    private static int slot(ParserRuleContext tree) {
+        int index = ((MaslRuleContext) tree).index();
+        if (index < 0) {
+            throw new IllegalArgumentException("a parse-tree node that was not numbered: " + tree.getText());
+        }
+        return index;
     }
 }

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import masl.grammar.MASLLexer;
 import masl.grammar.MASLParser;
+import masl.grammar.MaslRuleContext;
 import masl.translator.diagnostics.Diagnostics;
 import masl.translator.source.SourceFile;
 import org.antlr.v4.runtime.BailErrorStrategy;
@@ -13,6 +14,7 @@ import org.antlr.v4.runtime.CommonTokenStream;
 import org.antlr.v4.runtime.DefaultErrorStrategy;
 import org.antlr.v4.runtime.InputMismatchException;
 import org.antlr.v4.runtime.Parser;
+import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.RecognitionException;
 import org.antlr.v4.runtime.Recognizer;
 import org.antlr.v4.runtime.Token;
@@ -20,6 +22,8 @@ import org.antlr.v4.runtime.Vocabulary;
 import org.antlr.v4.runtime.atn.PredictionMode;
 import org.antlr.v4.runtime.misc.IntervalSet;
 import org.antlr.v4.runtime.misc.ParseCancellationException;
+import org.antlr.v4.runtime.tree.ErrorNode;
+import org.antlr.v4.runtime.tree.ParseTree;
 
 /**
  * Parses a MASL program with the ANTLR grammar and turns every syntax error into a positioned
@@ -28,8 +32,14 @@ import org.antlr.v4.runtime.misc.ParseCancellationException;
  */
 public final class ProgramParser {
 
-    /** The parse tree and the token stream it was built from (the analysis reads path texts from it). */
-    public record Parsed(SourceFile source, MASLParser.ProgramContext tree, CommonTokenStream tokens) { }
+    /**
+     * The parse tree and the token stream it was built from (the analysis reads path texts from it).
+     *
+     * @param nodes how many rule nodes the tree has, numbered 0 to {@code nodes - 1} ({@link MaslRuleContext})
+     * @param repaired whether ANTLR had to repair the tree after syntax errors
+     */
+    public record Parsed(SourceFile source, MASLParser.ProgramContext tree, CommonTokenStream tokens, int nodes,
+            boolean repaired) { }
 
     private ProgramParser() {
     }
@@ -48,15 +58,42 @@ public final class ProgramParser {
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
         parser.setErrorHandler(new BailErrorStrategy());
         try {
-            return new Parsed(source, parser.program(), tokens);
+            return numbered(source, parser, tokens, false);
         } catch (ParseCancellationException notSll) {
             tokens.seek(0);
             parser.reset();
             parser.getInterpreter().setPredictionMode(PredictionMode.LL);
             parser.setErrorHandler(new DefaultErrorStrategy());
             parser.addErrorListener(new Reporter(source.name(), diagnostics));
-            return new Parsed(source, parser.program(), tokens);
+            return numbered(source, parser, tokens, true);
         }
+    }
+
+    /**
+     * The program's tree, its nodes numbered as they are built. Only a parse that may have recovered
+     * from errors can hold repaired parts: one that did not bail met no syntax error.
+     */
+    private static Parsed numbered(SourceFile source, MASLParser parser, CommonTokenStream tokens, boolean mayRepair) {
+        MaslRuleContext.Numbering numbering = new MaslRuleContext.Numbering();
+        parser.removeParseListeners();
+        parser.addParseListener(numbering);
+        MASLParser.ProgramContext tree = parser.program();
+        return new Parsed(source, tree, tokens, numbering.count(), mayRepair && hasSyntaxErrors(tree));
+    }
+
+    private static boolean hasSyntaxErrors(ParseTree tree) {
+        if (tree instanceof ErrorNode) {
+            return true;
+        }
+        if (tree instanceof ParserRuleContext rule && rule.exception != null) {
+            return true;
+        }
+        for (int i = 0; i < tree.getChildCount(); i++) {
+            if (hasSyntaxErrors(tree.getChild(i))) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Rewords ANTLR's messages: which token was found, and what was expected when that is short. */
