@@ -41,6 +41,8 @@ final class CaseWriter {
     private record Jump(String indent, String before, Point point, String after) {
     }
 
+    private static final String[] INDENTS = {"", "    ", "        ", "            ", "                "};
+
     private final List<Case> cases = new ArrayList<>();
     private Case current;
     private boolean terminated = true;
@@ -79,7 +81,7 @@ final class CaseWriter {
     /** A line of code in the current case, starting an (unreachable) case if the previous code jumped away. */
     void line(String code) {
         startIfTerminated();
-        current.lines.add("    ".repeat(indent) + code);
+        current.lines.add(indentation() + code);
     }
 
     /** Names the code that follows: the comment of the current case if it has none and no code yet, else a line. */
@@ -117,7 +119,7 @@ final class CaseWriter {
     /** {@code pc = point;} */
     void setPc(Point point) {
         startIfTerminated();
-        current.lines.add(new Jump("    ".repeat(indent), "pc = ", point, ";"));
+        current.lines.add(new Jump(indentation(), "pc = ", point, ";"));
     }
 
     /** {@code pc = point; continue;}: the rest of the case is never reached. */
@@ -138,7 +140,7 @@ final class CaseWriter {
     /** The text of a jump to {@code point} inside a line: {@code prefix + "pc = N; continue;" + suffix}. */
     void jumpLine(String prefix, Point point, String suffix) {
         startIfTerminated();
-        current.lines.add(new Jump("    ".repeat(indent) + prefix, "pc = ", point, "; continue;" + suffix));
+        current.lines.add(new Jump(indentation() + prefix, "pc = ", point, "; continue;" + suffix));
     }
 
     /**
@@ -151,6 +153,10 @@ final class CaseWriter {
         place(next, null);
     }
 
+    private String indentation() {
+        return indent < INDENTS.length ? INDENTS[indent] : "    ".repeat(indent);
+    }
+
     private void startIfTerminated() {
         if (terminated || current == null) {
             current = new Case(null);
@@ -161,61 +167,69 @@ final class CaseWriter {
 
     /**
      * The {@code sourceAt} method of the program: each commented case's number and its comment (the
-     * MASL line), for the runtime's reports. Call after {@link #render}, which numbers the cases.
+     * MASL line), for the runtime's reports. Call after {@link #number}.
      */
-    List<String> sourceAtMethod() {
-        List<String> out = new ArrayList<>();
+    void sourceAtMethod(JavaLines out) {
         out.add("    @Override");
         out.add("    protected String sourceAt(int pc) {");
         out.add("        return switch (pc) {");
+        StringBuilder text = out.buffer();
         for (Case c : cases) {
             if (c.comment != null) {
-                out.add("            case " + c.number + " -> " + JavaText.quote(c.comment) + ";");
+                JavaText.quote(text.append("            case ").append(c.number).append(" -> "), c.comment).append(";\n");
             }
         }
         out.add("            default -> null;");
         out.add("        };");
         out.add("    }");
-        return out;
     }
 
     /**
      * The {@code sourceOfCallIn} method: for each case holding several statements, the last one (the
      * statement whose runtime call ends the case, say {@code .logln(x);} in a case that begins with
-     * {@code else}); other cases fall back on {@code sourceAt}. Call after {@link #render}.
+     * {@code else}); other cases fall back on {@code sourceAt}. Call after {@link #number}.
      */
-    List<String> sourceOfCallInMethod() {
-        List<String> out = new ArrayList<>();
+    void sourceOfCallInMethod(JavaLines out) {
         out.add("    @Override");
         out.add("    protected String sourceOfCallIn(int pc) {");
         out.add("        return switch (pc) {");
+        StringBuilder text = out.buffer();
         for (Case c : cases) {
             if (c.lastStatement != null && !c.lastStatement.equals(c.comment)) {
-                out.add("            case " + c.number + " -> " + JavaText.quote(c.lastStatement) + ";");
+                JavaText.quote(text.append("            case ").append(c.number).append(" -> "), c.lastStatement)
+                        .append(";\n");
             }
         }
         out.add("            default -> sourceAt(pc);");
         out.add("        };");
         out.add("    }");
-        return out;
     }
 
-    /** The cases, each line indented by {@code margin}. */
-    List<String> render(String margin) {
+    /** Numbers the cases, in the order they were placed: call once all the code is written. */
+    void number() {
         for (int i = 0; i < cases.size(); i++) {
             cases.get(i).number = i;
         }
-        List<String> out = new ArrayList<>();
+    }
+
+    /** Adds the cases to {@code out}, each line indented by {@code margin}. Call after {@link #number}. */
+    void render(JavaLines out, String margin) {
+        StringBuilder text = out.buffer();
         for (Case c : cases) {
-            out.add(margin + "case " + c.number + ":" + (c.comment == null ? "" : " // " + c.comment));
+            text.append(margin).append("case ").append(c.number).append(':');
+            if (c.comment != null) {
+                text.append(" // ").append(c.comment);
+            }
+            text.append('\n');
             for (Object line : c.lines) {
+                text.append(margin).append("    ");
                 if (line instanceof Jump jump) {
-                    out.add(margin + "    " + jump.indent() + jump.before() + jump.point().number() + jump.after());
+                    text.append(jump.indent()).append(jump.before()).append(jump.point().number()).append(jump.after());
                 } else {
-                    out.add(margin + "    " + line);
+                    text.append((String) line);
                 }
+                text.append('\n');
             }
         }
-        return out;
     }
 }

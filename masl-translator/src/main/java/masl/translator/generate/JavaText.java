@@ -13,8 +13,17 @@ final class JavaText {
 
     /** A Java string literal holding {@code text}. */
     static String quote(String text) {
-        StringBuilder out = new StringBuilder("\"");
-        for (char c : text.toCharArray()) {
+        return quote(new StringBuilder(text.length() + 2), text).toString();
+    }
+
+    /** Appends the Java string literal holding {@code text} to {@code out}; returns {@code out}. */
+    static StringBuilder quote(StringBuilder out, String text) {
+        if (isPlain(text)) {
+            return out.append('"').append(text).append('"');
+        }
+        out.append('"');
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
             switch (c) {
                 case '"' -> out.append("\\\"");
                 case '\\' -> out.append("\\\\");
@@ -30,7 +39,18 @@ final class JavaText {
                 }
             }
         }
-        return out.append('"').toString();
+        return out.append('"');
+    }
+
+    /** Whether {@code text} stands in a string literal as it is: printable ASCII, no quote or backslash. */
+    private static boolean isPlain(String text) {
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (c < 0x20 || c > 0x7e || c == '"' || c == '\\') {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**

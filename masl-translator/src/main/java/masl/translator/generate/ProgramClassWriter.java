@@ -1,6 +1,5 @@
 package masl.translator.generate;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -17,6 +16,9 @@ import masl.translator.analysis.Variable;
  * specialised for the type (MASL §4) as a resumable state machine over {@code pc}.
  */
 final class ProgramClassWriter {
+
+    /** About how many characters of Java a character of MASL becomes: the buffer is sized once. */
+    private static final int OUTPUT_PER_SOURCE_CHARACTER = 14;
 
     private final AnalyzedProgram program;
     private final StaticStructure structure;
@@ -38,10 +40,10 @@ final class ProgramClassWriter {
         StatementWriter statements = new StatementWriter(program, structure, expressions, unsupported, file,
                 keptOnReelect);
         CaseWriter resumptionPoints = statements.program();
-        List<String> cases = resumptionPoints.render("                ");
+        resumptionPoints.number();
         String implementation = type.descriptor().fullClassName();
 
-        List<String> out = new ArrayList<>();
+        JavaLines out = new JavaLines(OUTPUT_PER_SOURCE_CHARACTER * program.parsed().source().text().length());
         out.add("package " + packageName + ";");
         out.add("");
         out.add("import static " + packageName + "." + missionClass + ".*;");
@@ -113,16 +115,16 @@ final class ProgramClassWriter {
         out.add("    protected void resume(AgentContext ctx) {");
         out.add("        while (true) {");
         out.add("            switch (pc) {");
-        out.addAll(cases);
+        resumptionPoints.render(out, "                ");
         out.add("                default:");
         out.add("                    throw new IllegalStateException(\"pc \" + pc);");
         out.add("            }");
         out.add("        }");
         out.add("    }");
         out.add("");
-        out.addAll(resumptionPoints.sourceAtMethod());
+        resumptionPoints.sourceAtMethod(out);
         out.add("");
-        out.addAll(resumptionPoints.sourceOfCallInMethod());
+        resumptionPoints.sourceOfCallInMethod(out);
         if (expressions.usesDynamicMembers()) {
             out.add("");
             out.addAll(DynamicMembers.helpers());
@@ -136,6 +138,6 @@ final class ProgramClassWriter {
             out.addAll(helper);
         }
         out.add("}");
-        return String.join("\n", out) + "\n";
+        return out.toString();
     }
 }
