@@ -33,6 +33,11 @@ public record AnalyzedProgram(ProgramParser.Parsed parsed, Map<String, ImportedT
         return bindings.symbolOf(tree);
     }
 
+    /** What a name, member access or call stands for, or null; see {@link Bindings#symbol}. */
+    public Symbol symbol(ParserRuleContext tree) {
+        return bindings.symbol(tree);
+    }
+
     /** The static type of an expression; see {@link Bindings#typeOf}. */
     public MaslType typeOf(ParserRuleContext expression) {
         return bindings.typeOf(expression);

@@ -1,6 +1,8 @@
 package masl.translator.generate;
 
+import java.lang.reflect.Executable;
 import masl.grammar.MASLParser;
+import masl.grammar.MaslRuleContext;
 import masl.runtime.descriptor.AgentType;
 import masl.runtime.descriptor.Primitive;
 import masl.translator.analysis.MaslType;
@@ -21,12 +23,26 @@ import org.antlr.v4.runtime.tree.ParseTree;
  */
 final class TreeQueries {
 
+    // What a subtree holds, as bits: a statement is asked several questions, and a block about every
+    // statement in it, so each node's answers are worked out once and kept by the node's number.
+    private static final int KNOWN = 1;
+    private static final int USES_ABSENT_MEMBER = 1 << 1;
+    private static final int MAY_THROW = 1 << 2;
+    private static final int THROWS_CHECKED = 1 << 3;
+    private static final int CALLS_INSTRUCTION = 1 << 4;
+
     private final AnalyzedProgram program;
     private final ImportedType selfType;
+    /** The bits of each subtree asked about, by node number; 0 for one not yet asked about. */
+    private final int[] facts;
+    /** Whether each subtree asked about suspends (1 no, 2 yes), for the future variables of {@link #suspendsFor}. */
+    private int[] suspends;
+    private FutureVariables suspendsFor;
 
     TreeQueries(AnalyzedProgram program, ImportedType selfType) {
         this.program = program;
         this.selfType = selfType;
+        this.facts = new int[program.parsed().nodes()];
     }
 
     ImportedType selfType() {
@@ -39,16 +55,7 @@ final class TreeQueries {
      * Another agent's missing member is the call's business (a polymorphic receiver gives the default).
      */
     boolean usesAbsentMember(ParseTree tree) {
-        if (tree instanceof ParserRuleContext node && isSelfAccess(node)
-                && program.symbolOf(node).orElse(null) instanceof Member member && !selfHas(member)) {
-            return true;
-        }
-        for (int i = 0; i < tree.getChildCount(); i++) {
-            if (usesAbsentMember(tree.getChild(i))) {
-                return true;
-            }
-        }
-        return false;
+        return (facts(tree) & USES_ABSENT_MEMBER) != 0;
     }
 
     private boolean selfHas(Member member) {
@@ -89,13 +96,13 @@ final class TreeQueries {
 
     /** The instantiated type of the agent {@code receiver} names ({@code rover} of {@code Robot rover = newAgent(Rover)}), or null. */
     private AgentType namedAgentType(ExpressionContext receiver) {
-        return program.symbolOf(receiver).orElse(null) instanceof AgentDecl agent && agent.instantiatedType().isLoaded()
+        return program.symbol(receiver) instanceof AgentDecl agent && agent.instantiatedType().isLoaded()
                 ? agent.instantiatedType().descriptor() : null;
     }
 
     /** The agent type {@code receiver} names, as {@code Soft} in {@code Soft.MOVE_COST} (a static member), or null. */
     AgentType namedType(ExpressionContext receiver) {
-        return program.symbolOf(receiver).orElse(null) instanceof TypeRef ref
+        return program.symbol(receiver) instanceof TypeRef ref
                 && ref.type() instanceof MaslType.AgentRef agent && agent.type() != null && agent.type().isLoaded()
                 ? agent.type().descriptor() : null;
     }
@@ -117,7 +124,7 @@ final class TreeQueries {
 
     /** The primitive a call invokes, looked up in the callee's static type; null if it is no primitive call. */
     Primitive invokedPrimitive(ParseTree tree) {
-        if (!(tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
+        if (!(tree instanceof ParserRuleContext node && program.symbol(node) instanceof Member member
                 && member.kind() == Member.Kind.PRIMITIVE)) {
             return null;
         }
@@ -139,22 +146,31 @@ final class TreeQueries {
      * primitive or an asynchronous one, or reads a variable holding a future.
      */
     boolean suspends(ParseTree tree, FutureVariables futures) {
-        if (tree instanceof ParserRuleContext node) {
-            Symbol symbol = program.symbolOf(node).orElse(null);
-            if (symbol instanceof Variable variable && futures.contains(variable)) {
-                return true;
-            }
-            Primitive primitive = invokedPrimitive(node);
-            if (primitive != null && (!primitive.synchronous() || !isInternalCall(node))) {
-                return true;
-            }
+        if (!(tree instanceof MaslRuleContext node)) {
+            return false;
         }
-        for (int i = 0; i < tree.getChildCount(); i++) {
-            if (suspends(tree.getChild(i), futures)) {
-                return true;
-            }
+        if (futures != suspendsFor) {
+            suspends = new int[facts.length];
+            suspendsFor = futures;
         }
-        return false;
+        int known = suspends[node.index()];
+        if (known != 0) {
+            return known == 2;
+        }
+        boolean found = suspendsHere(node, futures);
+        for (int i = 0; i < node.getChildCount() && !found; i++) {
+            found = suspends(node.getChild(i), futures);
+        }
+        suspends[node.index()] = found ? 2 : 1;
+        return found;
+    }
+
+    private boolean suspendsHere(ParserRuleContext node, FutureVariables futures) {
+        if (program.symbol(node) instanceof Variable variable && futures.contains(variable)) {
+            return true;
+        }
+        Primitive primitive = invokedPrimitive(node);
+        return primitive != null && (!primitive.synchronous() || !isInternalCall(node));
     }
 
     /**
@@ -163,24 +179,12 @@ final class TreeQueries {
      * callee's type lacks counts too: its {@code nop()} has duration, like a statement's (§4).
      */
     boolean callsInstruction(ParseTree tree) {
-        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
-                && member.kind() == Member.Kind.PRIMITIVE) {
-            Primitive primitive = invokedPrimitive(node);
-            if (!isInternalCall(node) || primitive == null || !primitive.accessor() || !primitive.synchronous()) {
-                return true;
-            }
-        }
-        for (int i = 0; i < tree.getChildCount(); i++) {
-            if (callsInstruction(tree.getChild(i))) {
-                return true;
-            }
-        }
-        return false;
+        return (facts(tree) & CALLS_INSTRUCTION) != 0;
     }
 
     /** Whether {@code tree} reads or writes {@code variable}. */
     boolean mentions(ParseTree tree, Variable variable) {
-        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) == variable) {
+        if (tree instanceof ParserRuleContext node && program.symbol(node) == variable) {
             return true;
         }
         for (int i = 0; i < tree.getChildCount(); i++) {
@@ -197,30 +201,58 @@ final class TreeQueries {
      * {@code uncaught_exception} (MASL 8, 9); a primitive's exception is the runtime's to catch.
      */
     boolean mayThrow(ParseTree tree) {
-        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
-                && (member.kind() == Member.Kind.JAVA_METHOD && member.javaMember() != null
-                || member.kind() == Member.Kind.DYNAMIC)) {
-            return true;
-        }
-        for (int i = 0; i < tree.getChildCount(); i++) {
-            if (mayThrow(tree.getChild(i))) {
-                return true;
-            }
-        }
-        return false;
+        return (facts(tree) & MAY_THROW) != 0;
     }
 
+    /** Whether {@code tree} calls a Java method or constructor declaring a checked exception. */
     boolean throwsChecked(ParseTree tree) {
-        if (tree instanceof ParserRuleContext node && program.symbolOf(node).orElse(null) instanceof Member member
-                && member.javaMember() != null) {
-            for (Class<?> exception : member.javaMember().getExceptionTypes()) {
-                if (!RuntimeException.class.isAssignableFrom(exception) && !Error.class.isAssignableFrom(exception)) {
-                    return true;
-                }
+        return (facts(tree) & THROWS_CHECKED) != 0;
+    }
+
+    /** The bits of {@code tree}: its node's own, and its children's. */
+    private int facts(ParseTree tree) {
+        if (!(tree instanceof MaslRuleContext node)) {
+            return 0;
+        }
+        int known = facts[node.index()];
+        if (known != 0) {
+            return known;
+        }
+        int found = KNOWN | factsHere(node);
+        for (int i = 0; i < node.getChildCount(); i++) {
+            found |= facts(node.getChild(i));
+        }
+        facts[node.index()] = found;
+        return found;
+    }
+
+    private int factsHere(ParserRuleContext node) {
+        if (!(program.symbol(node) instanceof Member member)) {
+            return 0;
+        }
+        int found = 0;
+        if (isSelfAccess(node) && !selfHas(member)) {
+            found |= USES_ABSENT_MEMBER;
+        }
+        if (member.kind() == Member.Kind.JAVA_METHOD && member.javaMember() != null
+                || member.kind() == Member.Kind.DYNAMIC) {
+            found |= MAY_THROW;
+        }
+        if (member.javaMember() != null && declaresCheckedException(member.javaMember())) {
+            found |= THROWS_CHECKED;
+        }
+        if (member.kind() == Member.Kind.PRIMITIVE) {
+            Primitive primitive = invokedPrimitive(node);
+            if (!isInternalCall(node) || primitive == null || !primitive.accessor() || !primitive.synchronous()) {
+                found |= CALLS_INSTRUCTION;
             }
         }
-        for (int i = 0; i < tree.getChildCount(); i++) {
-            if (throwsChecked(tree.getChild(i))) {
+        return found;
+    }
+
+    private static boolean declaresCheckedException(Executable method) {
+        for (Class<?> exception : method.getExceptionTypes()) {
+            if (!RuntimeException.class.isAssignableFrom(exception) && !Error.class.isAssignableFrom(exception)) {
                 return true;
             }
         }
