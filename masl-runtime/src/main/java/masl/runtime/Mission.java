@@ -263,15 +263,16 @@ public final class Mission {
     }
 
     /**
-     * Runs the body of an asynchronous primitive launched by {@code requester} on a thread of its
-     * own; until it returns, the deadlock watchdog knows a wake-up may come. An {@code Error} in it
-     * fails the mission; exceptions are the body's to turn into events.
+     * Runs the body of an asynchronous primitive launched by {@code requester} as the scheduler
+     * runs primitives ({@link Scheduler#runPrimitive}: on a thread of its own, or as a task it
+     * orders); until it returns, the deadlock watchdog knows a wake-up may come. An {@code Error}
+     * in it fails the mission; exceptions are the body's to turn into events.
      */
     void runAsynchronously(Agent requester, Runnable body) {
         outsideWakeUpStarted();
         runningPrimitives.incrementAndGet();
         try {
-            primitives.execute(() -> {
+            scheduler.runPrimitive(() -> {
                 try {
                     body.run();
                 } catch (Throwable failure) {
@@ -279,7 +280,7 @@ public final class Mission {
                 } finally {
                     primitiveEnded();
                 }
-            });
+            }, primitives);
         } catch (RejectedExecutionException missionEnded) {
             primitiveEnded();
         }
