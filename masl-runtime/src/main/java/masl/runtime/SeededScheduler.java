@@ -51,7 +51,8 @@ public final class SeededScheduler implements Scheduler {
 
     private void work() {
         try {
-            while (true) {
+            // A primitive's turn returns early when interrupted: the flag is still set then.
+            while (!Thread.currentThread().isInterrupted()) {
                 next().run();
             }
         } catch (InterruptedException missionEnded) {
