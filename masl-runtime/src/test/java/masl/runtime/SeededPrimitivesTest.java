@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicReferenceArray;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Missions;
@@ -137,6 +138,59 @@ class SeededPrimitivesTest {
             journals.add(journal);
         }
         assertTrue(journals.size() > 1, "every seed ran the primitives in the same order");
+    }
+
+    /**
+     * A body that waits for its own agent to do something cannot finish while the one seeded thread
+     * waits for it: it is left to go on alone, and the mission completes.
+     * <pre>
+     * scalar entry main (true) {
+     *   local int got = .waitForGate();   // an asynchronous primitive: awaits a latch, then 7
+     *   .openGate();                      // the agent opens the latch
+     *   .logln("got " + got);             // reads the future
+     * }
+     * </pre>
+     */
+    @Test
+    void aBodyWaitingForItsAgentGoesOnAloneAndTheRunCompletes() throws InterruptedException {
+        EntryDefinition main = EntryDefinition.main("main", Mode.SCALAR);
+        for (long seed = 0; seed < 20; seed++) {
+            CountDownLatch gate = new CountDownLatch(1);
+            MissionOutcome outcome = Mission.builder().main(main).scheduler(new SeededScheduler(seed))
+                    .agent("a", new TestAgent(), self -> new CompactProgram(self) {
+                        private CompletableFuture<Integer> got;
+
+                        @Override
+                        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
+                        protected void resume(AgentContext ctx) {
+                            while (true) {
+                                switch (pc) {
+                                    case 0: if (!arrive(ctx, main, true, 1, 5)) return; continue;
+                                    case 1:
+                                        got = ctx.launch(self, "waitForGate", 0, () -> {
+                                            gate.await();
+                                            return 7;
+                                        });
+                                        if (!step(ctx, 2)) return;
+                                        continue;
+                                    case 2:
+                                        gate.countDown();
+                                        pc = 3;
+                                        if (!ctx.await(got)) return;
+                                    case 3:
+                                        self.logln("got " + got.join());
+                                        if (!step(ctx, 4)) return;
+                                        continue;
+                                    case 4: if (!leave(ctx, main, 5)) return; continue;
+                                    case 5: if (!endOf(ctx, main.sequence(), 6)) return; continue;
+                                    case 6: ctx.finish(); return;
+                                    default: throw new IllegalStateException("pc " + pc);
+                                }
+                            }
+                        }
+                    }).build().run(Duration.ofSeconds(20));
+            assertEquals("got 7\n", outcome.requireCompleted().journal(), "seed " + seed);
+        }
     }
 
     /** The journal, a separator line, then the trace as JSON lines (virtual time stamps included). */
