@@ -321,6 +321,9 @@ public final class Mission {
     /**
      * Runs a primitive's Java code for a caller, within the mission's call timeout if it has one: then
      * on a thread of its own, the caller's blocking wait letting the pool go on ({@link Blocking}).
+     * The timeout counts from the moment the primitive starts on that thread: it bounds how long the
+     * primitive runs, so a loaded machine that is slow to start the thread does not turn a quick
+     * primitive into a {@code timeout}.
      *
      * @throws PrimitiveTimedOut if it ran past the timeout: its thread is interrupted, its result dropped
      * @throws Exception what the primitive threw
@@ -329,9 +332,16 @@ public final class Mission {
         if (callTimeout == null) {
             return call.call();
         }
-        Future<T> running = primitives.submit(call);
+        CountDownLatch started = new CountDownLatch(1);
+        Future<T> running = primitives.submit(() -> {
+            started.countDown();
+            return call.call();
+        });
         try {
-            return Blocking.call(() -> running.get(callTimeout.toNanos(), TimeUnit.NANOSECONDS));
+            return Blocking.call(() -> {
+                started.await();
+                return running.get(callTimeout.toNanos(), TimeUnit.NANOSECONDS);
+            });
         } catch (TimeoutException late) {
             running.cancel(true);
             throw new PrimitiveTimedOut();
