@@ -168,10 +168,7 @@ final class Agent implements AgentContext, AgentTask {
             serveIfPending();
         } else if (!suspended) {
             die(new IllegalStateException(describe() + ": resume returned without a suspension or finish()"));
-        } else if (state.compareAndSet(RUNNING, PARKED)) {
-            // Invocations queued while the slice ran are served now that the agent is blocked.
-            serveIfPending();
-        } else {
+        } else if (!endSliceParked(RUNNING)) {
             mission.countSchedule();
             state.set(SCHEDULED);
             mission.scheduler().schedule(this);
@@ -189,14 +186,39 @@ final class Agent implements AgentContext, AgentTask {
         }
         if (finished) {
             state.set(DONE);
-        } else if (!state.compareAndSet(SERVING, PARKED)) {
+            // An invocation queued after the queue was drained found the agent SERVING: serve it too.
+            serveIfPending();
+        } else if (!endSliceParked(SERVING)) {
             mission.countSchedule();
             state.set(SCHEDULED);
             mission.scheduler().schedule(this);
-            return;
         }
-        // An invocation queued after the queue was drained found the agent SERVING: serve it too.
-        serveIfPending();
+    }
+
+    /**
+     * Ends the current slice {@code from → PARKED} unless an unpark came meanwhile (false), then
+     * serves the invocations queued while the slice ran, now that the agent is blocked. Parked in
+     * {@code wait(state)}, the agent is idle for the deadlock watchdog even with invocations queued
+     * (its state may allow none of them), so serving one is a wake-up: pending from before the agent
+     * turns {@code PARKED} until it is {@code SERVING} (see {@link Mission}, "Deadlock watchdog").
+     */
+    private boolean endSliceParked(int from) {
+        // Only the agent's own program makes it attentive: no wait can begin during this call.
+        boolean attentive = attentiveTicket.get() != 0;
+        if (attentive) {
+            mission.outsideWakeUpStarted();
+        }
+        try {
+            if (!state.compareAndSet(from, PARKED)) {
+                return false;
+            }
+            serveIfPending();
+            return true;
+        } finally {
+            if (attentive) {
+                mission.outsideWakeUpEnded();
+            }
+        }
     }
 
     /** Schedules a serving slice if invocations wait and the agent is blocked or done. */
@@ -215,10 +237,21 @@ final class Agent implements AgentContext, AgentTask {
         }
     }
 
-    /** Parked (waiting for someone else) or done: it cannot make progress on its own. */
+    /**
+     * Idle, for the deadlock watchdog: it runs nothing until it is woken. Parked (waiting for someone
+     * else) or done, with no invocation queued (a queued one is always served soon: by a serving
+     * slice, or by the agent at its next boundary); parked in {@code wait(state)}, even with
+     * invocations queued, which its state may not allow. The queue is read first: the state read
+     * after it then says whether the agent was idle at that instant, as nothing the watchdog waits
+     * out queues an invocation uncounted (see {@link Mission}, "Deadlock watchdog").
+     */
     boolean isIdle() {
+        boolean nothingQueued = invocations.isEmpty();
         int current = state.get();
-        return current == PARKED || current == DONE;
+        if (current == DONE) {
+            return nothingQueued;
+        }
+        return current == PARKED && (nothingQueued || attentiveTicket.get() != 0);
     }
 
     /** Parked in a busy-wait: waiting for a change, which an outside invocation is. */
@@ -849,6 +882,8 @@ final class Agent implements AgentContext, AgentTask {
      * agents may be changing meanwhile.
      */
     void submitInvocation(PendingInvocation invocation) {
+        // Queueing one for an idle agent wakes it, for the deadlock watchdog (Mission): counted first.
+        mission.countSchedule();
         invocations.add(invocation);
         serveIfPending();
         mission.changes().advance();

@@ -1,0 +1,204 @@
+package masl.runtime;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.time.Duration;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.function.BooleanSupplier;
+import masl.runtime.testing.Driver;
+import masl.runtime.testing.TestAgent;
+import masl.runtime.testing.TestTypes;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+
+/**
+ * The deadlock watchdog never reports a mission whose agents all look parked while a thread is
+ * between deciding to wake one and the wake-up being visible: that thread is stalled there (by the
+ * watchdog's accounting, {@link StallingWakeUps}) until the watchdog has looked at the quiet mission
+ * three times, more than the two agreeing looks a deadlock report needs.
+ */
+@Timeout(60)
+class WatchdogWindowTest {
+
+    /**
+     * Agent 0 waits in state {@code default} (attentive, no timeout) and, once an invocation has
+     * ended its wait, logs and finishes. Agent 1 awaits {@code released}, then finishes. No block.
+     * {@code beforeParking} runs in the slice that parks, {@code woken} in the one after.
+     */
+    static final class WaitOrAwait extends AgentProgram {
+        private final TestAgent self;
+        private final CompletableFuture<Void> released;
+        private final Runnable beforeParking;
+        private final Runnable woken;
+
+        WaitOrAwait(TestAgent self, CompletableFuture<Void> released, Runnable beforeParking, Runnable woken) {
+            this.self = self;
+            this.released = released;
+            this.beforeParking = beforeParking;
+            this.woken = woken;
+        }
+
+        @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
+        protected void resume(AgentContext ctx) {
+            switch (pc) {
+                case 0:
+                    pc = 1;
+                    boolean goOn = self.getProxyID() == 0 ? ctx.waitFor("default") : ctx.await(released);
+                    if (!goOn) {
+                        beforeParking.run();
+                        return;
+                    }
+                case 1:
+                    woken.run();
+                    if (self.getProxyID() == 0) {
+                        self.logln("wait ended");
+                    }
+                    ctx.finish();
+                    return;
+                default:
+                    throw new IllegalStateException("pc " + pc);
+            }
+        }
+    }
+
+    /** Stalls the first wake-up counted on thread {@link #stalled} right after its count. */
+    static final class StallingWakeUps extends WakeUps {
+        volatile Thread stalled;
+        /** When the mission is quiet but for the stalled wake-up; null until known. */
+        volatile BooleanSupplier quietButForTheStall;
+        final CountDownLatch inTheWindow = new CountDownLatch(1);
+        /** Counted by the watchdog's looks (two reads each) at the quiet mission: three looks. */
+        final CountDownLatch quietLooks = new CountDownLatch(6);
+        /** Counted by looks while the agents are parked (the submission may begin). */
+        final CountDownLatch parkedLooks = new CountDownLatch(1);
+        volatile BooleanSupplier parked;
+
+        @Override
+        void counted() {
+            super.counted();
+            if (Thread.currentThread() == stalled && inTheWindow.getCount() > 0) {
+                inTheWindow.countDown();
+                awaitUninterruptibly(quietLooks);
+            }
+        }
+
+        @Override
+        long look() {
+            BooleanSupplier quiet = quietButForTheStall;
+            if (inTheWindow.getCount() == 0 && quiet != null && quiet.getAsBoolean()) {
+                quietLooks.countDown();
+            }
+            BooleanSupplier allParked = parked;
+            if (allParked != null && allParked.getAsBoolean()) {
+                parkedLooks.countDown();
+            }
+            return super.look();
+        }
+
+        void release() {
+            while (quietLooks.getCount() > 0) {
+                quietLooks.countDown();
+            }
+        }
+    }
+
+    private static void awaitUninterruptibly(CountDownLatch latch) {
+        boolean interrupted = false;
+        while (true) {
+            try {
+                latch.await();
+                break;
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /**
+     * An invocation from outside the mission (the JADE bridge's path) ends agent 0's wait; its thread
+     * stalls after counting the wake-up and before the agent leaves PARKED, while agent 1 finishes.
+     */
+    @ParameterizedTest
+    @EnumSource(value = Driver.class, names = {"POOL", "THREADS", "SEEDED"})
+    void anOutsideInvocationStalledBeforeItsServingIsPendingWork(Driver driver) throws Exception {
+        StallingWakeUps wakeUps = new StallingWakeUps();
+        CompletableFuture<Void> released = new CompletableFuture<>();
+        TestAgent waiter = new TestAgent();
+        TestAgent awaiter = new TestAgent();
+        CountDownLatch awaiterWoken = new CountDownLatch(1);
+        Mission mission = Mission.builder().scheduler(driver.newScheduler()).wakeUps(wakeUps)
+                .agent("waiter", waiter, TestTypes.testAgent(),
+                        self -> new WaitOrAwait(self, released, () -> { }, () -> { }))
+                .agent("awaiter", awaiter, TestTypes.testAgent(),
+                        self -> new WaitOrAwait(self, released, () -> { }, awaiterWoken::countDown))
+                .build();
+        wakeUps.parked = () -> mission.agentOf(waiter).isIdle() && mission.agentOf(awaiter).isIdle();
+        Thread outside = new Thread(() -> {
+            awaitUninterruptibly(wakeUps.parkedLooks);
+            mission.submitInvocation(0, () -> waiter.log("served\n"));
+        }, "outside");
+        wakeUps.stalled = outside;
+        Thread choreographer = new Thread(() -> {
+            awaitUninterruptibly(wakeUps.inTheWindow);
+            // Woken, it finishes without parking again: idle then means done.
+            wakeUps.quietButForTheStall = () -> awaiterWoken.getCount() == 0 && mission.agentOf(awaiter).isIdle();
+            released.complete(null);
+        }, "choreographer");
+        outside.start();
+        choreographer.start();
+        try {
+            MissionOutcome outcome = mission.run(Duration.ofSeconds(30));
+            assertEquals(MissionOutcome.Status.COMPLETED, outcome.status(), outcome::toString);
+            assertEquals("served\nwait ended\n", outcome.journal());
+        } finally {
+            wakeUps.release();
+        }
+    }
+
+    /**
+     * Agent 0's wait has no invocation to serve when it parks, but agent 1 queues one just before
+     * its slice ends; the slice's own thread, about to serve it once the agent is PARKED, stalls
+     * after counting the wake-up, while agent 1 finishes.
+     */
+    @Test
+    void theEndOfAWaitingSliceStalledBeforeServingIsPendingWork() throws Exception {
+        StallingWakeUps wakeUps = new StallingWakeUps();
+        CountDownLatch queued = new CountDownLatch(1);
+        TestAgent waiter = new TestAgent();
+        TestAgent caller = new TestAgent();
+        Runnable waitForTheCall = () -> {
+            awaitUninterruptibly(queued);
+            wakeUps.stalled = Thread.currentThread();
+        };
+        Mission mission = Mission.builder().scheduler(new ThreadPerAgentScheduler()).wakeUps(wakeUps)
+                .agent("waiter", waiter, TestTypes.testAgent(),
+                        self -> new WaitOrAwait(self, new CompletableFuture<>(), waitForTheCall, () -> { }))
+                .agent("caller", caller, TestTypes.testAgent(), self -> new AgentProgram() {
+                    @Override
+                    protected void resume(AgentContext ctx) {
+                        ctx.invoke(waiter, "log", null, () -> {
+                            waiter.log("served\n");
+                            return null;
+                        });
+                        queued.countDown();
+                        ctx.finish();
+                    }
+                })
+                .build();
+        wakeUps.quietButForTheStall = () -> mission.agentOf(caller).isIdle();
+        try {
+            MissionOutcome outcome = mission.run(Duration.ofSeconds(30));
+            assertEquals(MissionOutcome.Status.COMPLETED, outcome.status(), outcome::toString);
+            assertEquals("served\nwait ended\n", outcome.journal());
+        } finally {
+            wakeUps.release();
+        }
+    }
+}
