@@ -15,13 +15,14 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
 /**
- * The deadlock watchdog never reports a mission whose agents all look parked while a thread is
- * between deciding to wake one and the wake-up being visible: that thread is stalled there (by the
- * watchdog's accounting, {@link StallingWakeUps}) until the watchdog has looked at the quiet mission
- * three times, more than the two agreeing looks a deadlock report needs.
+ * The deadlock watchdog (see {@link Mission}): it never reports a mission whose agents all look
+ * parked while a thread is between deciding to wake one and the wake-up being visible (that thread is
+ * stalled there, by the watchdog's accounting {@link StallingWakeUps}, until the watchdog has looked
+ * at the quiet mission three times, more than the two agreeing looks a report needs), and it still
+ * reports a wait that no queued invocation can end.
  */
 @Timeout(60)
-class WatchdogWindowTest {
+class DeadlockWatchdogTest {
 
     /**
      * Agent 0 waits in state {@code default} (attentive, no timeout) and, once an invocation has
@@ -200,5 +201,36 @@ class WatchdogWindowTest {
         } finally {
             wakeUps.release();
         }
+    }
+
+    /** Agent 0 waits in state {@code nothing}, no timeout; agent 1 queues a call it does not allow and finishes. */
+    @Test
+    void aWaitNoQueuedInvocationCanEndIsADeadlock() throws InterruptedException {
+        CountDownLatch waiting = new CountDownLatch(1);
+        TestAgent waiter = new TestAgent();
+        // Threads: the caller blocks its own until the waiter has parked.
+        Mission mission = Mission.builder().scheduler(new ThreadPerAgentScheduler())
+                .agent("waiter", waiter, TestTypes.testAgent(), self -> new AgentProgram() {
+                    @Override
+                    protected void resume(AgentContext ctx) {
+                        pc = 1;
+                        ctx.waitFor("nothing");
+                        waiting.countDown();
+                    }
+                })
+                .agent("caller", new TestAgent(), TestTypes.testAgent(), self -> new AgentProgram() {
+                    @Override
+                    protected void resume(AgentContext ctx) {
+                        awaitUninterruptibly(waiting);
+                        ctx.invoke(waiter, "getProxyID", -1, waiter::getProxyID);
+                        ctx.finish();
+                    }
+                })
+                .build();
+
+        MissionOutcome outcome = mission.run(Duration.ofSeconds(30));
+
+        assertEquals(MissionOutcome.Status.DEADLOCKED, outcome.status(), outcome::toString);
+        assertEquals("agent waiter (0) at pc 1: in no block\nagent caller (1) at pc 0: in no block\n", outcome.report());
     }
 }
