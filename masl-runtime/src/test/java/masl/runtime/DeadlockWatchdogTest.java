@@ -5,7 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.time.Duration;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.BooleanSupplier;
+import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.TestAgent;
 import masl.runtime.testing.TestTypes;
@@ -198,6 +200,115 @@ class DeadlockWatchdogTest {
             MissionOutcome outcome = mission.run(Duration.ofSeconds(30));
             assertEquals(MissionOutcome.Status.COMPLETED, outcome.status(), outcome::toString);
             assertEquals("served\nwait ended\n", outcome.journal());
+        } finally {
+            wakeUps.release();
+        }
+    }
+
+    static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
+    static final EntryDefinition HELD = MAIN.child("held", Mode.SYNCHRONOUS);
+
+    /**
+     * <pre>
+     * asynchronous entry main (true) {
+     *   if (me == 0) held.lock();
+     *   synchronous entry held (me == 0) { }          // agent 0 waits at its entry
+     *   if (me == 1) {
+     *     l.x = a0.nop();                             // sets done; queued at agent 0 as its slice ends
+     *     while (!done) {}
+     *     held.release(1);
+     *   }
+     * }
+     * </pre>
+     */
+    static final class HeldAndReleased extends CompactProgram {
+        private final TestAgent held;
+        private final AtomicBoolean done;
+        /** Agent 0 counts it down as its slice is about to park at {@code held}'s entry barrier. */
+        private final CountDownLatch parking;
+        /** Agent 0 runs it before parking, agent 1 after queueing {@code setDone}. */
+        private final Runnable hook;
+        private Label label;
+
+        HeldAndReleased(TestAgent self, TestAgent held, AtomicBoolean done, CountDownLatch parking, Runnable hook) {
+            super(self);
+            this.held = held;
+            this.done = done;
+            this.parking = parking;
+            this.hook = hook;
+        }
+
+        @Override
+        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
+        protected void resume(AgentContext ctx) {
+            int me = self.getProxyID();
+            while (true) {
+                switch (pc) {
+                    case 0: if (!arrive(ctx, MAIN, true, 1, 8)) return; continue;
+                    case 1:
+                        if (me == 0) {
+                            ctx.entry(HELD).lock();
+                            if (!arrive(ctx, HELD, true, 2, 3)) {
+                                parking.countDown();
+                                hook.run();
+                                return;
+                            }
+                            continue;
+                        }
+                        if (!arrive(ctx, HELD, false, 2, 3)) return;
+                        continue;
+                    case 2: if (!leave(ctx, HELD, 3)) return; continue;
+                    case 3: if (!endOf(ctx, HELD.sequence(), 4)) return; continue;
+                    case 4:
+                        if (me == 0) {
+                            pc = 7;
+                            continue;
+                        }
+                        awaitUninterruptibly(parking);
+                        label = ctx.newLabel();
+                        label.register(ctx.invoke(held, "nop", null, () -> {
+                            done.set(true);
+                            return null;
+                        }));
+                        hook.run();
+                        pc = 5;
+                        continue;
+                    case 5: if (!busyWait(ctx, !done.get(), 6)) return; continue;
+                    case 6: ctx.entry(HELD).release(1); if (!step(ctx, 7)) return; continue;
+                    case 7: if (!leave(ctx, MAIN, 8)) return; continue;
+                    case 8: if (!endOf(ctx, MAIN.sequence(), 9)) return; continue;
+                    case 9: ctx.finish(); return;
+                    default: throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    /**
+     * Agent 0, held at an entry barrier, has an invocation queued just before its slice ends; the
+     * slice's own thread, about to schedule the serving once the agent is PARKED, stalls after
+     * counting, while agent 1 parks in a busy-wait that only the served invocation can end.
+     */
+    @Test
+    void aParkedAgentWithAnInvocationQueuedIsNotIdle() throws Exception {
+        StallingWakeUps wakeUps = new StallingWakeUps();
+        CountDownLatch parking = new CountDownLatch(1);
+        CountDownLatch queued = new CountDownLatch(1);
+        AtomicBoolean done = new AtomicBoolean();
+        TestAgent held = new TestAgent();
+        TestAgent caller = new TestAgent();
+        Runnable waitForTheCall = () -> {
+            awaitUninterruptibly(queued);
+            wakeUps.stalled = Thread.currentThread();
+        };
+        Mission mission = Mission.builder().main(MAIN).scheduler(new ThreadPerAgentScheduler()).wakeUps(wakeUps)
+                .agent("held", held, self -> new HeldAndReleased(self, held, done, parking, waitForTheCall))
+                .agent("caller", caller, self -> new HeldAndReleased(self, held, done, parking, queued::countDown))
+                .build();
+        wakeUps.quietButForTheStall = () -> mission.agentOf(caller).isIdle();
+        try {
+            MissionOutcome outcome = mission.run(Duration.ofSeconds(30));
+            assertEquals(MissionOutcome.Status.COMPLETED, outcome.status(), outcome::toString);
         } finally {
             wakeUps.release();
         }
