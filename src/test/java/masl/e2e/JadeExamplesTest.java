@@ -8,13 +8,12 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import masl.jade.JadeOptions;
 import masl.jade.JadePlatform;
+import masl.jade.testing.JadePlatformExtension;
 import masl.translator.cli.Masl;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * The worked examples of examples.md (E1 to E8) run from their MASL sources inside
@@ -27,17 +26,8 @@ import org.junit.jupiter.api.Timeout;
 @Timeout(120)
 class JadeExamplesTest {
 
-    private static JadePlatform platform;
-
-    @BeforeAll
-    static void startPlatform() {
-        platform = JadePlatform.start(JadeOptions.mainContainer());
-    }
-
-    @AfterAll
-    static void closePlatform() {
-        platform.close();
-    }
+    @RegisterExtension
+    static final JadePlatformExtension JADE = new JadePlatformExtension();
 
     @Test
     void e1ScalarMainIsRunByOneAgent() {
@@ -95,6 +85,7 @@ class JadeExamplesTest {
 
     /** The journal of {@code masl run} on an example; fails unless the run succeeds silently. */
     private static String maslJoined(String example) {
+        JadePlatform platform = JADE.platform();
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         List<String> arguments = new ArrayList<>(List.of("run", "src/test/resources/examples/" + example,

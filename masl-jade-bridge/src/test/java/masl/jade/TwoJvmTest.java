@@ -7,17 +7,23 @@ import jade.lang.acl.ACLMessage;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
+import masl.jade.testing.JadePlatformExtension;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /** A container in a second JVM joins this JVM's platform over loopback, and leaves no thread there. */
 @Timeout(120)
 class TwoJvmTest {
 
+    @RegisterExtension
+    static final JadePlatformExtension JADE = new JadePlatformExtension();
+
     @Test
     void aContainerInAnotherJvmJoinsExchangesAndItsJvmEndsByItself() throws Exception {
         Path output = Files.createTempFile("masl-jade-joined-", ".log");
-        try (JadePlatform main = JadePlatform.start(JadeOptions.mainContainer())) {
+        try {
+            JadePlatform main = JADE.platform();
             Probe probe = new Probe();
             main.container().acceptNewAgent("probe-main", probe).start();
             Process joined = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
