@@ -54,13 +54,8 @@ class FipaRequestTest {
         MissionProgram program = TestPrograms.of(null,
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 TestPrograms.BusyUntilReleased::new);
-        CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
-            try {
-                return JadeLauncher.of(program).types(TestPrograms::type).run(JADE.platform(), TIMEOUT);
-            } catch (InterruptedException e) {
-                throw new IllegalStateException(e);
-            }
-        });
+        CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
+                JadeLauncher.of(program).types(TestPrograms::type), JADE.platform(), TIMEOUT);
         awaitRegistered();
         assertEquals(ACLMessage.INFORM, invoke("release", List.of()).getPerformative());
         MissionOutcome outcome = mission.get();
@@ -107,13 +102,8 @@ class FipaRequestTest {
         MissionProgram program = TestPrograms.of(null,
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 self -> new TestPrograms.ClosesWhenAsked(self, signals));
-        CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
-            try {
-                return JadeLauncher.of(program).types(TestPrograms::type).run(JADE.platform(), TIMEOUT);
-            } catch (InterruptedException e) {
-                throw new IllegalStateException(e);
-            }
-        });
+        CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
+                JadeLauncher.of(program).types(TestPrograms::type), JADE.platform(), TIMEOUT);
         try {
             awaitRegistered();
             assertEquals(ACLMessage.INFORM, invoke("log", List.of("before ")).getPerformative());
@@ -179,13 +169,8 @@ class FipaRequestTest {
         MissionProgram program = TestPrograms.of(null,
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 TestPrograms.UntilReleased::new);
-        CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
-            try {
-                return JadeLauncher.of(program).types(TestPrograms::type).run(JADE.platform(), TIMEOUT);
-            } catch (InterruptedException e) {
-                throw new IllegalStateException(e);
-            }
-        });
+        CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
+                JadeLauncher.of(program).types(TestPrograms::type), JADE.platform(), TIMEOUT);
         awaitRegistered();
         try {
             exchange.run();

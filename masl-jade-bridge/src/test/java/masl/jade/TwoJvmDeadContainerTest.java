@@ -1,7 +1,6 @@
 package masl.jade;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
 import java.util.List;
@@ -42,18 +41,13 @@ class TwoJvmDeadContainerTest {
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 self -> new CallsHangTwice(self, calling, results));
         try (BodyContainerProcess container = BodyContainerProcess.start(JADE.platform(), "c2")) {
-            CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
-                try {
-                    return JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2"))
-                            .run(JADE.platform(), MISSION_TIMEOUT);
-                } catch (InterruptedException e) {
-                    throw new IllegalStateException(e);
-                }
-            });
+            CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
+                    JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2")), JADE.platform(),
+                    MISSION_TIMEOUT);
             calling.get(60, TimeUnit.SECONDS);
             container.kill();
             MissionOutcome outcome = mission.get(60, TimeUnit.SECONDS);
-            assertTrue(outcome.completed(), outcome + " " + outcome.failure().map(f -> { java.io.StringWriter w = new java.io.StringWriter(); f.printStackTrace(new java.io.PrintWriter(w)); return w.toString(); }).orElse(""));
+            outcome.requireCompleted();
             assertEquals(List.of(-1, -1), results, "the default value of each call");
             assertEquals("", outcome.journal());
         }

@@ -50,14 +50,9 @@ class TwoJvmFipaRequestTest {
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 self -> new TestPrograms.ClosesWhenAsked(self, signals));
         try (BodyContainerProcess container = BodyContainerProcess.start(JADE.platform(), "c2")) {
-            CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
-                try {
-                    return JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2"))
-                            .run(JADE.platform(), TIMEOUT);
-                } catch (InterruptedException e) {
-                    throw new IllegalStateException(e);
-                }
-            });
+            CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
+                    JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2")), JADE.platform(),
+                    TIMEOUT);
             try {
                 DFAgentDescription[] found = DFService.searchUntilFound(probe, probe.getDefaultDF(),
                         DfEntries.service(null, DfEntries.PRIMITIVE_SERVICE, "release"), null, 30_000);

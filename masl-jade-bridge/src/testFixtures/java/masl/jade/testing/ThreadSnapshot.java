@@ -3,6 +3,7 @@ package masl.jade.testing;
 import java.time.Duration;
 import java.util.List;
 import java.util.Set;
+import masl.jade.JadeThreads;
 
 /**
  * The threads alive at one moment, to tell which threads a test started and left behind: those alive
@@ -39,20 +40,7 @@ public final class ThreadSnapshot {
      * @throws InterruptedException if the calling thread is interrupted while waiting
      */
     public List<Thread> awaitStartedEnded(Duration timeout) throws InterruptedException {
-        long deadline = System.nanoTime() + timeout.toNanos();
-        List<Thread> started = startedSince();
-        while (!started.isEmpty()) {
-            for (Thread thread : started) {
-                long leftMillis = (deadline - System.nanoTime()) / 1_000_000;
-                if (leftMillis <= 0) {
-                    return startedSince();
-                }
-                thread.join(leftMillis);
-            }
-            // A thread may start another as its last act (JADE's containers do).
-            started = startedSince();
-        }
-        return started;
+        return JadeThreads.awaitEnded(this::startedSince, timeout);
     }
 
     /**
