@@ -2,15 +2,10 @@ package masl.e2e;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import masl.jade.JadePlatform;
 import masl.jade.testing.JadePlatformExtension;
-import masl.translator.cli.Masl;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.RegisterExtension;
@@ -86,16 +81,11 @@ class JadeExamplesTest {
     /** The journal of {@code masl run} on an example; fails unless the run succeeds silently. */
     private static String maslJoined(String example) {
         JadePlatform platform = JADE.platform();
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        List<String> arguments = new ArrayList<>(List.of("run", "src/test/resources/examples/" + example,
-                "--platform", "jade", "--main-host", platform.host(), "--main-port", String.valueOf(platform.port()),
-                "--timeout", "60"));
-        int status = new Masl(new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8)).run(arguments.toArray(String[]::new));
-        assertEquals("", err.toString(StandardCharsets.UTF_8));
-        assertEquals(0, status);
-        return out.toString(StandardCharsets.UTF_8);
+        MaslCommand run = MaslCommand.run("run", "src/test/resources/examples/" + example, "--platform", "jade",
+                "--main-host", platform.host(), "--main-port", String.valueOf(platform.port()), "--timeout", "60");
+        assertEquals("", run.err());
+        assertEquals(0, run.status());
+        return run.out();
     }
 
     private static List<String> sorted(String journal) {

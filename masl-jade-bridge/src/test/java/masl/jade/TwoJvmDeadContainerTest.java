@@ -9,6 +9,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import masl.jade.testing.JadePlatformExtension;
+import masl.jade.testing.SecondJvm;
 import masl.runtime.AgentContext;
 import masl.runtime.EntryDefinition;
 import masl.runtime.MissionOutcome;
@@ -40,7 +41,7 @@ class TwoJvmDeadContainerTest {
         MissionProgram program = TestPrograms.of(CallsHangTwice.MAIN,
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 self -> new CallsHangTwice(self, calling, results));
-        try (BodyContainerProcess container = BodyContainerProcess.start(JADE.platform(), "c2")) {
+        try (SecondJvm container = BodyContainerMain.start(JADE.platform(), "c2")) {
             CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
                     JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2")), JADE.platform(),
                     MISSION_TIMEOUT);

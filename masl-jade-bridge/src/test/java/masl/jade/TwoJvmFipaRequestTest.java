@@ -15,6 +15,7 @@ import java.util.concurrent.TimeUnit;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.Reply;
 import masl.jade.testing.JadePlatformExtension;
+import masl.jade.testing.SecondJvm;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
 import org.junit.jupiter.api.BeforeAll;
@@ -49,7 +50,7 @@ class TwoJvmFipaRequestTest {
         MissionProgram program = TestPrograms.of(null,
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 self -> new TestPrograms.ClosesWhenAsked(self, signals));
-        try (BodyContainerProcess container = BodyContainerProcess.start(JADE.platform(), "c2")) {
+        try (SecondJvm container = BodyContainerMain.start(JADE.platform(), "c2")) {
             CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
                     JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2")), JADE.platform(),
                     TIMEOUT);

@@ -6,10 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.time.Duration;
 import java.util.Map;
 import java.util.function.Function;
-import masl.jade.BodyContainerProcess;
+import masl.jade.BodyContainerMain;
 import masl.jade.JadeLauncher;
 import masl.jade.TestPrograms;
 import masl.jade.testing.JadePlatformExtension;
+import masl.jade.testing.SecondJvm;
 import masl.runtime.AgentProgram;
 import masl.runtime.EntryDefinition;
 import masl.runtime.MissionOutcome;
@@ -23,7 +24,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 /**
  * The hand-translated E2, E4 and E6 with their agents split across two containers in two JVMs:
  * this JVM's main container runs the mission (the coordinator), a second JVM
- * ({@link BodyContainerProcess}) hosts the bodies of some agents. Journals as in-process.
+ * ({@link BodyContainerMain}) hosts the bodies of some agents. Journals as in-process.
  */
 @Timeout(120)
 class TwoJvmExamplesTest {
@@ -70,7 +71,7 @@ class TwoJvmExamplesTest {
 
     private static Split split(EntryDefinition main, int agents, Function<TestAgent, AgentProgram> program,
             Map<String, String> placement) throws Exception {
-        try (BodyContainerProcess container = BodyContainerProcess.start(JADE.platform(), "c2")) {
+        try (SecondJvm container = BodyContainerMain.start(JADE.platform(), "c2")) {
             MissionOutcome outcome = JadeLauncher.of(TestPrograms.of(main, agents, program))
                     .types(TestPrograms::type).place(placement).run(JADE.platform(), TIMEOUT);
             assertTrue(outcome.completed(), outcome + "\n" + container.output());
