@@ -66,6 +66,8 @@ public final class Mission {
     /** How long a primitive may run before its caller gets {@code timeout}; null: no limit. */
     private final Duration callTimeout;
     private volatile boolean stopped;
+    /** {@link #run} has seen the end (whatever it was) and is stopping the scheduler. */
+    private volatile boolean over;
     /** Transitions of agents to SCHEDULED after their start: the watchdog's sign of life. */
     private final AtomicLong schedules = new AtomicLong();
     /** Wake-ups promised from outside the agents: sleep timers, futures being awaited, running primitives. */
@@ -127,6 +129,7 @@ public final class Mission {
         }
         scheduler.start(agents);
         MissionOutcome.Status status = awaitEnd(timeout);
+        over = true;
         trace.record(new TraceEvent.MissionEnded(scheduler.nanoTime(), status.name().toLowerCase(Locale.ROOT)));
         String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
         scheduler.shutdown();
@@ -237,6 +240,24 @@ public final class Mission {
                 Objects.requireNonNull(invocation, "invocation"), Objects.requireNonNull(denial, "denial")));
     }
 
+    /**
+     * Submits an invocation as {@link #submitInvocation(int, String, Runnable, Runnable)} does, but
+     * if agent {@code proxyId} is blocked or has finished, serves it at once on the calling thread
+     * (MASL §5 serves such an agent's invocations on its behalf at once), filtered by its state then,
+     * with the agent's serving exclusion: its program does not resume until the invocation has run.
+     * Once the mission has ended, it is never run, as a queued one is not. A running agent still serves it at its next step boundary or loop iteration, on its own
+     * thread. For a requester whose thread may run the primitive (the JADE bridge's message thread
+     * of the agent answers so without a hop to the agent's thread); {@code invocation} and
+     * {@code denial} must not wait for the calling thread.
+     *
+     * @throws IndexOutOfBoundsException if no agent has that proxy id
+     */
+    public void serveOrQueueInvocation(int proxyId, String primitive, Runnable invocation, Runnable denial) {
+        agents.get(proxyId).submitInvocationServingInline(new PendingInvocation(null,
+                Objects.requireNonNull(primitive, "primitive"), Objects.requireNonNull(invocation, "invocation"),
+                Objects.requireNonNull(denial, "denial")));
+    }
+
     /** The mission state of a block of this mission's program. */
     public Entry entry(EntryDefinition definition) {
         Entry entry = entries.get(definition);
@@ -291,6 +312,11 @@ public final class Mission {
         if (runningPrimitives.decrementAndGet() == 0 && running.get() == 0) {
             ended.countDown();
         }
+    }
+
+    /** Whether the mission has ended or is ending: an invocation submitted now is never run. */
+    boolean hasEnded() {
+        return over || ended.getCount() == 0;
     }
 
     void countSchedule() {
