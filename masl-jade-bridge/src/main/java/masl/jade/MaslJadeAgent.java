@@ -41,7 +41,7 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
         return new RequestServer();
     }
 
-    private void answer(ACLMessage message) {
+    private void serve(ACLMessage message) {
         PrimitiveTable.Call call = requestedCall(message);
         if (call == null) {
             return;
@@ -49,8 +49,8 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
         String primitive = call.primitive().name();
         // A FIPA agent is an "other" (MASL §11): the runtime filters the request by the agent's state
         // when the agent serves it, and runs either the primitive or the refusal.
-        mission.serveOrQueueInvocation(proxyId, primitive, () -> send(Answers.run(message, call, implementation, null)),
-                () -> send(Answers.refusal(message, getLocalName(), primitive)));
+        mission.serveOrQueueInvocation(proxyId, primitive, () -> answer(Answers.run(message, call, implementation, null)),
+                () -> answer(Answers.refusal(message, getLocalName(), primitive)));
     }
 
     /** Takes every message addressed to this agent. */
@@ -63,7 +63,7 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
             if (message == null) {
                 block();
             } else {
-                answer(message);
+                serve(message);
             }
         }
     }
