@@ -35,7 +35,12 @@ import masl.runtime.trace.TraceEvent;
  * invocations on its behalf, without running its program, then returns it to where it was. An
  * unpark that comes meanwhile turns {@code SERVING → SERVING_WOKEN}, and the serving slice then
  * schedules the program. So an agent is never run by two threads at once, its program and the
- * invocations it serves never overlap, and no wake-up or invocation is lost.
+ * invocations it serves never overlap, and no wake-up or invocation is lost. An invocation from
+ * outside the mission that its requester lets be served inline
+ * ({@link #submitInvocationServingInline}, the JADE bridge's FIPA requests) takes the same
+ * {@code SERVING} state but is served at once on the submitting thread, saving the hop to the
+ * agent's thread; invocations between the mission's agents ({@link #invoke}) are served by a
+ * scheduled slice, so that the order of slices stays the scheduler's (a seeded run replays).
  *
  * <p><b>Events</b> (MASL §8). Emitters push occurrences onto the agent's lock-free
  * {@link EventQueue}, and unpark it if it is parked in a busy-wait (§5). At a step boundary or
@@ -175,7 +180,10 @@ final class Agent implements AgentContext, AgentTask {
         }
     }
 
-    /** The slice of a blocked (or finished) agent: serve its pending invocations, nothing else. */
+    /**
+     * Serves the pending invocations of a blocked (or finished) agent, nothing else, then returns it
+     * to where it was: in a serving slice, or on the submitting thread for an invocation served inline.
+     */
     private void serveWhileBlocked() {
         try {
             serveInvocations();
@@ -223,18 +231,29 @@ final class Agent implements AgentContext, AgentTask {
 
     /** Schedules a serving slice if invocations wait and the agent is blocked or done. */
     private void serveIfPending() {
+        if (claimServing()) {
+            mission.scheduler().schedule(this);
+        }
+    }
+
+    /**
+     * Turns a blocked or finished agent {@code SERVING} if invocations wait for it: true if this
+     * caller did and must now serve them (or have them served). A parked agent leaving {@code PARKED}
+     * counts as a schedule for the deadlock watchdog, as an unpark does; {@code SERVING} is not idle.
+     */
+    private boolean claimServing() {
         while (hasServable()) {
             int current = state.get();
             if (current == PARKED) {
                 mission.countSchedule();
             } else if (current != DONE) {
-                return;
+                return false;
             }
             if (state.compareAndSet(current, SERVING)) {
-                mission.scheduler().schedule(this);
-                return;
+                return true;
             }
         }
+        return false;
     }
 
     /**
@@ -886,6 +905,23 @@ final class Agent implements AgentContext, AgentTask {
         mission.countSchedule();
         invocations.add(invocation);
         serveIfPending();
+        mission.changes().advance();
+    }
+
+    /**
+     * Queues an external invocation as {@link #submitInvocation} does, but if the agent is blocked or
+     * finished, serves the pending invocations at once on the calling thread, through the same
+     * {@code SERVING} state a serving slice takes: for requesters outside the mission (the JADE
+     * bridge's message thread), which then answer without a hop to the agent's thread. The
+     * invocation must not wait for the calling thread.
+     */
+    void submitInvocationServingInline(PendingInvocation invocation) {
+        mission.countSchedule();
+        invocations.add(invocation);
+        // Once the mission has ended, an invocation is never run: its scheduler would not run a serving slice either.
+        if (!mission.hasEnded() && claimServing()) {
+            serveWhileBlocked();
+        }
         mission.changes().advance();
     }
 

@@ -103,6 +103,8 @@ public final class Mission {
     private volatile boolean stopped;
     /** Wake-ups counted and pending, for the deadlock watchdog. */
     private final WakeUps wakeUps;
+    /** {@link #run} has seen the end (whatever it was) and is stopping the scheduler. */
+    private volatile boolean over;
     /** Asynchronous primitives running: the mission completes when they and every program are over. */
     private final AtomicInteger runningPrimitives = new AtomicInteger();
     private final ExecutorService primitives = Executors.newCachedThreadPool(runnable -> {
@@ -161,6 +163,7 @@ public final class Mission {
         }
         scheduler.start(agents);
         MissionOutcome.Status status = awaitEnd(timeout);
+        over = true;
         trace.record(new TraceEvent.MissionEnded(scheduler.nanoTime(), status.name().toLowerCase(Locale.ROOT)));
         String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
         scheduler.shutdown();
@@ -268,14 +271,37 @@ public final class Mission {
                 Objects.requireNonNull(invocation, "invocation"), Objects.requireNonNull(denial, "denial")));
     }
 
-    /** The caller runs no agent's slice: its wake-ups (serving, busy-waits) are pending until it returns. */
     private void submitFromOutside(Agent callee, PendingInvocation invocation) {
+        fromOutside(() -> callee.submitInvocation(invocation));
+    }
+
+    /** The caller runs no agent's slice: its wake-ups (serving, busy-waits) are pending until it returns. */
+    private void fromOutside(Runnable submission) {
         outsideWakeUpStarted();
         try {
-            callee.submitInvocation(invocation);
+            submission.run();
         } finally {
             outsideWakeUpEnded();
         }
+    }
+
+    /**
+     * Submits an invocation as {@link #submitInvocation(int, String, Runnable, Runnable)} does, but
+     * if agent {@code proxyId} is blocked or has finished, serves it at once on the calling thread
+     * (MASL §5 serves such an agent's invocations on its behalf at once), filtered by its state then,
+     * with the agent's serving exclusion: its program does not resume until the invocation has run.
+     * Once the mission has ended, it is never run, as a queued one is not. A running agent still
+     * serves it at its next step boundary or loop iteration, on its own thread. For a requester whose thread may run the primitive (the JADE bridge's message thread
+     * of the agent answers so without a hop to the agent's thread); {@code invocation} and
+     * {@code denial} must not wait for the calling thread.
+     *
+     * @throws IndexOutOfBoundsException if no agent has that proxy id
+     */
+    public void serveOrQueueInvocation(int proxyId, String primitive, Runnable invocation, Runnable denial) {
+        PendingInvocation pending = new PendingInvocation(null, Objects.requireNonNull(primitive, "primitive"),
+                Objects.requireNonNull(invocation, "invocation"), Objects.requireNonNull(denial, "denial"));
+        Agent callee = agents.get(proxyId);
+        fromOutside(() -> callee.submitInvocationServingInline(pending));
     }
 
     /** The mission state of a block of this mission's program. */
@@ -333,6 +359,11 @@ public final class Mission {
         if (runningPrimitives.decrementAndGet() == 0 && running.get() == 0) {
             ended.countDown();
         }
+    }
+
+    /** Whether the mission has ended or is ending: an invocation submitted now is never run. */
+    boolean hasEnded() {
+        return over || ended.getCount() == 0;
     }
 
     void countSchedule() {
