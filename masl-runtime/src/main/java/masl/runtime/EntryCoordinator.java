@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import java.util.function.Supplier;
 import masl.runtime.trace.LeaveCause;
@@ -52,6 +53,8 @@ final class EntryCoordinator {
     private final AtomicReference<WakeBatch> spareWakes = new AtomicReference<>();
     private final Mission mission;
     private boolean changed;
+    /** {@link #wake}, made once: a trip hands it its agents without allocating. */
+    private final Consumer<Agent> wakeParked = this::wake;
 
     EntryCoordinator(Mission mission, Trace trace, LongSupplier clock, ChangeEpoch changes) {
         this.mission = mission;
@@ -436,7 +439,7 @@ final class EntryCoordinator {
 
     /** Lets the agents that arrived go on; {@code going}, the completing arrival, is running (null: a change trips). */
     private void trip(SynchronisationBarrier barrier, Agent going) {
-        int agents = barrier.trip(going, wakes);
+        int agents = barrier.trip(going, wakeParked);
         trace.record(new TraceEvent.BarrierTripped(clock.getAsLong(), barrier.domain.name(), agents));
     }
 

@@ -2,6 +2,7 @@ package masl.runtime;
 
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Consumer;
 
 /**
  * The synchronisation barrier of one barrier domain (MASL §6.3, §6.4): an outermost synchronous
@@ -145,11 +146,11 @@ final class SynchronisationBarrier {
 
     /**
      * Under the lock, when {@link #isComplete()}: starts the next phase and lets the agents that
-     * arrived go, in arrival order: each is added to {@code wakes}, but {@code going}, the
-     * completing arrival that trips and goes on running (null if a membership change trips).
-     * Returns how many agents went on: the participants.
+     * arrived go, in arrival order: each is given to {@code letGo} (which wakes it), but
+     * {@code going}, the completing arrival that trips and goes on running (null if a membership
+     * change trips). Returns how many agents went on: the participants.
      */
-    int trip(Agent going, WakeBatch wakes) {
+    int trip(Agent going, Consumer<Agent> letGo) {
         long current = state.get();
         if (!isComplete(current)) {
             throw new IllegalStateException(describe(current) + " trips incomplete");
@@ -164,7 +165,7 @@ final class SynchronisationBarrier {
             Agent following = agent.nextArrival;
             agent.nextArrival = null;
             if (agent != going) {
-                wakes.addParked(agent);
+                letGo.accept(agent);
             }
             agent = following;
         }
