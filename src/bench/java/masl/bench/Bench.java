@@ -181,20 +181,23 @@ public final class Bench {
     }
 
     private static void lockStep(Options options) throws Exception {
-        LockStepRun masl = new MaslLockStep();
+        LockStepRun masl = MaslLockStep.onPool();
         LockStepRun pool = new TaskPoolWaves();
         LockStepRun threads = new PhaserThreads();
+        LockStepRun maslThreads = MaslLockStep.threadPerAgent();
         System.out.println("1. Lock-step: N agents in one synchronous block, steps per second (one barrier trip = one step),");
         System.out.println("   timed from the end of the first step to the end of the last (start-up left out), median of " + RUNS + ";");
         System.out.println("   then steps per second of process CPU time over those runs (every thread of the JVM, start-up included),");
         System.out.println("   which other jobs on the machine change much less than elapsed time");
-        System.out.printf(Locale.ROOT, "%8s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s%n",
-                "N", "MASL (pool)", "2-thr pool", "thr+Phaser", "MASL/pool", "MASL/threads", "MASL cpu", "pool cpu", "MASL/pool");
+        System.out.printf(Locale.ROOT, "%8s | %12s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s%n",
+                "N", "MASL (pool)", "2-thr pool", "thr+Phaser", "MASL thr", "MASL/pool", "MASL/threads",
+                "MASL cpu", "pool cpu", "MASL/pool");
         for (int agents : options.sizes) {
             int steps = stepsFor(agents, options.seconds);
             List<LockStepRun> runs = new ArrayList<>(List.of(masl, pool));
             if (agents <= options.threadLimit) {
                 runs.add(threads);
+                runs.add(maslThreads);
             }
             Map<String, List<Long>> cpuTimes = new LinkedHashMap<>();
             List<Measure> measures = new ArrayList<>();
@@ -212,13 +215,16 @@ public final class Bench {
             Double maslRate = median(figures.get(masl.name()));
             Double poolRate = median(figures.get(pool.name()));
             Double threadRate = figures.containsKey(threads.name()) ? median(figures.get(threads.name())) : null;
+            Double maslThreadRate = figures.containsKey(maslThreads.name()) ? median(figures.get(maslThreads.name())) : null;
             double maslCpu = stepsPerCpuSecond(steps, cpuTimes.get(masl.name()));
             double poolCpu = stepsPerCpuSecond(steps, cpuTimes.get(pool.name()));
-            System.out.printf(Locale.ROOT, "%8d | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s%n", agents,
-                    rate(maslRate), rate(poolRate), rate(threadRate), ratio(maslRate, poolRate), ratio(maslRate, threadRate),
+            System.out.printf(Locale.ROOT, "%8d | %12s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s%n", agents,
+                    rate(maslRate), rate(poolRate), rate(threadRate), rate(maslThreadRate), ratio(maslRate, poolRate),
+                    ratio(maslRate, threadRate),
                     rate(maslCpu), rate(poolCpu), ratio(maslCpu, poolCpu));
         }
-        System.out.printf(Locale.ROOT, "   (threads+Phaser not run above N=%d: one platform thread per agent; goal: MASL/pool >= 0.5x at N=1000)%n%n",
+        System.out.printf(Locale.ROOT, "   (thr+Phaser: hand-written, a platform thread per agent on a Phaser; MASL thr: MASL's thread-per-agent"
+                + " driver, masl run --threads; neither run above N=%d; goal: MASL/pool >= 0.5x at N=1000)%n%n",
                 options.threadLimit);
     }
 

@@ -2,10 +2,13 @@ package masl.bench;
 
 import java.time.Duration;
 import java.util.concurrent.Callable;
+import java.util.function.Supplier;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
 import masl.runtime.Mission;
 import masl.runtime.PoolScheduler;
+import masl.runtime.Scheduler;
+import masl.runtime.ThreadPerAgentScheduler;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.trace.TraceEvent;
 import masl.translator.MissionLoader;
@@ -15,14 +18,31 @@ import masl.translator.source.SourceFile;
 
 /**
  * MASL itself: a program of N agents in one synchronous block looping over a trivial instruction,
- * translated and compiled as {@code masl run} does, run on the default pool (one worker per core).
+ * translated and compiled as {@code masl run} does, run on the default pool (one worker per core)
+ * or, as the thesis's runtime did, on a platform thread per agent ({@code masl run --threads}).
  * Steps are the barrier trips of the mission's trace.
  */
 final class MaslLockStep implements LockStepRun {
 
+    private final String name;
+    private final Supplier<Scheduler> scheduler;
+
+    private MaslLockStep(String name, Supplier<Scheduler> scheduler) {
+        this.name = name;
+        this.scheduler = scheduler;
+    }
+
+    static MaslLockStep onPool() {
+        return new MaslLockStep("MASL", PoolScheduler::new);
+    }
+
+    static MaslLockStep threadPerAgent() {
+        return new MaslLockStep("MASL threads", ThreadPerAgentScheduler::new);
+    }
+
     @Override
     public String name() {
-        return "MASL";
+        return name;
     }
 
     @Override
@@ -30,7 +50,7 @@ final class MaslLockStep implements LockStepRun {
         MissionLoader program = compile(source(agents, steps));
         StepClock clock = new StepClock();
         Mission mission = program.newMission()
-                .scheduler(new PoolScheduler())
+                .scheduler(scheduler.get())
                 .journal(new StringBuilder())
                 .trace(event -> {
                     if (event instanceof TraceEvent.BarrierTripped) {

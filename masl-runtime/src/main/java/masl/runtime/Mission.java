@@ -263,15 +263,16 @@ public final class Mission {
     }
 
     /**
-     * Runs the body of an asynchronous primitive launched by {@code requester} on a thread of its
-     * own; until it returns, the deadlock watchdog knows a wake-up may come. An {@code Error} in it
-     * fails the mission; exceptions are the body's to turn into events.
+     * Runs the body of an asynchronous primitive launched by {@code requester} as the scheduler
+     * runs primitives ({@link Scheduler#runPrimitive}: on a thread of its own, or as a task it
+     * orders); until it returns, the deadlock watchdog knows a wake-up may come. An {@code Error}
+     * in it fails the mission; exceptions are the body's to turn into events.
      */
     void runAsynchronously(Agent requester, Runnable body) {
         outsideWakeUpStarted();
         runningPrimitives.incrementAndGet();
         try {
-            primitives.execute(() -> {
+            scheduler.runPrimitive(() -> {
                 try {
                     body.run();
                 } catch (Throwable failure) {
@@ -279,7 +280,7 @@ public final class Mission {
                 } finally {
                     primitiveEnded();
                 }
-            });
+            }, primitives);
         } catch (RejectedExecutionException missionEnded) {
             primitiveEnded();
         }
@@ -320,6 +321,9 @@ public final class Mission {
     /**
      * Runs a primitive's Java code for a caller, within the mission's call timeout if it has one: then
      * on a thread of its own, the caller's blocking wait letting the pool go on ({@link Blocking}).
+     * The timeout counts from the moment the primitive starts on that thread: it bounds how long the
+     * primitive runs, so a loaded machine that is slow to start the thread does not turn a quick
+     * primitive into a {@code timeout}.
      *
      * @throws PrimitiveTimedOut if it ran past the timeout: its thread is interrupted, its result dropped
      * @throws Exception what the primitive threw
@@ -328,9 +332,16 @@ public final class Mission {
         if (callTimeout == null) {
             return call.call();
         }
-        Future<T> running = primitives.submit(call);
+        CountDownLatch started = new CountDownLatch(1);
+        Future<T> running = primitives.submit(() -> {
+            started.countDown();
+            return call.call();
+        });
         try {
-            return Blocking.call(() -> running.get(callTimeout.toNanos(), TimeUnit.NANOSECONDS));
+            return Blocking.call(() -> {
+                started.await();
+                return running.get(callTimeout.toNanos(), TimeUnit.NANOSECONDS);
+            });
         } catch (TimeoutException late) {
             running.cancel(true);
             throw new PrimitiveTimedOut();

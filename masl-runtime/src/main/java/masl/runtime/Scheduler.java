@@ -1,6 +1,7 @@
 package masl.runtime;
 
 import java.util.List;
+import java.util.concurrent.Executor;
 
 /**
  * Runs a mission's agents. The runtime calls {@link #schedule} when an agent becomes runnable
@@ -43,6 +44,20 @@ public interface Scheduler {
      */
     default void scheduleAll(List<? extends AgentTask> agents) {
         agents.forEach(this::schedule);
+    }
+
+    /**
+     * Runs the body of a launched asynchronous primitive (MASL §9). By default on one of
+     * {@code threads}, concurrently with the agents and free to block for as long as it acts. A
+     * scheduler that orders a whole mission itself (seeded, simulated) runs it as one of its own
+     * tasks instead, a {@link PrimitiveTurn}, so that when it completes is reproducible too.
+     *
+     * @param body    runs the primitive and completes its future, which wakes its waiters
+     * @param threads the mission's primitive threads
+     * @throws java.util.concurrent.RejectedExecutionException if the mission has ended
+     */
+    default void runPrimitive(Runnable body, Executor threads) {
+        threads.execute(body);
     }
 
     /** Runs {@code action} (quick, non-blocking) after {@code delayMillis} of mission time. */

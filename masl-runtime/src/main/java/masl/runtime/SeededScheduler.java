@@ -5,27 +5,30 @@ import java.util.List;
 import java.util.PriorityQueue;
 import java.util.Random;
 import java.util.SplittableRandom;
+import java.util.concurrent.Executor;
 
 /**
  * Runs a whole mission on one thread, in an order drawn from a seeded random generator, on a
  * virtual clock: the same program, seed and agents give the same run, trace and journal (the
  * runtime itself makes no arbitrary choice, see {@link Scheduler}). Each slice is one step: the
- * next agent to run is drawn among all runnable ones after every step boundary, so different seeds
- * explore different interleavings.
+ * next task to run is drawn among all runnable ones after every step boundary, so different seeds
+ * explore different interleavings. The tasks are the agents' slices and the bodies of launched
+ * asynchronous primitives ({@link PrimitiveTurn}), so launches complete at reproducible points too.
  *
- * <p>Time is virtual: when no agent is runnable, the clock jumps to the earliest pending
+ * <p>Time is virtual: when nothing is runnable, the clock jumps to the earliest pending
  * {@link #scheduleAfter} action and runs it, so sleeps take no real time. A primitive that really
- * blocks blocks the only thread: it must not wait for another agent. Wake-ups from outside the
- * mission (a future completed by another thread) are waited for, and break determinism only by
- * when they come.
+ * blocks for a while ({@code Thread.sleep}) holds the run meanwhile and takes no virtual time. A
+ * body that waits for an agent goes on alone ({@link PrimitiveTurn}); such wake-ups, and those
+ * from outside the mission (a future completed by another thread), are waited for and break
+ * determinism only by when they come.
  */
 public final class SeededScheduler implements Scheduler {
 
     private record Timed(long at, long sequence, Runnable action) { }
 
     private final Random random;
-    /** Runnable agents; drawn by index, removed by swapping with the last one. */
-    private final List<AgentTask> runnable = new ArrayList<>();
+    /** Runnable agents' slices and primitives' turns; drawn by index, removed by swapping with the last one. */
+    private final List<Runnable> runnable = new ArrayList<>();
     private final PriorityQueue<Timed> timers = new PriorityQueue<>((a, b) -> a.at() != b.at()
             ? Long.compare(a.at(), b.at()) : Long.compare(a.sequence(), b.sequence()));
     /** Virtual milliseconds; volatile so that {@link #nanoTime()} reads it without the lock. */
@@ -40,7 +43,7 @@ public final class SeededScheduler implements Scheduler {
 
     @Override
     public synchronized void start(List<? extends AgentTask> agents) {
-        runnable.addAll(agents);
+        agents.forEach(agent -> runnable.add(agent::runSlice));
         worker = new Thread(this::work, "masl-seeded");
         worker.setDaemon(true);
         worker.start();
@@ -48,16 +51,17 @@ public final class SeededScheduler implements Scheduler {
 
     private void work() {
         try {
-            while (true) {
-                next().runSlice();
+            // A primitive's turn returns early when interrupted: the flag is still set then.
+            while (!Thread.currentThread().isInterrupted()) {
+                next().run();
             }
         } catch (InterruptedException missionEnded) {
             // shutdown() interrupts the worker: it ends with the mission.
         }
     }
 
-    /** Draws the next agent to run, moving the virtual clock on while none is runnable. */
-    private synchronized AgentTask next() throws InterruptedException {
+    /** Draws the next task to run, moving the virtual clock on while none is runnable. */
+    private synchronized Runnable next() throws InterruptedException {
         while (runnable.isEmpty()) {
             Timed timed = timers.poll();
             if (timed == null) {
@@ -68,7 +72,7 @@ public final class SeededScheduler implements Scheduler {
             }
         }
         int index = random.nextInt(runnable.size());
-        AgentTask drawn = runnable.get(index);
+        Runnable drawn = runnable.get(index);
         runnable.set(index, runnable.get(runnable.size() - 1));
         runnable.remove(runnable.size() - 1);
         return drawn;
@@ -76,7 +80,14 @@ public final class SeededScheduler implements Scheduler {
 
     @Override
     public synchronized void schedule(AgentTask agent) {
-        runnable.add(agent);
+        runnable.add(agent::runSlice);
+        notifyAll();
+    }
+
+    /** The body becomes runnable like an agent, and is drawn among them. */
+    @Override
+    public synchronized void runPrimitive(Runnable body, Executor threads) {
+        runnable.add(new PrimitiveTurn(body, threads)::run);
         notifyAll();
     }
 

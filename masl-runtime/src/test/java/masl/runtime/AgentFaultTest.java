@@ -28,12 +28,18 @@ import org.junit.jupiter.params.provider.EnumSource;
 @Timeout(120)
 class AgentFaultTest {
 
-    private static final Duration CALL_TIMEOUT = Duration.ofMillis(50);
+    /**
+     * Long enough that a primitive which throws at once never reaches it, even on a machine whose
+     * threads wait tens of milliseconds for a core; each hung call costs this much.
+     */
+    private static final Duration CALL_TIMEOUT = Duration.ofMillis(250);
     private static final int REPETITIONS = 10;
+    /** Runs of the missions that wait for {@link #CALL_TIMEOUT}. */
+    private static final int TIMED_OUT_REPETITIONS = 3;
 
     /**
-     * A primitive that never returns by itself: it waits until its thread is interrupted. A call
-     * timed out before its thread started never runs; one that ran must end, its thread interrupted.
+     * A primitive that never returns by itself: it waits until its thread is interrupted. Once timed
+     * out, it must end, its thread interrupted.
      */
     private static final class Hang {
         private final AtomicReference<Thread> runner = new AtomicReference<>();
@@ -124,7 +130,7 @@ class AgentFaultTest {
     @ParameterizedTest
     @EnumSource(Driver.class)
     void aHungPrimitiveGivesTimeoutAndItsDefaultAndOneThatThrowsUncaughtException(Driver driver) throws Exception {
-        for (int run = 0; run < REPETITIONS; run++) {
+        for (int run = 0; run < TIMED_OUT_REPETITIONS; run++) {
             Calls[] program = new Calls[1];
             MissionOutcome outcome = Mission.builder().main(Calls.MAIN).scheduler(driver.newScheduler())
                     .callTimeout(CALL_TIMEOUT)
@@ -201,7 +207,7 @@ class AgentFaultTest {
     @ParameterizedTest
     @EnumSource(Driver.class)
     void anExternalCallPastTheTimeoutGivesTimeoutInTheCaller(Driver driver) throws Exception {
-        for (int run = 0; run < REPETITIONS; run++) {
+        for (int run = 0; run < TIMED_OUT_REPETITIONS; run++) {
             AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(2);
             Hang hang = new Hang();
             Mission.Builder builder = Mission.builder().main(ExternalCall.MAIN).scheduler(driver.newScheduler())

@@ -4,7 +4,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import java.util.SplittableRandom;
+import java.util.concurrent.Executor;
 import masl.runtime.AgentTask;
+import masl.runtime.PrimitiveTurn;
 import masl.runtime.Scheduler;
 import masl.sim.physics.PhysicsWorld;
 
@@ -19,8 +21,10 @@ import masl.sim.physics.PhysicsWorld;
  * loop sees the world move: instructions take simulated time too. Sleeps and timeouts
  * ({@link #scheduleAfter}) are due a whole number of steps later and run right after that step.
  *
- * <p>Agents' primitives must not block on the world (the world only moves on this thread); the
- * robot primitives of {@code masl.agents} never do. A wake-up from another thread is waited for.
+ * <p>The bodies of launched asynchronous primitives are drawn with the agents' slices
+ * ({@link PrimitiveTurn}), so when a launch completes is reproducible too. Agents' primitives must
+ * not block on the world (the world only moves on this thread); the robot primitives of
+ * {@code masl.agents} never do. A wake-up from another thread is waited for.
  */
 public final class LockStepScheduler implements Scheduler {
 
@@ -28,8 +32,8 @@ public final class LockStepScheduler implements Scheduler {
     private final int slicesPerStep;
     private final Random random;
     private final StepTimers timers;
-    /** Runnable agents; drawn by index, removed by swapping with the last one. */
-    private final List<AgentTask> runnable = new ArrayList<>();
+    /** Runnable agents' slices and primitives' turns; drawn by index, removed by swapping with the last one. */
+    private final List<Runnable> runnable = new ArrayList<>();
     private int slicesSinceStep;
     private Thread worker;
     private volatile boolean shutDown;
@@ -51,7 +55,7 @@ public final class LockStepScheduler implements Scheduler {
 
     @Override
     public synchronized void start(List<? extends AgentTask> agents) {
-        runnable.addAll(agents);
+        agents.forEach(agent -> runnable.add(agent::runSlice));
         worker = new Thread(this::work, "masl-lockstep");
         worker.setDaemon(true);
         worker.start();
@@ -60,9 +64,9 @@ public final class LockStepScheduler implements Scheduler {
     private void work() {
         try {
             while (!shutDown) {
-                AgentTask next = next();
+                Runnable next = next();
                 if (next != null) {
-                    next.runSlice();
+                    next.run();
                 }
             }
         } catch (InterruptedException missionEnded) {
@@ -70,8 +74,8 @@ public final class LockStepScheduler implements Scheduler {
         }
     }
 
-    /** The next agent to run, or null after a world step (whose due timers have run). */
-    private AgentTask next() throws InterruptedException {
+    /** The next task to run, or null after a world step (whose due timers have run). */
+    private Runnable next() throws InterruptedException {
         synchronized (this) {
             while (runnable.isEmpty() && timers.isEmpty()) {
                 wait();
@@ -79,7 +83,7 @@ public final class LockStepScheduler implements Scheduler {
             if (!runnable.isEmpty() && slicesSinceStep < slicesPerStep) {
                 slicesSinceStep++;
                 int index = random.nextInt(runnable.size());
-                AgentTask drawn = runnable.get(index);
+                Runnable drawn = runnable.get(index);
                 runnable.set(index, runnable.get(runnable.size() - 1));
                 runnable.remove(runnable.size() - 1);
                 return drawn;
@@ -93,7 +97,17 @@ public final class LockStepScheduler implements Scheduler {
 
     @Override
     public synchronized void schedule(AgentTask agent) {
-        runnable.add(agent);
+        runnable.add(agent::runSlice);
+        notifyAll();
+    }
+
+    /**
+     * The body of an asynchronous primitive is drawn among the agents, at the simulated time it was
+     * launched, and takes one slice but no simulated time of its own ({@link PrimitiveTurn}).
+     */
+    @Override
+    public synchronized void runPrimitive(Runnable body, Executor threads) {
+        runnable.add(new PrimitiveTurn(body, threads)::run);
         notifyAll();
     }
 

@@ -1,0 +1,79 @@
+package masl.runtime;
+
+import java.util.concurrent.Executor;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
+
+/**
+ * An asynchronous primitive's body as a task of a scheduler that runs a whole mission on one
+ * thread in an order of its own ({@link SeededScheduler}, the simulator's lock-step scheduler).
+ * The scheduler draws it like an agent's slice and calls {@link #run()}, which waits until the body
+ * has returned: the body takes no mission time, and its completion wakes its waiters at a point of
+ * the run that the seed fixes.
+ *
+ * <p>The body itself runs on one of the mission's primitive threads, not on the scheduler's, so
+ * that a body that waits for something only the agents can do does not hang the mission: once its
+ * thread is seen blocked with no end of its own ({@link Thread.State#WAITING} or
+ * {@link Thread.State#BLOCKED}: a latch, a lock, a queue), the turn ends and the body goes on
+ * alone; its completion then comes when it comes, like any wake-up from outside, and that run is
+ * not reproducible. A timed block ({@code Thread.sleep}, a wait with a timeout) ends by itself:
+ * it is waited for, in real time, and takes no mission time (docs/decisions.md).
+ */
+public final class PrimitiveTurn {
+
+    /** How long the scheduler's thread parks between two looks at a body still running. */
+    private static final long LOOK_PERIOD_NANOS = TimeUnit.MICROSECONDS.toNanos(50);
+
+    private final Runnable body;
+    private final Executor threads;
+    private volatile Thread runner;
+    private volatile boolean returned;
+    private volatile Thread waiter;
+
+    /**
+     * @param body    the primitive and the completion of its future
+     * @param threads where the body runs, the mission's primitive threads
+     */
+    public PrimitiveTurn(Runnable body, Executor threads) {
+        this.body = body;
+        this.threads = threads;
+    }
+
+    /**
+     * Runs the body and waits, on the calling (scheduler's) thread, until it has returned or blocks
+     * without end; returns at once, the body left alone, if that thread is interrupted (the
+     * mission is ending).
+     */
+    public void run() {
+        waiter = Thread.currentThread();
+        try {
+            threads.execute(this::runBody);
+        } catch (RejectedExecutionException missionEnded) {
+            return;
+        }
+        while (!returned && !blockedWithoutEnd() && !Thread.currentThread().isInterrupted()) {
+            LockSupport.parkNanos(this, LOOK_PERIOD_NANOS);
+        }
+    }
+
+    private void runBody() {
+        runner = Thread.currentThread();
+        try {
+            body.run();
+        } finally {
+            returned = true;
+            LockSupport.unpark(waiter);
+        }
+    }
+
+    /** The state is read before {@link #returned}: a thread back in its pool has returned by then. */
+    private boolean blockedWithoutEnd() {
+        Thread thread = runner;
+        if (thread == null) {
+            return false;
+        }
+        Thread.State state = thread.getState();
+        return (state == Thread.State.WAITING || state == Thread.State.BLOCKED) && !returned;
+    }
+}
