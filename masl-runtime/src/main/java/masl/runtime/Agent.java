@@ -127,6 +127,15 @@ final class Agent implements AgentContext, AgentTask {
     /** Its program died: it counts in no wave, not even the mission's (see {@link EntryCoordinator#leaveAll}). */
     boolean departed;
 
+    // The agent's latest arrival at a synchronisation barrier (see SynchronisationBarrier): written
+    // by its own slice without the lock, read under the lock by the barrier it arrived at.
+    /** The agent that arrived before it at the same barrier, while it waits on the barrier's stack. */
+    Agent nextArrival;
+    /** The barrier it arrived at last, until it stops taking part in it; null if none. */
+    SynchronisationBarrier arrivedAt;
+    /** The phase of {@link #arrivedAt} its arrival counted in. */
+    int arrivalPhase;
+
     Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
             Mission mission) {
         this.id = id;
@@ -317,6 +326,17 @@ final class Agent implements AgentContext, AgentTask {
         long ticket = ++lastTicket;
         wakeTicket.set(ticket);
         return ticket;
+    }
+
+    /**
+     * Takes back the park that issued {@code ticket}, which nobody has ended: the call that issued
+     * it goes on without waiting after all (the arrival that completes a synchronisation barrier).
+     */
+    void cancelPark(long ticket) {
+        if (!wakeTicket.compareAndSet(ticket, 0)) {
+            throw new IllegalStateException(describe() + ": its park was ended before it was taken back");
+        }
+        suspended = false;
     }
 
     /** The ticket of the pending park, or 0 if the agent has none (it is running, not waiting). */
