@@ -2,19 +2,13 @@ package masl.e2e;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import masl.jade.JadeOptions;
 import masl.jade.JadePlatform;
-import masl.translator.cli.Masl;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
+import masl.jade.testing.JadePlatformExtension;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * The worked examples of examples.md (E1 to E8) run from their MASL sources inside
@@ -27,17 +21,8 @@ import org.junit.jupiter.api.Timeout;
 @Timeout(120)
 class JadeExamplesTest {
 
-    private static JadePlatform platform;
-
-    @BeforeAll
-    static void startPlatform() {
-        platform = JadePlatform.start(JadeOptions.mainContainer());
-    }
-
-    @AfterAll
-    static void closePlatform() {
-        platform.close();
-    }
+    @RegisterExtension
+    static final JadePlatformExtension JADE = new JadePlatformExtension();
 
     @Test
     void e1ScalarMainIsRunByOneAgent() {
@@ -95,16 +80,12 @@ class JadeExamplesTest {
 
     /** The journal of {@code masl run} on an example; fails unless the run succeeds silently. */
     private static String maslJoined(String example) {
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        List<String> arguments = new ArrayList<>(List.of("run", "src/test/resources/examples/" + example,
-                "--platform", "jade", "--main-host", platform.host(), "--main-port", String.valueOf(platform.port()),
-                "--timeout", "60"));
-        int status = new Masl(new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8)).run(arguments.toArray(String[]::new));
-        assertEquals("", err.toString(StandardCharsets.UTF_8));
-        assertEquals(0, status);
-        return out.toString(StandardCharsets.UTF_8);
+        JadePlatform platform = JADE.platform();
+        MaslCommand run = MaslCommand.run("run", "src/test/resources/examples/" + example, "--platform", "jade",
+                "--main-host", platform.host(), "--main-port", String.valueOf(platform.port()), "--timeout", "60");
+        assertEquals("", run.err());
+        assertEquals(0, run.status());
+        return run.out();
     }
 
     private static List<String> sorted(String journal) {

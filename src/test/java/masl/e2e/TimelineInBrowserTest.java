@@ -4,11 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
-import java.io.ByteArrayOutputStream;
 import java.io.File;
 import java.io.IOException;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Comparator;
@@ -18,7 +15,6 @@ import javax.imageio.ImageIO;
 import masl.runtime.trace.timeline.Timeline;
 import masl.runtime.trace.timeline.TimelineHtml;
 import masl.runtime.trace.timeline.TraceReader;
-import masl.translator.cli.Masl;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -82,11 +78,9 @@ class TimelineInBrowserTest {
     }
 
     private static int masl(String... args) {
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        int status = new Masl(new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8)).run(args);
-        assertEquals("", err.toString(StandardCharsets.UTF_8));
-        return status;
+        MaslCommand run = MaslCommand.run(args);
+        assertEquals("", run.err());
+        return run.status();
     }
 
     private static void chromiumScreenshot(Path page, Path screenshot) throws IOException, InterruptedException {

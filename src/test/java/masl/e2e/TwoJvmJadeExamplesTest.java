@@ -3,20 +3,14 @@ package masl.e2e;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
 import java.net.InetAddress;
 import java.net.ServerSocket;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import java.util.regex.Pattern;
 import masl.jade.JadeThreads;
+import masl.jade.testing.SecondJvm;
 import masl.translator.cli.Main;
-import masl.translator.cli.Masl;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -73,31 +67,14 @@ class TwoJvmJadeExamplesTest {
 
     private static Run split(String example, String placement) throws Exception {
         int port = freePort();
-        Path output = Files.createTempFile("masl-container-", ".log");
-        Process container = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), Main.class.getName(), "container",
-                "--main-host", "127.0.0.1", "--main-port", String.valueOf(port), "--name", "c2", "--timeout", "60")
-                .redirectErrorStream(true)
-                .redirectOutput(output.toFile())
-                .start();
-        try {
-            ByteArrayOutputStream out = new ByteArrayOutputStream();
-            ByteArrayOutputStream err = new ByteArrayOutputStream();
-            int status = new Masl(new PrintStream(out, true, StandardCharsets.UTF_8),
-                    new PrintStream(err, true, StandardCharsets.UTF_8)).run("run",
-                    "src/test/resources/examples/" + example, "--platform", "jade", "--port", String.valueOf(port),
-                    "--place", placement, "--timeout", "60");
-            assertEquals("", err.toString(StandardCharsets.UTF_8), Files.readString(output));
-            assertEquals(0, status, Files.readString(output));
+        try (SecondJvm container = SecondJvm.start(Main.class, "container", "--main-host", "127.0.0.1",
+                "--main-port", String.valueOf(port), "--name", "c2", "--timeout", "60")) {
+            MaslCommand run = MaslCommand.run("run", "src/test/resources/examples/" + example, "--platform", "jade",
+                    "--port", String.valueOf(port), "--place", placement, "--timeout", "60");
+            assertEquals("", run.err(), container.output());
+            assertEquals(0, run.status(), container.output());
             assertEquals(List.of(), JadeThreads.live(), "JADE threads left in this JVM after the mission");
-            assertTrue(container.waitFor(30, TimeUnit.SECONDS), "the container's JVM did not end:\n"
-                    + Files.readString(output));
-            assertEquals(0, container.exitValue(), Files.readString(output));
-            return new Run(out.toString(StandardCharsets.UTF_8), Files.readString(output));
-        } finally {
-            container.destroyForcibly();
-            container.waitFor(10, TimeUnit.SECONDS);
-            Files.deleteIfExists(output);
+            return new Run(run.out(), container.assertEndsByItself());
         }
     }
 

@@ -57,7 +57,7 @@ final class BodyAgent extends RegisteredMaslAgent {
     private void take(ACLMessage message) {
         ACLMessage requester = message.getInReplyTo() == null ? null : relayed.remove(message.getInReplyTo());
         if (requester != null) {
-            send(forwarded(requester, message));
+            answer(forwarded(requester, message));
             return;
         }
         PrimitiveTable.Call call = requestedCall(message);
@@ -73,7 +73,7 @@ final class BodyAgent extends RegisteredMaslAgent {
 
     private void serve(ACLMessage request, PrimitiveTable.Call call) {
         try {
-            primitiveThreads.execute(() -> send(journal.collecting(
+            primitiveThreads.execute(() -> answer(journal.collecting(
                     written -> Answers.run(request, call, implementation, written))));
         } catch (RejectedExecutionException missionEnded) {
             send(AclInvocations.reply(request, Reply.Kind.REFUSED,

@@ -276,6 +276,7 @@ final class Distribution {
         }
         String name = mission.names().get(id);
         String primitive = call.primitive().name();
+        // Queued, never served inline: the primitive is a request to the body, whose answer this thread takes.
         mission.mission().submitInvocation(id, primitive,
                 () -> coordinator.post(Answers.run(relay, call, mission.implementations().get(id), null)),
                 () -> coordinator.post(Answers.refusal(relay, name, primitive)));

@@ -3,6 +3,7 @@ package masl.jade;
 import java.time.Duration;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Supplier;
 
 /**
  * The threads of this JVM that run JADE's code: agents' threads, threaded behaviours, message
@@ -29,20 +30,31 @@ public final class JadeThreads {
      * @throws InterruptedException if the calling thread is interrupted while waiting
      */
     public static List<Thread> awaitNone(Duration timeout) throws InterruptedException {
+        return awaitEnded(JadeThreads::live, timeout);
+    }
+
+    /**
+     * Waits until {@code alive} names no thread, or {@code timeout} elapsed: joins the threads it
+     * names, then asks it again, since a thread may start another as its last act (JADE ends some
+     * threads so: a container's last act is to start one).
+     *
+     * @return the threads {@code alive} still names: empty when all have ended
+     * @throws InterruptedException if the calling thread is interrupted while waiting
+     */
+    public static List<Thread> awaitEnded(Supplier<List<Thread>> alive, Duration timeout) throws InterruptedException {
         long deadline = System.nanoTime() + timeout.toNanos();
-        List<Thread> alive = live();
-        while (!alive.isEmpty()) {
-            for (Thread thread : alive) {
+        List<Thread> threads = alive.get();
+        while (!threads.isEmpty()) {
+            for (Thread thread : threads) {
                 long leftMillis = (deadline - System.nanoTime()) / 1_000_000;
                 if (leftMillis <= 0) {
-                    return live();
+                    return alive.get();
                 }
                 thread.join(leftMillis);
             }
-            // JADE ends some threads by starting others (a container's last act is to start one).
-            alive = live();
+            threads = alive.get();
         }
-        return alive;
+        return threads;
     }
 
     private static boolean runsJade(StackTraceElement[] stack) {

@@ -15,10 +15,11 @@ import masl.runtime.Mission;
  *
  * <p>A request is read on this agent's JADE thread: one that is malformed, names an unknown
  * primitive or gives unusable arguments is answered {@code NOT_UNDERSTOOD} at once. A valid one is
- * queued at the MASL agent ({@link Mission#submitInvocation}) and served as MASL §5 says, on the
- * program's thread: {@code REFUSE} if the agent's permeability state then denies it to an
- * <em>other</em>, else the primitive runs and the answer is {@code INFORM} with its result or
- * {@code FAILURE} with what it threw.
+ * served as MASL §5 says ({@link Mission#serveOrQueueInvocation}): if the MASL agent is blocked or
+ * has finished, at once on this JADE thread, as a plain JADE agent answers; if its program is
+ * running, at its next step boundary, on the program's thread. Then it is {@code REFUSE} if the
+ * agent's permeability state denies it to an <em>other</em>, else the primitive runs and the answer
+ * is {@code INFORM} with its result or {@code FAILURE} with what it threw.
  */
 final class MaslJadeAgent extends RegisteredMaslAgent {
     private static final long serialVersionUID = 1L;
@@ -40,7 +41,7 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
         return new RequestServer();
     }
 
-    private void answer(ACLMessage message) {
+    private void serve(ACLMessage message) {
         PrimitiveTable.Call call = requestedCall(message);
         if (call == null) {
             return;
@@ -48,8 +49,8 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
         String primitive = call.primitive().name();
         // A FIPA agent is an "other" (MASL §11): the runtime filters the request by the agent's state
         // when the agent serves it, and runs either the primitive or the refusal.
-        mission.submitInvocation(proxyId, primitive, () -> send(Answers.run(message, call, implementation, null)),
-                () -> send(Answers.refusal(message, getLocalName(), primitive)));
+        mission.serveOrQueueInvocation(proxyId, primitive, () -> answer(Answers.run(message, call, implementation, null)),
+                () -> answer(Answers.refusal(message, getLocalName(), primitive)));
     }
 
     /** Takes every message addressed to this agent. */
@@ -62,7 +63,7 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
             if (message == null) {
                 block();
             } else {
-                answer(message);
+                serve(message);
             }
         }
     }

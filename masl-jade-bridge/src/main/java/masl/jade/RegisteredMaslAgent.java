@@ -66,9 +66,18 @@ abstract class RegisteredMaslAgent extends Agent {
         try {
             return primitives.bind(AclInvocations.readRequest(message));
         } catch (ContentException problem) {
-            send(AclInvocations.notUnderstood(message, problem));
+            answer(AclInvocations.notUnderstood(message, problem));
             return null;
         }
+    }
+
+    /**
+     * Sends an answer with this agent as its sender, set here: JADE's {@code send} finds a missing
+     * sender by catching a {@code NullPointerException}, a cost on every answer otherwise.
+     */
+    final void answer(ACLMessage reply) {
+        reply.setSender(getAID());
+        send(reply);
     }
 
     /** Why the DF refused the registration, or null if it accepted it. */

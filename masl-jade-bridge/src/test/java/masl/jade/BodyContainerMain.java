@@ -1,7 +1,9 @@
 package masl.jade;
 
+import java.io.IOException;
 import java.time.Duration;
 import java.util.List;
+import masl.jade.testing.SecondJvm;
 import masl.runtime.MissionProgram;
 
 /**
@@ -14,6 +16,11 @@ import masl.runtime.MissionProgram;
 public final class BodyContainerMain {
 
     private BodyContainerMain() {
+    }
+
+    /** Starts a second JVM running this as container {@code name} of {@code platform}. */
+    public static SecondJvm start(JadePlatform platform, String name) throws IOException {
+        return SecondJvm.start(BodyContainerMain.class, platform.host(), Integer.toString(platform.port()), name);
     }
 
     public static void main(String[] args) throws Exception {

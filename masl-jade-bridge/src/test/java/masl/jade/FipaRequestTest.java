@@ -11,19 +11,18 @@ import jade.domain.FIPAAgentManagement.ServiceDescription;
 import jade.lang.acl.ACLMessage;
 import java.time.Duration;
 import java.util.ArrayList;
-import java.util.HashSet;
 import java.util.List;
-import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.Reply;
+import masl.jade.testing.JadePlatformExtension;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
-import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * A plain FIPA agent (test code using the JADE API only) invokes the primitives of a MASL agent
@@ -34,26 +33,19 @@ class FipaRequestTest {
 
     private static final Duration TIMEOUT = Duration.ofSeconds(60);
 
-    private static Set<Thread> threadsBefore;
-    private static JadePlatform platform;
+    @RegisterExtension
+    static final JadePlatformExtension JADE = new JadePlatformExtension();
+
     private static Probe probe;
     /** The MASL agent; an AID by local name needs the platform's name, so it is made after the start. */
     private static AID b;
     private static int conversations;
 
     @BeforeAll
-    static void startPlatform() throws Exception {
-        threadsBefore = new HashSet<>(Thread.getAllStackTraces().keySet());
-        platform = JadePlatform.start(JadeOptions.mainContainer());
+    static void startProbe() throws Exception {
         probe = new Probe();
-        platform.container().acceptNewAgent("probe", probe).start();
+        JADE.platform().container().acceptNewAgent("probe", probe).start();
         b = new AID("b", AID.ISLOCALNAME);
-    }
-
-    @AfterAll
-    static void closePlatform() {
-        platform.close();
-        assertEquals(List.of(), JadePlatformTest.newThreads(threadsBefore), "threads left after the platform closed");
     }
 
     /** In-process the watchdog would call this busy-wait a deadlock; inside JADE a request may end it. */
@@ -62,13 +54,8 @@ class FipaRequestTest {
         MissionProgram program = TestPrograms.of(null,
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 TestPrograms.BusyUntilReleased::new);
-        CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
-            try {
-                return JadeLauncher.of(program).types(TestPrograms::type).run(platform, TIMEOUT);
-            } catch (InterruptedException e) {
-                throw new IllegalStateException(e);
-            }
-        });
+        CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
+                JadeLauncher.of(program).types(TestPrograms::type), JADE.platform(), TIMEOUT);
         awaitRegistered();
         assertEquals(ACLMessage.INFORM, invoke("release", List.of()).getPerformative());
         MissionOutcome outcome = mission.get();
@@ -115,13 +102,8 @@ class FipaRequestTest {
         MissionProgram program = TestPrograms.of(null,
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 self -> new TestPrograms.ClosesWhenAsked(self, signals));
-        CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
-            try {
-                return JadeLauncher.of(program).types(TestPrograms::type).run(platform, TIMEOUT);
-            } catch (InterruptedException e) {
-                throw new IllegalStateException(e);
-            }
-        });
+        CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
+                JadeLauncher.of(program).types(TestPrograms::type), JADE.platform(), TIMEOUT);
         try {
             awaitRegistered();
             assertEquals(ACLMessage.INFORM, invoke("log", List.of("before ")).getPerformative());
@@ -187,13 +169,8 @@ class FipaRequestTest {
         MissionProgram program = TestPrograms.of(null,
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 TestPrograms.UntilReleased::new);
-        CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
-            try {
-                return JadeLauncher.of(program).types(TestPrograms::type).run(platform, TIMEOUT);
-            } catch (InterruptedException e) {
-                throw new IllegalStateException(e);
-            }
-        });
+        CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
+                JadeLauncher.of(program).types(TestPrograms::type), JADE.platform(), TIMEOUT);
         awaitRegistered();
         try {
             exchange.run();

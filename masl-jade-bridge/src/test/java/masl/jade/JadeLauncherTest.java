@@ -6,9 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.StringWriter;
 import java.time.Duration;
-import java.util.HashSet;
 import java.util.List;
-import java.util.Set;
+import masl.jade.testing.JadePlatformExtension;
+import masl.jade.testing.ThreadSnapshot;
 import masl.runtime.AgentContext;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
@@ -17,17 +17,24 @@ import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.TestAgent;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
-/** The launcher's own platform, its outcomes other than completion, and what it refuses to run. */
+/**
+ * The launcher's own platform, its outcomes other than completion, and what it refuses to run. A
+ * test that uses {@link #jade} has a platform of its own.
+ */
 @Timeout(120)
 class JadeLauncherTest {
 
     private static final MissionProgram WAITER = TestPrograms.of(null,
             List.of(new MissionProgram.AgentSpec("w", ServiceAgent.class.getName())), TestPrograms.UntilReleased::new);
 
+    @RegisterExtension
+    final JadePlatformExtension jade = new JadePlatformExtension();
+
     @Test
     void aMissionOnItsOwnPlatformLeavesNoThreadBehind() throws Exception {
-        Set<Thread> before = new HashSet<>(Thread.getAllStackTraces().keySet());
+        ThreadSnapshot before = ThreadSnapshot.take();
         StringWriter journal = new StringWriter();
         MissionProgram program = TestPrograms.of(null, 2, self -> new CompactProgram(self) {
             @Override
@@ -41,46 +48,42 @@ class JadeLauncherTest {
         assertEquals(MissionOutcome.Status.COMPLETED, outcome.status());
         assertEquals(List.of("agent 0", "agent 1"), outcome.journal().lines().sorted().toList());
         assertEquals(outcome.journal(), journal.toString(), "the journal is written through to the sink");
-        assertEquals(List.of(), JadePlatformTest.newThreads(before));
+        assertEquals(List.of(), before.startedSince());
     }
 
     @Test
     void aMissionThatTimesOutEndsAndItsAgentsAreDeleted() throws Exception {
-        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
-            MissionOutcome outcome = JadeLauncher.of(WAITER).types(TestPrograms::type)
-                    .run(platform, Duration.ofMillis(300));
-            assertEquals(MissionOutcome.Status.TIMED_OUT, outcome.status());
-            assertTrue(outcome.report().contains("agent w (0)"), outcome.report());
-            // The name is free again: the same mission can run at once, and be released this time.
-            ServiceAgent[] released = new ServiceAgent[1];
-            MissionOutcome again = JadeLauncher.of(WAITER).types(TestPrograms::type)
-                    .implementations(spec -> {
-                        released[0] = new ServiceAgent();
-                        released[0].release();
-                        return released[0];
-                    })
-                    .run(platform, Duration.ofSeconds(30));
-            assertEquals(MissionOutcome.Status.COMPLETED, again.status());
-        }
+        JadePlatform platform = jade.platform();
+        MissionOutcome outcome = JadeLauncher.of(WAITER).types(TestPrograms::type)
+                .run(platform, Duration.ofMillis(300));
+        assertEquals(MissionOutcome.Status.TIMED_OUT, outcome.status());
+        assertTrue(outcome.report().contains("agent w (0)"), outcome.report());
+        // The name is free again: the same mission can run at once, and be released this time.
+        ServiceAgent[] released = new ServiceAgent[1];
+        MissionOutcome again = JadeLauncher.of(WAITER).types(TestPrograms::type)
+                .implementations(spec -> {
+                    released[0] = new ServiceAgent();
+                    released[0].release();
+                    return released[0];
+                })
+                .run(platform, Duration.ofSeconds(30));
+        assertEquals(MissionOutcome.Status.COMPLETED, again.status());
     }
 
     @Test
     void theMissionHandedOverWhenReadyCanBeStopped() throws Exception {
-        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
-            MissionOutcome outcome = JadeLauncher.of(WAITER).types(TestPrograms::type).whenReady(Mission::stop)
-                    .run(platform, Duration.ofSeconds(30));
-            assertEquals(MissionOutcome.Status.STOPPED, outcome.status());
-        }
+        MissionOutcome outcome = JadeLauncher.of(WAITER).types(TestPrograms::type).whenReady(Mission::stop)
+                .run(jade.platform(), Duration.ofSeconds(30));
+        assertEquals(MissionOutcome.Status.STOPPED, outcome.status());
     }
 
     @Test
     void anAgentNameTakenOnThePlatformIsReported() throws Exception {
-        try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
-            platform.container().acceptNewAgent("w", new Probe()).start();
-            JadeException failure = assertThrows(JadeException.class,
-                    () -> JadeLauncher.of(WAITER).types(TestPrograms::type).run(platform, Duration.ofSeconds(30)));
-            assertEquals("cannot create JADE agent w (is the name taken on the platform?)", failure.getMessage());
-        }
+        JadePlatform platform = jade.platform();
+        platform.container().acceptNewAgent("w", new Probe()).start();
+        JadeException failure = assertThrows(JadeException.class,
+                () -> JadeLauncher.of(WAITER).types(TestPrograms::type).run(platform, Duration.ofSeconds(30)));
+        assertEquals("cannot create JADE agent w (is the name taken on the platform?)", failure.getMessage());
     }
 
     @Test

@@ -15,10 +15,9 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.URI;
 import java.nio.file.Files;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;
-import java.util.Set;
+import masl.jade.testing.ThreadSnapshot;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -28,7 +27,7 @@ class JadePlatformTest {
 
     @Test
     void mainContainerListensOnLoopbackAndLeavesNoThreadBehind() throws Exception {
-        Set<Thread> before = new HashSet<>(Thread.getAllStackTraces().keySet());
+        ThreadSnapshot before = ThreadSnapshot.take();
         JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer());
         try {
             assertTrue(platform.isMain());
@@ -42,14 +41,14 @@ class JadePlatformTest {
         } finally {
             platform.close();
         }
-        assertEquals(List.of(), newThreads(before));
+        assertEquals(List.of(), before.startedSince());
         assertFalse(Files.exists(platform.fileDir()), "the platform's folder is deleted");
         platform.close(); // idempotent
     }
 
     @Test
     void aJoinedContainerReachesAgentsOfTheMainContainer() throws Exception {
-        Set<Thread> before = new HashSet<>(Thread.getAllStackTraces().keySet());
+        ThreadSnapshot before = ThreadSnapshot.take();
         try (JadePlatform main = JadePlatform.start(JadeOptions.mainContainer());
                 JadePlatform joined = JadePlatform.start(JadeOptions.join(main.host(), main.port()))) {
             assertFalse(joined.isMain());
@@ -67,12 +66,12 @@ class JadePlatformTest {
             assertEquals("hello", received.getContent());
             assertEquals("probe-joined", received.getSender().getLocalName());
         }
-        assertEquals(List.of(), newThreads(before));
+        assertEquals(List.of(), before.startedSince());
     }
 
     @Test
     void theHttpTransportStartsOnlyWhenAskedAndOnLoopback() throws Exception {
-        Set<Thread> before = new HashSet<>(Thread.getAllStackTraces().keySet());
+        ThreadSnapshot before = ThreadSnapshot.take();
         try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer().withHttpTransport(true))) {
             URI address = URI.create(platform.httpAddress().orElseThrow());
             assertEquals("127.0.0.1", address.getHost());
@@ -80,7 +79,7 @@ class JadePlatformTest {
                 socket.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), address.getPort()), 5000);
             }
         }
-        assertEquals(List.of(), newThreads(before));
+        assertEquals(List.of(), before.startedSince());
         try (JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer())) {
             assertEquals(Optional.empty(), platform.httpAddress());
         }
@@ -106,14 +105,5 @@ class JadePlatformTest {
                 () -> JadePlatform.start(JadeOptions.join("127.0.0.1", nobody)));
         assertEquals("cannot join the JADE platform at 127.0.0.1:" + nobody + " (is its main container running?)",
                 failure.getMessage());
-    }
-
-    /** Threads alive now that were not alive before, but JUnit's own: what a platform left behind. */
-    static List<String> newThreads(Set<Thread> before) {
-        return Thread.getAllStackTraces().keySet().stream()
-                .filter(thread -> thread.isAlive() && !before.contains(thread)
-                        && !thread.getName().startsWith("junit-"))
-                .map(Thread::getName)
-                .toList();
     }
 }

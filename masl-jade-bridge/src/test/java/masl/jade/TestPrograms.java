@@ -1,6 +1,7 @@
 package masl.jade;
 
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
@@ -9,6 +10,7 @@ import masl.runtime.AgentContext;
 import masl.runtime.AgentProgram;
 import masl.runtime.EntryDefinition;
 import masl.runtime.Mission;
+import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.descriptor.AgentType;
@@ -16,13 +18,31 @@ import masl.runtime.descriptor.DescriptorLoader;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.TestAgent;
 
-/** Test missions as {@link MissionProgram}s, as the translator generates them, and their agent types. */
+/**
+ * Test missions as {@link MissionProgram}s, as the translator generates them, their agent types, and
+ * a mission run in the background while the test talks to its agents.
+ */
 public final class TestPrograms {
 
     private static final Path DESCRIPTORS = descriptors();
     private static final DescriptorLoader LOADER = new DescriptorLoader(AgentPath.parse(DESCRIPTORS.toString()), null);
 
     private TestPrograms() {
+    }
+
+    /**
+     * Runs {@code launcher}'s mission on {@code platform} in a thread of its own, so that the test
+     * can talk to its agents meanwhile; completes with the mission's outcome.
+     */
+    public static CompletableFuture<MissionOutcome> runInBackground(JadeLauncher launcher, JadePlatform platform,
+            Duration timeout) {
+        return CompletableFuture.supplyAsync(() -> {
+            try {
+                return launcher.run(platform, timeout);
+            } catch (InterruptedException e) {
+                throw new IllegalStateException(e);
+            }
+        });
     }
 
     /** Agents {@code a0 … a(n-1)} of type {@code TestAgent}, each running {@code program} from {@code main}. */

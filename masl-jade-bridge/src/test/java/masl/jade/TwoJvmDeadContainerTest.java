@@ -1,7 +1,6 @@
 package masl.jade;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
 import java.util.List;
@@ -9,6 +8,8 @@ import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
+import masl.jade.testing.JadePlatformExtension;
+import masl.jade.testing.SecondJvm;
 import masl.runtime.AgentContext;
 import masl.runtime.EntryDefinition;
 import masl.runtime.MissionOutcome;
@@ -16,10 +17,9 @@ import masl.runtime.MissionProgram;
 import masl.runtime.Mode;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.TestAgent;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * The JVM hosting an agent's body is killed while the agent's program calls it: the call fails
@@ -31,18 +31,8 @@ class TwoJvmDeadContainerTest {
 
     private static final Duration MISSION_TIMEOUT = Duration.ofSeconds(90);
 
-    private static JadePlatform platform;
-
-    @BeforeAll
-    static void startPlatform() {
-        platform = JadePlatform.start(JadeOptions.mainContainer());
-    }
-
-    @AfterAll
-    static void closePlatform() {
-        platform.close();
-        assertEquals(List.of(), JadeThreads.live(), "JADE threads left after the platform closed");
-    }
+    @RegisterExtension
+    static final JadePlatformExtension JADE = new JadePlatformExtension();
 
     @Test
     void aCallToABodyWhoseJvmIsKilledFailsAndTheMissionEnds() throws Exception {
@@ -51,19 +41,14 @@ class TwoJvmDeadContainerTest {
         MissionProgram program = TestPrograms.of(CallsHangTwice.MAIN,
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 self -> new CallsHangTwice(self, calling, results));
-        try (BodyContainerProcess container = BodyContainerProcess.start(platform, "c2")) {
-            CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
-                try {
-                    return JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2"))
-                            .run(platform, MISSION_TIMEOUT);
-                } catch (InterruptedException e) {
-                    throw new IllegalStateException(e);
-                }
-            });
+        try (SecondJvm container = BodyContainerMain.start(JADE.platform(), "c2")) {
+            CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
+                    JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2")), JADE.platform(),
+                    MISSION_TIMEOUT);
             calling.get(60, TimeUnit.SECONDS);
             container.kill();
             MissionOutcome outcome = mission.get(60, TimeUnit.SECONDS);
-            assertTrue(outcome.completed(), outcome + " " + outcome.failure().map(f -> { java.io.StringWriter w = new java.io.StringWriter(); f.printStackTrace(new java.io.PrintWriter(w)); return w.toString(); }).orElse(""));
+            outcome.requireCompleted();
             assertEquals(List.of(-1, -1), results, "the default value of each call");
             assertEquals("", outcome.journal());
         }

@@ -14,12 +14,14 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.Reply;
+import masl.jade.testing.JadePlatformExtension;
+import masl.jade.testing.SecondJvm;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
-import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * A plain FIPA agent of the main container invokes a MASL agent whose body is in another JVM: the
@@ -31,20 +33,15 @@ class TwoJvmFipaRequestTest {
 
     private static final Duration TIMEOUT = Duration.ofSeconds(60);
 
-    private static JadePlatform platform;
+    @RegisterExtension
+    static final JadePlatformExtension JADE = new JadePlatformExtension();
+
     private static Probe probe;
 
     @BeforeAll
-    static void startPlatform() throws Exception {
-        platform = JadePlatform.start(JadeOptions.mainContainer());
+    static void startProbe() throws Exception {
         probe = new Probe();
-        platform.container().acceptNewAgent("probe", probe).start();
-    }
-
-    @AfterAll
-    static void closePlatform() {
-        platform.close();
-        assertEquals(List.of(), JadeThreads.live(), "JADE threads left after the platform closed");
+        JADE.platform().container().acceptNewAgent("probe", probe).start();
     }
 
     @Test
@@ -53,15 +50,10 @@ class TwoJvmFipaRequestTest {
         MissionProgram program = TestPrograms.of(null,
                 List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 self -> new TestPrograms.ClosesWhenAsked(self, signals));
-        try (BodyContainerProcess container = BodyContainerProcess.start(platform, "c2")) {
-            CompletableFuture<MissionOutcome> mission = CompletableFuture.supplyAsync(() -> {
-                try {
-                    return JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2"))
-                            .run(platform, TIMEOUT);
-                } catch (InterruptedException e) {
-                    throw new IllegalStateException(e);
-                }
-            });
+        try (SecondJvm container = BodyContainerMain.start(JADE.platform(), "c2")) {
+            CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
+                    JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2")), JADE.platform(),
+                    TIMEOUT);
             try {
                 DFAgentDescription[] found = DFService.searchUntilFound(probe, probe.getDefaultDF(),
                         DfEntries.service(null, DfEntries.PRIMITIVE_SERVICE, "release"), null, 30_000);

@@ -35,7 +35,12 @@ import masl.runtime.trace.TraceEvent;
  * invocations on its behalf, without running its program, then returns it to where it was. An
  * unpark that comes meanwhile turns {@code SERVING → SERVING_WOKEN}, and the serving slice then
  * schedules the program. So an agent is never run by two threads at once, its program and the
- * invocations it serves never overlap, and no wake-up or invocation is lost.
+ * invocations it serves never overlap, and no wake-up or invocation is lost. An invocation from
+ * outside the mission that its requester lets be served inline
+ * ({@link #submitInvocationServingInline}, the JADE bridge's FIPA requests) takes the same
+ * {@code SERVING} state but is served at once on the submitting thread, saving the hop to the
+ * agent's thread; invocations between the mission's agents ({@link #invoke}) are served by a
+ * scheduled slice, so that the order of slices stays the scheduler's (a seeded run replays).
  *
  * <p><b>Events</b> (MASL §8). Emitters push occurrences onto the agent's lock-free
  * {@link EventQueue}, and unpark it if it is parked in a busy-wait (§5). At a step boundary or
@@ -122,6 +127,15 @@ final class Agent implements AgentContext, AgentTask {
     /** Its program died: it counts in no wave, not even the mission's (see {@link EntryCoordinator#leaveAll}). */
     boolean departed;
 
+    // The agent's latest arrival at a synchronisation barrier (see SynchronisationBarrier): written
+    // by its own slice without the lock, read under the lock by the barrier it arrived at.
+    /** The agent that arrived before it at the same barrier, while it waits on the barrier's stack. */
+    Agent nextArrival;
+    /** The barrier it arrived at last, until it stops taking part in it; null if none. */
+    SynchronisationBarrier arrivedAt;
+    /** The phase of {@link #arrivedAt} its arrival counted in. */
+    int arrivalPhase;
+
     Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
             Mission mission) {
         this.id = id;
@@ -168,17 +182,17 @@ final class Agent implements AgentContext, AgentTask {
             serveIfPending();
         } else if (!suspended) {
             die(new IllegalStateException(describe() + ": resume returned without a suspension or finish()"));
-        } else if (state.compareAndSet(RUNNING, PARKED)) {
-            // Invocations queued while the slice ran are served now that the agent is blocked.
-            serveIfPending();
-        } else {
+        } else if (!endSliceParked(RUNNING)) {
             mission.countSchedule();
             state.set(SCHEDULED);
             mission.scheduler().schedule(this);
         }
     }
 
-    /** The slice of a blocked (or finished) agent: serve its pending invocations, nothing else. */
+    /**
+     * Serves the pending invocations of a blocked (or finished) agent, nothing else, then returns it
+     * to where it was: in a serving slice, or on the submitting thread for an invocation served inline.
+     */
     private void serveWhileBlocked() {
         try {
             serveInvocations();
@@ -189,36 +203,83 @@ final class Agent implements AgentContext, AgentTask {
         }
         if (finished) {
             state.set(DONE);
-        } else if (!state.compareAndSet(SERVING, PARKED)) {
+            // An invocation queued after the queue was drained found the agent SERVING: serve it too.
+            serveIfPending();
+        } else if (!endSliceParked(SERVING)) {
             mission.countSchedule();
             state.set(SCHEDULED);
             mission.scheduler().schedule(this);
-            return;
         }
-        // An invocation queued after the queue was drained found the agent SERVING: serve it too.
-        serveIfPending();
+    }
+
+    /**
+     * Ends the current slice {@code from → PARKED} unless an unpark came meanwhile (false), then
+     * serves the invocations queued while the slice ran, now that the agent is blocked. Parked in
+     * {@code wait(state)}, the agent is idle for the deadlock watchdog even with invocations queued
+     * (its state may allow none of them), so serving one is a wake-up: pending from before the agent
+     * turns {@code PARKED} until it is {@code SERVING} (see {@link Mission}, "Deadlock watchdog").
+     */
+    private boolean endSliceParked(int from) {
+        // Only the agent's own program makes it attentive: no wait can begin during this call.
+        boolean attentive = attentiveTicket.get() != 0;
+        if (attentive) {
+            mission.outsideWakeUpStarted();
+        }
+        try {
+            if (!state.compareAndSet(from, PARKED)) {
+                return false;
+            }
+            serveIfPending();
+            return true;
+        } finally {
+            if (attentive) {
+                mission.outsideWakeUpEnded();
+            }
+        }
     }
 
     /** Schedules a serving slice if invocations wait and the agent is blocked or done. */
     private void serveIfPending() {
+        if (claimServing()) {
+            mission.scheduler().schedule(this);
+        }
+    }
+
+    /**
+     * Turns a blocked or finished agent {@code SERVING} if invocations wait for it: true if this
+     * caller did and must now serve them (or have them served). A parked agent leaving {@code PARKED}
+     * counts as a schedule for the deadlock watchdog, as an unpark does; {@code SERVING} is not idle.
+     */
+    private boolean claimServing() {
         while (hasServable()) {
             int current = state.get();
             if (current == PARKED) {
                 mission.countSchedule();
             } else if (current != DONE) {
-                return;
+                return false;
             }
             if (state.compareAndSet(current, SERVING)) {
-                mission.scheduler().schedule(this);
-                return;
+                return true;
             }
         }
+        return false;
     }
 
-    /** Parked (waiting for someone else) or done: it cannot make progress on its own. */
+    /**
+     * Idle, for the deadlock watchdog: it runs nothing until it is woken. Parked (waiting for someone
+     * else) or done, with no invocation queued (a queued one is always served soon: by a serving
+     * slice, or by the agent at its next boundary); parked in {@code wait(state)}, even with
+     * invocations queued, which its state may not allow. The queue is read first: the state read
+     * after it then says whether the agent was idle at that instant, as nothing the watchdog waits
+     * out queues an invocation uncounted (see {@link Mission}, "Deadlock watchdog").
+     */
     boolean isIdle() {
+        boolean nothingQueued = invocations.isEmpty();
         int current = state.get();
-        return current == PARKED || current == DONE;
+        if (current == DONE) {
+            return nothingQueued;
+        }
+        return current == PARKED && (nothingQueued || attentiveTicket.get() != 0);
     }
 
     /** Parked in a busy-wait: waiting for a change, which an outside invocation is. */
@@ -265,6 +326,17 @@ final class Agent implements AgentContext, AgentTask {
         long ticket = ++lastTicket;
         wakeTicket.set(ticket);
         return ticket;
+    }
+
+    /**
+     * Takes back the park that issued {@code ticket}, which nobody has ended: the call that issued
+     * it goes on without waiting after all (the arrival that completes a synchronisation barrier).
+     */
+    void cancelPark(long ticket) {
+        if (!wakeTicket.compareAndSet(ticket, 0)) {
+            throw new IllegalStateException(describe() + ": its park was ended before it was taken back");
+        }
+        suspended = false;
     }
 
     /** The ticket of the pending park, or 0 if the agent has none (it is running, not waiting). */
@@ -849,8 +921,27 @@ final class Agent implements AgentContext, AgentTask {
      * agents may be changing meanwhile.
      */
     void submitInvocation(PendingInvocation invocation) {
+        // Queueing one for an idle agent wakes it, for the deadlock watchdog (Mission): counted first.
+        mission.countSchedule();
         invocations.add(invocation);
         serveIfPending();
+        mission.changes().advance();
+    }
+
+    /**
+     * Queues an external invocation as {@link #submitInvocation} does, but if the agent is blocked or
+     * finished, serves the pending invocations at once on the calling thread, through the same
+     * {@code SERVING} state a serving slice takes: for requesters outside the mission (the JADE
+     * bridge's message thread), which then answer without a hop to the agent's thread. The
+     * invocation must not wait for the calling thread.
+     */
+    void submitInvocationServingInline(PendingInvocation invocation) {
+        mission.countSchedule();
+        invocations.add(invocation);
+        // Once the mission has ended, an invocation is never run: its scheduler would not run a serving slice either.
+        if (!mission.hasEnded() && claimServing()) {
+            serveWhileBlocked();
+        }
         mission.changes().advance();
     }
 

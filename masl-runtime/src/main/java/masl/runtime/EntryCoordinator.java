@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import java.util.function.Supplier;
 import masl.runtime.trace.LeaveCause;
@@ -19,8 +20,10 @@ import masl.runtime.trace.TraceEvent;
  * member of every ancestor, a free entry barrier looks at the parent's members, the last active
  * member finishing ends a wave while releasing others), and one lock makes each change, with all
  * its consequences, a single atomic step, which is exactly what §6.5 demands of a wave's end. The
- * hot paths that need no membership (shared variables, the journal, events) never take it;
- * critical sections are short and never run program code.
+ * hot paths that need no membership (shared variables, the journal, events) never take it, nor
+ * does an arrival at a synchronisation barrier that does not complete it (the hot path of
+ * lock-step: an atomic count and a lock-free stack per barrier, see {@link SynchronisationBarrier});
+ * only the trip takes it. Critical sections are short and never run program code.
  *
  * <p><b>Operation shape.</b> Every public operation locks, applies its change, then
  * {@linkplain #settle() settles} the consequences to a fixed point (exit barriers released, waves
@@ -50,6 +53,8 @@ final class EntryCoordinator {
     private final AtomicReference<WakeBatch> spareWakes = new AtomicReference<>();
     private final Mission mission;
     private boolean changed;
+    /** {@link #wake}, made once: a trip hands it its agents without allocating. */
+    private final Consumer<Agent> wakeParked = this::wake;
 
     EntryCoordinator(Mission mission, Trace trace, LongSupplier clock, ChangeEpoch changes) {
         this.mission = mission;
@@ -164,9 +169,6 @@ final class EntryCoordinator {
         begin();
         try {
             changed = true;
-            for (SynchronisationBarrier barrier : agent.participatesIn) {
-                barrier.arrived.remove(agent);
-            }
             while (!agent.memberships.isEmpty()) {
                 Membership innermost = agent.innermost();
                 if (innermost.status == Membership.Status.WAITING_IN) {
@@ -190,19 +192,33 @@ final class EntryCoordinator {
         }
     }
 
-    /** The synchronisation barrier of the agent's innermost (synchronous) block: true if it tripped now. */
+    /**
+     * The synchronisation barrier of the agent's innermost (synchronous) block: true if the agent
+     * completed it and tripped it now, false if it is parked until the trip. Only the completing
+     * arrival takes the lock (see {@link SynchronisationBarrier} for the races this settles); the
+     * agent reads its own memberships without it (see the invariant above).
+     */
     boolean arriveAtBarrier(Agent agent) {
+        SynchronisationBarrier barrier = requireActive(agent).entry.barrier;
+        long ticket = agent.prepareToPark();
+        int completedPhase = barrier.arrive(agent);
+        return completedPhase >= 0 && tripAsLastArrival(agent, barrier, completedPhase, ticket);
+    }
+
+    /**
+     * Trips the phase the agent's arrival completed, unless a membership change came first: then
+     * either it tripped the phase (and woke the agent) or a new participant keeps it open (and the
+     * agent waits for it); both ways the agent stays parked.
+     */
+    private boolean tripAsLastArrival(Agent agent, SynchronisationBarrier barrier, int phase, long ticket) {
         begin();
         try {
-            Membership innermost = requireActive(agent);
-            SynchronisationBarrier barrier = innermost.entry.barrier;
-            if (barrier.completedBy(1)) {
-                trip(barrier, 1);
-                return true;
+            if (!barrier.completes(phase)) {
+                return false;
             }
-            barrier.arrived.add(agent);
-            agent.prepareToPark();
-            return false;
+            trip(barrier, agent);
+            agent.cancelPark(ticket);
+            return true;
         } finally {
             end();
         }
@@ -370,13 +386,13 @@ final class EntryCoordinator {
         }
         for (SynchronisationBarrier barrier : agent.participatesIn) {
             if (!barriers.contains(barrier)) {
-                barrier.participants--;
+                barrier.removeParticipant(agent);
                 weakenedBarriers.add(barrier);
             }
         }
         for (SynchronisationBarrier barrier : barriers) {
             if (!agent.participatesIn.contains(barrier)) {
-                barrier.participants++;
+                barrier.addParticipant();
             }
         }
         agent.activeIn = waves;
@@ -401,8 +417,8 @@ final class EntryCoordinator {
             }
         } while (openFirstWave());
         for (SynchronisationBarrier barrier : weakenedBarriers) {
-            if (barrier.completedBy(0)) {
-                trip(barrier, 0);
+            if (barrier.isComplete()) {
+                trip(barrier, null);
             }
         }
         weakenedBarriers.clear();
@@ -421,13 +437,10 @@ final class EntryCoordinator {
         }
     }
 
-    private void trip(SynchronisationBarrier barrier, int arrivingNow) {
-        trace.record(new TraceEvent.BarrierTripped(clock.getAsLong(), barrier.domain.name(),
-                barrier.arrived.size() + arrivingNow));
-        for (Agent agent : barrier.arrived) {
-            wake(agent);
-        }
-        barrier.arrived.clear();
+    /** Lets the agents that arrived go on; {@code going}, the completing arrival, is running (null: a change trips). */
+    private void trip(SynchronisationBarrier barrier, Agent going) {
+        int agents = barrier.trip(going, wakeParked);
+        trace.record(new TraceEvent.BarrierTripped(clock.getAsLong(), barrier.domain.name(), agents));
     }
 
     /** Opens one free entry barrier whose condition holds (§6.3); false if none does. */
@@ -492,10 +505,7 @@ final class EntryCoordinator {
 
     /** Queues a wake-up of a parked agent; the running agent (no pending park) needs none. */
     private void wake(Agent agent) {
-        long ticket = agent.pendingTicket();
-        if (ticket != 0) {
-            wakes.add(agent, ticket);
-        }
+        wakes.addParked(agent);
     }
 
     private void begin() {

@@ -20,7 +20,6 @@ import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
 import masl.runtime.descriptor.AgentType;
@@ -44,6 +43,42 @@ import masl.runtime.trace.TraceEvent;
  *         .build()
  *         .run(Duration.ofMinutes(1));
  * }</pre>
+ *
+ * <p><b>Deadlock watchdog.</b> A mission is <em>deadlocked</em> when some program has not finished
+ * and no agent will ever run again (its program or a slice serving invocations on its behalf)
+ * unless something outside the mission acts: an outside invocation, {@link #stop()}. The watchdog
+ * reports exactly that ({@code DEADLOCKED}, or {@code FAILED} if an agent died); it never reports a
+ * mission that can still make progress, however long a thread is preempted. It rests on three rules.
+ * <ol>
+ * <li>An agent is <em>idle</em> ({@code Agent.isIdle}) when it runs nothing until woken: parked or
+ * done with no invocation queued, or parked in {@code wait(state)}. A <em>wake-up</em> ends that:
+ * an unpark ({@code PARKED → SCHEDULED}), the serving slice of an agent in {@code wait(state)}, an
+ * invocation queued, the timeout of a wait that leaves invocations queued.</li>
+ * <li>Every wake-up and every queued invocation is <em>counted</em> ({@link WakeUps}) before it
+ * happens.</li>
+ * <li>From its count to its act, the thread making it either runs a slice of an agent that is not
+ * idle (the program or serving slice that trips a barrier, releases, emits, writes a shared
+ * variable, invokes), or holds a <em>pending</em> wake-up, begun (and counted) before: a sleep or a
+ * timed wait from the call to the timer's unpark, an awaited future from the await to the unpark,
+ * an asynchronous primitive while it runs, an outside invocation ({@link #submitInvocation}) for
+ * the whole call, and the end of a slice of an agent in {@code wait(state)} from before it turns
+ * {@code PARKED} to its serving slice being scheduled.</li>
+ * </ol>
+ * Every {@link #WATCHDOG_PERIOD} the watchdog <em>looks</em>: it reads the counts (one atomic word),
+ * every agent, and the counts again. A look is quiet if nothing is pending, every agent is idle and
+ * the counts did not move; two quiet looks in a row with the same counts end the mission.
+ *
+ * <p>Why that is a deadlock: the counts did not move from the first read of the first look to the
+ * last read of the second, and nothing was pending at the first read, so nothing was pending
+ * throughout (a pending wake-up counts when it begins). Any wake-up or queued invocation in that
+ * span was therefore counted before it, by a slice of a non-idle agent X that ran on until the act
+ * (rule 3); had the act come after the first look read X, that look would have seen X not idle. So
+ * nothing wakes anyone after the first look, every agent the second look saw idle is still idle at
+ * its end, and no pending wake-up, nor any slice that could make one, is left: the end of a slice
+ * whose agent has just parked wakes nobody but through rule 3. One look would not do: a slice can
+ * wake an agent the look has already read as idle, then park before the look reads it. In a mission
+ * {@linkplain Builder#openToOutsideInvocations() open to outside invocations}, an agent parked in a
+ * busy-wait is not idle, since an outside invocation is a change it waits for.
  */
 public final class Mission {
 
@@ -66,10 +101,10 @@ public final class Mission {
     /** How long a primitive may run before its caller gets {@code timeout}; null: no limit. */
     private final Duration callTimeout;
     private volatile boolean stopped;
-    /** Transitions of agents to SCHEDULED after their start: the watchdog's sign of life. */
-    private final AtomicLong schedules = new AtomicLong();
-    /** Wake-ups promised from outside the agents: sleep timers, futures being awaited, running primitives. */
-    private final AtomicInteger pendingOutsideWakeUps = new AtomicInteger();
+    /** Wake-ups counted and pending, for the deadlock watchdog. */
+    private final WakeUps wakeUps;
+    /** {@link #run} has seen the end (whatever it was) and is stopping the scheduler. */
+    private volatile boolean over;
     /** Asynchronous primitives running: the mission completes when they and every program are over. */
     private final AtomicInteger runningPrimitives = new AtomicInteger();
     private final ExecutorService primitives = Executors.newCachedThreadPool(runnable -> {
@@ -85,6 +120,7 @@ public final class Mission {
         trace = builder.trace;
         openToOutsideInvocations = builder.openToOutsideInvocations;
         callTimeout = builder.callTimeout;
+        wakeUps = builder.wakeUps;
         coordinator = new EntryCoordinator(this, trace, scheduler::nanoTime, changes);
         Map<EntryDefinition, Entry> blocks = new IdentityHashMap<>();
         if (builder.main != null) {
@@ -127,6 +163,7 @@ public final class Mission {
         }
         scheduler.start(agents);
         MissionOutcome.Status status = awaitEnd(timeout);
+        over = true;
         trace.record(new TraceEvent.MissionEnded(scheduler.nanoTime(), status.name().toLowerCase(Locale.ROOT)));
         String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
         scheduler.shutdown();
@@ -137,19 +174,14 @@ public final class Mission {
     }
 
     /**
-     * Waits for the end, looking for a deadlock every {@link #WATCHDOG_PERIOD}: every agent idle
-     * (parked or done), no wake-up promised from outside the agents pending (a sleep, an awaited
-     * future: what completes it is unknown, so it is given the benefit of the doubt), and no
-     * agent scheduled since the previous look. In a mission {@linkplain Builder#openToOutsideInvocations()
-     * open to outside invocations}, an agent parked in a busy-wait is such a promise too.
-     *
-     * <p>Agents are read one by one, not in one snapshot, so a look alone could miss a wake-up made
-     * between two reads; but such a wake-up counts a schedule first, so two looks that agree on
-     * the count have seen a state that really lasted.
+     * Waits for the end, looking for a deadlock every {@link #WATCHDOG_PERIOD} (see the class
+     * comment, "Deadlock watchdog"). A pending sleep or awaited future holds the verdict off: what
+     * ends it is unknown, so it is given the benefit of the doubt.
      */
     private MissionOutcome.Status awaitEnd(Duration timeout) throws InterruptedException {
         long deadline = System.nanoTime() + timeout.toNanos();
-        long schedulesAtLastIdleLook = -1;
+        boolean lastLookIdle = false;
+        long lastIdleLook = 0;
         while (true) {
             long left = deadline - System.nanoTime();
             boolean ended = this.ended.await(Math.min(left, WATCHDOG_PERIOD.toNanos()), TimeUnit.NANOSECONDS);
@@ -165,13 +197,15 @@ public final class Mission {
             if (deadline - System.nanoTime() <= 0) {
                 return MissionOutcome.Status.TIMED_OUT;
             }
-            long scheduled = schedules.get();
-            boolean idle = pendingOutsideWakeUps.get() == 0 && agents.stream().allMatch(Agent::isIdle)
-                    && !(openToOutsideInvocations && agents.stream().anyMatch(Agent::isParkedInBusyWait));
-            if (idle && scheduled == schedules.get() && scheduled == schedulesAtLastIdleLook) {
+            long look = wakeUps.look();
+            boolean idle = WakeUps.nonePending(look) && agents.stream().allMatch(Agent::isIdle)
+                    && !(openToOutsideInvocations && agents.stream().anyMatch(Agent::isParkedInBusyWait))
+                    && look == wakeUps.look();
+            if (idle && lastLookIdle && look == lastIdleLook) {
                 return firstDeath.get() == null ? MissionOutcome.Status.DEADLOCKED : MissionOutcome.Status.FAILED;
             }
-            schedulesAtLastIdleLook = idle ? scheduled : -1;
+            lastLookIdle = idle;
+            lastIdleLook = look;
         }
     }
 
@@ -196,7 +230,7 @@ public final class Mission {
      * @throws IndexOutOfBoundsException if no agent has that proxy id
      */
     public void submitInvocation(int proxyId, Runnable invocation) {
-        agents.get(proxyId).submitInvocation(PendingInvocation.unfiltered(
+        submitFromOutside(agents.get(proxyId), PendingInvocation.unfiltered(
                 Objects.requireNonNull(invocation, "invocation")));
     }
 
@@ -233,8 +267,41 @@ public final class Mission {
      * @throws IndexOutOfBoundsException if no agent has that proxy id
      */
     public void submitInvocation(int proxyId, String primitive, Runnable invocation, Runnable denial) {
-        agents.get(proxyId).submitInvocation(new PendingInvocation(null, Objects.requireNonNull(primitive, "primitive"),
+        submitFromOutside(agents.get(proxyId), new PendingInvocation(null, Objects.requireNonNull(primitive, "primitive"),
                 Objects.requireNonNull(invocation, "invocation"), Objects.requireNonNull(denial, "denial")));
+    }
+
+    private void submitFromOutside(Agent callee, PendingInvocation invocation) {
+        fromOutside(() -> callee.submitInvocation(invocation));
+    }
+
+    /** The caller runs no agent's slice: its wake-ups (serving, busy-waits) are pending until it returns. */
+    private void fromOutside(Runnable submission) {
+        outsideWakeUpStarted();
+        try {
+            submission.run();
+        } finally {
+            outsideWakeUpEnded();
+        }
+    }
+
+    /**
+     * Submits an invocation as {@link #submitInvocation(int, String, Runnable, Runnable)} does, but
+     * if agent {@code proxyId} is blocked or has finished, serves it at once on the calling thread
+     * (MASL §5 serves such an agent's invocations on its behalf at once), filtered by its state then,
+     * with the agent's serving exclusion: its program does not resume until the invocation has run.
+     * Once the mission has ended, it is never run, as a queued one is not. A running agent still
+     * serves it at its next step boundary or loop iteration, on its own thread. For a requester whose thread may run the primitive (the JADE bridge's message thread
+     * of the agent answers so without a hop to the agent's thread); {@code invocation} and
+     * {@code denial} must not wait for the calling thread.
+     *
+     * @throws IndexOutOfBoundsException if no agent has that proxy id
+     */
+    public void serveOrQueueInvocation(int proxyId, String primitive, Runnable invocation, Runnable denial) {
+        PendingInvocation pending = new PendingInvocation(null, Objects.requireNonNull(primitive, "primitive"),
+                Objects.requireNonNull(invocation, "invocation"), Objects.requireNonNull(denial, "denial"));
+        Agent callee = agents.get(proxyId);
+        fromOutside(() -> callee.submitInvocationServingInline(pending));
     }
 
     /** The mission state of a block of this mission's program. */
@@ -294,16 +361,21 @@ public final class Mission {
         }
     }
 
+    /** Whether the mission has ended or is ending: an invocation submitted now is never run. */
+    boolean hasEnded() {
+        return over || ended.getCount() == 0;
+    }
+
     void countSchedule() {
-        schedules.incrementAndGet();
+        wakeUps.counted();
     }
 
     void outsideWakeUpStarted() {
-        pendingOutsideWakeUps.incrementAndGet();
+        wakeUps.pendingStarted();
     }
 
     void outsideWakeUpEnded() {
-        pendingOutsideWakeUps.decrementAndGet();
+        wakeUps.pendingEnded();
     }
 
     void agentFinished(Agent agent) {
@@ -387,6 +459,7 @@ public final class Mission {
         private Trace trace = Trace.NONE;
         private boolean openToOutsideInvocations;
         private Duration callTimeout;
+        private WakeUps wakeUps = new WakeUps();
 
         private Builder() {
         }
@@ -465,6 +538,12 @@ public final class Mission {
                 throw new IllegalArgumentException("a call timeout must be positive: " + timeout);
             }
             this.callTimeout = timeout;
+            return this;
+        }
+
+        /** The watchdog's accounting: tests give one that stalls a wake-up. */
+        Builder wakeUps(WakeUps wakeUps) {
+            this.wakeUps = Objects.requireNonNull(wakeUps, "wakeUps");
             return this;
         }
 

@@ -18,7 +18,15 @@ final class WakeBatch {
     private int size;
     private final List<Agent> runnable = new ArrayList<>();
 
-    void add(Agent agent, long ticket) {
+    /** Adds a parked agent with the ticket of its pending park; the running agent (no pending park) needs no wake-up. */
+    void addParked(Agent agent) {
+        long ticket = agent.pendingTicket();
+        if (ticket != 0) {
+            add(agent, ticket);
+        }
+    }
+
+    private void add(Agent agent, long ticket) {
         if (size == agents.length) {
             agents = Arrays.copyOf(agents, size * 2);
             tickets = Arrays.copyOf(tickets, size * 2);

@@ -42,6 +42,7 @@ public final class JsonContent {
 
     private static final ObjectMapper MAPPER = new ObjectMapper();
     private static final JsonNodeFactory NODES = JsonNodeFactory.instance;
+    private static final String NULL_RESULT = "{\"" + RESULT + "\":null}";
     private static final Pattern SOURCE_REFERENCE = Pattern.compile("\\[Source: [^;]*; line: (\\d+), column: (\\d+)]");
 
     private JsonContent() {
@@ -130,6 +131,10 @@ public final class JsonContent {
 
     /** The content of an {@code INFORM} answering a request: the primitive's result. */
     public static String result(Object value) {
+        if (value == null) {
+            // A void primitive's answer, the most frequent one: no tree to build and write.
+            return NULL_RESULT;
+        }
         ObjectNode result = NODES.objectNode();
         result.set(RESULT, JsonValues.toJson(value));
         return result.toString();

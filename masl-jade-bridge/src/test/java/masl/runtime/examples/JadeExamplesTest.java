@@ -5,25 +5,20 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
 import java.util.Arrays;
-import java.util.HashSet;
 import java.util.List;
-import java.util.Set;
 import java.util.function.Function;
 import masl.jade.JadeLauncher;
-import masl.jade.JadeOptions;
-import masl.jade.JadePlatform;
-import masl.jade.JadeThreads;
 import masl.jade.TestPrograms;
+import masl.jade.testing.JadePlatformExtension;
 import masl.runtime.AgentProgram;
 import masl.runtime.EntryDefinition;
 import masl.runtime.MissionOutcome;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * The hand-translated examples of examples.md (masl-runtime's test sources; this class shares their
@@ -37,24 +32,8 @@ class JadeExamplesTest {
     private static final int REPETITIONS = 20;
     private static final Duration TIMEOUT = Duration.ofSeconds(30);
 
-    private static Set<Thread> threadsBefore;
-    private static JadePlatform platform;
-
-    @BeforeAll
-    static void startPlatform() {
-        threadsBefore = new HashSet<>(Thread.getAllStackTraces().keySet());
-        platform = JadePlatform.start(JadeOptions.mainContainer());
-    }
-
-    @AfterAll
-    static void closePlatform() {
-        platform.close();
-        assertEquals(List.of(), JadeThreads.live(), "JADE threads left after the platform closed");
-        assertEquals(List.of(), Thread.getAllStackTraces().keySet().stream()
-                .filter(thread -> thread.isAlive() && !threadsBefore.contains(thread)
-                        && !thread.getName().startsWith("junit-"))
-                .map(Thread::getName).toList(), "threads left after the platform closed");
-    }
+    @RegisterExtension
+    static final JadePlatformExtension JADE = new JadePlatformExtension();
 
     @Test
     void e1ScalarMain() throws Exception {
@@ -104,7 +83,7 @@ class JadeExamplesTest {
         JadeLauncher launcher = JadeLauncher.of(TestPrograms.of(main, agents, program)).types(TestPrograms::type);
         String[] journals = new String[REPETITIONS];
         for (int run = 0; run < REPETITIONS; run++) {
-            MissionOutcome outcome = launcher.run(platform, TIMEOUT).requireCompleted();
+            MissionOutcome outcome = launcher.run(JADE.platform(), TIMEOUT).requireCompleted();
             journals[run] = outcome.journal();
             assertEquals(order == Order.FIXED ? inProcess : sortedLines(inProcess),
                     order == Order.FIXED ? outcome.journal() : sortedLines(outcome.journal()), "run " + run);

@@ -4,48 +4,35 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
-import java.util.List;
 import java.util.Map;
 import java.util.function.Function;
-import masl.jade.BodyContainerProcess;
+import masl.jade.BodyContainerMain;
 import masl.jade.JadeLauncher;
-import masl.jade.JadeOptions;
-import masl.jade.JadePlatform;
-import masl.jade.JadeThreads;
 import masl.jade.TestPrograms;
+import masl.jade.testing.JadePlatformExtension;
+import masl.jade.testing.SecondJvm;
 import masl.runtime.AgentProgram;
 import masl.runtime.EntryDefinition;
 import masl.runtime.MissionOutcome;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * The hand-translated E2, E4 and E6 with their agents split across two containers in two JVMs:
  * this JVM's main container runs the mission (the coordinator), a second JVM
- * ({@link BodyContainerProcess}) hosts the bodies of some agents. Journals as in-process.
+ * ({@link BodyContainerMain}) hosts the bodies of some agents. Journals as in-process.
  */
 @Timeout(120)
 class TwoJvmExamplesTest {
 
     private static final Duration TIMEOUT = Duration.ofSeconds(60);
 
-    private static JadePlatform platform;
-
-    @BeforeAll
-    static void startPlatform() {
-        platform = JadePlatform.start(JadeOptions.mainContainer());
-    }
-
-    @AfterAll
-    static void closePlatform() {
-        platform.close();
-        assertEquals(List.of(), JadeThreads.live(), "JADE threads left after the platform closed");
-    }
+    @RegisterExtension
+    static final JadePlatformExtension JADE = new JadePlatformExtension();
 
     @Test
     void e2WithTwoOfFiveAgentsInAnotherJvm() throws Exception {
@@ -84,9 +71,9 @@ class TwoJvmExamplesTest {
 
     private static Split split(EntryDefinition main, int agents, Function<TestAgent, AgentProgram> program,
             Map<String, String> placement) throws Exception {
-        try (BodyContainerProcess container = BodyContainerProcess.start(platform, "c2")) {
+        try (SecondJvm container = BodyContainerMain.start(JADE.platform(), "c2")) {
             MissionOutcome outcome = JadeLauncher.of(TestPrograms.of(main, agents, program))
-                    .types(TestPrograms::type).place(placement).run(platform, TIMEOUT);
+                    .types(TestPrograms::type).place(placement).run(JADE.platform(), TIMEOUT);
             assertTrue(outcome.completed(), outcome + "\n" + container.output());
             return new Split(outcome.journal(), container.assertEndsByItself());
         }
