@@ -49,6 +49,9 @@ public final class Bench {
         if (options.runs("simulation")) {
             simulation();
         }
+        // A JADE platform that failed to shut down (closeQuietly) leaves threads that are not daemons:
+        // they must not keep the benchmark, and `gradle bench` with it, from ending.
+        System.exit(0);
     }
 
     /**
