@@ -230,8 +230,9 @@ public final class Mission {
      * @throws IndexOutOfBoundsException if no agent has that proxy id
      */
     public void submitInvocation(int proxyId, Runnable invocation) {
-        submitFromOutside(agents.get(proxyId), PendingInvocation.unfiltered(
-                Objects.requireNonNull(invocation, "invocation")));
+        Agent callee = agents.get(proxyId);
+        PendingInvocation pending = PendingInvocation.unfiltered(Objects.requireNonNull(invocation, "invocation"));
+        fromOutside(() -> callee.submitInvocation(pending));
     }
 
     /**
@@ -267,12 +268,15 @@ public final class Mission {
      * @throws IndexOutOfBoundsException if no agent has that proxy id
      */
     public void submitInvocation(int proxyId, String primitive, Runnable invocation, Runnable denial) {
-        submitFromOutside(agents.get(proxyId), new PendingInvocation(null, Objects.requireNonNull(primitive, "primitive"),
-                Objects.requireNonNull(invocation, "invocation"), Objects.requireNonNull(denial, "denial")));
+        Agent callee = agents.get(proxyId);
+        PendingInvocation pending = fromOther(primitive, invocation, denial);
+        fromOutside(() -> callee.submitInvocation(pending));
     }
 
-    private void submitFromOutside(Agent callee, PendingInvocation invocation) {
-        fromOutside(() -> callee.submitInvocation(invocation));
+    /** An invocation whose requester is an <em>other</em> (MASL §11), filtered when it is served. */
+    private static PendingInvocation fromOther(String primitive, Runnable invocation, Runnable denial) {
+        return new PendingInvocation(null, Objects.requireNonNull(primitive, "primitive"),
+                Objects.requireNonNull(invocation, "invocation"), Objects.requireNonNull(denial, "denial"));
     }
 
     /** The caller runs no agent's slice: its wake-ups (serving, busy-waits) are pending until it returns. */
@@ -291,16 +295,16 @@ public final class Mission {
      * (MASL §5 serves such an agent's invocations on its behalf at once), filtered by its state then,
      * with the agent's serving exclusion: its program does not resume until the invocation has run.
      * Once the mission has ended, it is never run, as a queued one is not. A running agent still
-     * serves it at its next step boundary or loop iteration, on its own thread. For a requester whose thread may run the primitive (the JADE bridge's message thread
-     * of the agent answers so without a hop to the agent's thread); {@code invocation} and
-     * {@code denial} must not wait for the calling thread.
+     * serves it at its next step boundary or loop iteration, on its own thread. For a requester
+     * whose thread may run the primitive (the JADE bridge's message thread of the agent answers so
+     * without a hop to the agent's thread); {@code invocation} and {@code denial} must not wait for
+     * the calling thread.
      *
      * @throws IndexOutOfBoundsException if no agent has that proxy id
      */
     public void serveOrQueueInvocation(int proxyId, String primitive, Runnable invocation, Runnable denial) {
-        PendingInvocation pending = new PendingInvocation(null, Objects.requireNonNull(primitive, "primitive"),
-                Objects.requireNonNull(invocation, "invocation"), Objects.requireNonNull(denial, "denial"));
         Agent callee = agents.get(proxyId);
+        PendingInvocation pending = fromOther(primitive, invocation, denial);
         fromOutside(() -> callee.submitInvocationServingInline(pending));
     }
 
