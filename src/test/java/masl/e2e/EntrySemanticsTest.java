@@ -86,8 +86,8 @@ class EntrySemanticsTest {
     void agentsHeldByAChildsEntryBarrierStayActiveInTheirAncestors() {
         MaslMission mission = MaslMission.fromString("supervisor.masl", """
                 import Default.xml as Default;
-                Entry work;
                 Default boss, w1, w2, w3, w4 = newAgent(Default);
+                Entry work;
                 asynchronous entry main (true) {
                     if (.getProxyID() == 0) {
                         work.lock();
