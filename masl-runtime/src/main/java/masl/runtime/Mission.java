@@ -65,8 +65,10 @@ import masl.runtime.trace.TraceEvent;
  * {@code PARKED} to its serving slice being scheduled.</li>
  * </ol>
  * Every {@link #WATCHDOG_PERIOD} the watchdog <em>looks</em>: it reads the counts (one atomic word),
- * every agent, and the counts again. A look is quiet if nothing is pending, every agent is idle and
- * the counts did not move; two quiet looks in a row with the same counts end the mission.
+ * every agent, and the counts again. A look is quiet if nothing is pending, every agent is idle,
+ * every agent that is done has been counted out of the running ones (an agent turns {@code DONE}
+ * before the mission counts it out, and builds its report in between: until then it is ending, not
+ * idle) and the counts did not move; two quiet looks in a row with the same counts end the mission.
  *
  * <p>Why that is a deadlock: the counts did not move from the first read of the first look to the
  * last read of the second, and nothing was pending at the first read, so nothing was pending
