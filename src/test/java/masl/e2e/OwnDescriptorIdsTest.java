@@ -49,7 +49,8 @@ class OwnDescriptorIdsTest {
     @Test
     void aProgramNextToItsOwnDefaultXmlLoadsAndRunsWithItsIdsAndStates() {
         MaslMission crew = MaslMission.fromFile(Path.of("src/test/resources/own-default/crew.masl"));
-        everyRun(crew, run -> run.assertLinesInAnyOrder("0 hears hello agent 0 from 1", "1 hears hello agent 1 from 0",
+        everyRun(crew, run -> run.assertLinesInAnyOrder("0 sees 2 agents, the other a Default: true",
+                "1 sees 2 agents, the other a Default: true", "0 hears hello agent 0 from 1", "1 hears hello agent 1 from 0",
                 "0 denied tally", "1 denied tally", "0 counted 1, was told 0 in guarded",
                 "1 counted 1, was told 0 in guarded"));
     }
@@ -58,7 +59,7 @@ class OwnDescriptorIdsTest {
     void maslRunRunsTheProgramNextToItsOwnDefaultXml() {
         MaslCommand run = MaslCommand.run("run", "src/test/resources/own-default/crew.masl");
         assertEquals(0, run.status(), run::toString);
-        assertEquals(6, run.out().lines().count(), run::toString);
+        assertEquals(8, run.out().lines().count(), run::toString);
     }
 
     private static void everyRun(MaslMission mission, Consumer<MissionRun> property) {
