@@ -84,7 +84,7 @@ final class StatementWriter {
             cases.place(cases.point(), file + ":1: a program without blocks only creates its agents");
         }
         cases.line("ctx.finish();");
-        cases.end("return;");
+        cases.endWithReturn();
         if (root != null) {
             reactions(root);
         }
@@ -132,7 +132,7 @@ final class StatementWriter {
     /** In a reaction, before its ending: another reaction may follow, then this one does not decide. */
     private void endReaction() {
         if (instructions.isInReaction()) {
-            cases.line("if (!ctx.endReaction()) return;");
+            cases.returnUnless("ctx.endReaction()");
         }
     }
 
@@ -185,7 +185,7 @@ final class StatementWriter {
         cases.setPc(body);
         cases.open("switch (ctx.enter(" + definition + ", " + test + ")) {");
         cases.jumpLine("case SKIPPED -> { " + (keeps ? "keep$" + block.name() + " = false; " : ""), after, " }");
-        cases.line("case WAITING -> { return; }");
+        cases.returning("case WAITING -> { ", " }");
         cases.line("case ENTERED -> { }");
         cases.close("}");
         cases.place(body, null);
@@ -208,7 +208,7 @@ final class StatementWriter {
 
         cases.place(cases.point(), file + ":" + tree.getStop().getLine() + ": end of " + block.name());
         cases.setPc(after);
-        cases.line("if (!ctx.leave(" + definition + ")) return;");
+        cases.returnUnless("ctx.leave(" + definition + ")");
     }
 
     private static boolean hasLocals(Block block) {
@@ -230,6 +230,7 @@ final class StatementWriter {
         }
         for (Variable variable : variables) {
             if (variable.sharing() == Sharing.SHARED && variable.initializer() != null) {
+                cases.statementStart();
                 String value = expressions.initializer(variable.type(), variable.initializer());
                 boolean stepped = instructions.awaitResults(variable.initializer());
                 cases.line("ctx.shared(" + structure.shared(variable) + ").initialise(() -> " + value + ");");
@@ -246,6 +247,7 @@ final class StatementWriter {
         }
         for (Variable variable : variables) {
             if (variable.sharing() == Sharing.LOCAL) {
+                cases.statementStart();
                 String value = localInitialValue(variable);
                 boolean stepped = instructions.awaitResults(
                         variable.initializer() != null ? variable.initializer() : block.tree());
@@ -303,6 +305,7 @@ final class StatementWriter {
     }
 
     private void statement(StatementContext statement) {
+        cases.statementStart();
         if (statement instanceof MASLParser.EntryStmtContext) {
             statementInList(statement);
         } else if (statement instanceof MASLParser.BlockStmtContext block) {
@@ -347,7 +350,7 @@ final class StatementWriter {
             // Back to where the reactions interrupted the agent, completing the boundary it was at.
             cases.note(at(resume) + ": resume;");
             endReaction();
-            cases.line("if (!ctx.resumeInterrupted()) return;");
+            cases.returnUnless("ctx.resumeInterrupted()");
             cases.end("continue;");
         } else if (statement instanceof MASLParser.ClearEventsStmtContext clear) {
             cases.note(at(clear) + ": " + JavaText.snippet(clear));
@@ -471,7 +474,7 @@ final class StatementWriter {
     /** The end of an iteration (MASL 5): events and invocations, and parking if it is a busy-wait. */
     private void iteration(CaseWriter.Point head, boolean busyWait) {
         cases.setPc(head);
-        cases.line("if (!ctx." + (busyWait ? "busyWaitIteration" : "loopIteration") + "()) return;");
+        cases.returnUnless("ctx." + (busyWait ? "busyWaitIteration" : "loopIteration") + "()");
         cases.end("continue;");
     }
 }
