@@ -7,12 +7,7 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.Map;
 import masl.runtime.descriptor.AgentPath;
-import masl.translator.Frontend;
-import masl.translator.Translation;
-import masl.translator.Translator;
 import masl.translator.compile.GeneratedCodeException;
-import masl.translator.diagnostics.DiagnosticPrinter;
-import masl.translator.diagnostics.Diagnostics;
 import masl.translator.source.SourceFile;
 
 /**
@@ -123,9 +118,7 @@ public final class Masl {
 
     private int check(CommandLine line) throws UsageException {
         SourceFile source = readProgram(line.singleFile());
-        Frontend.Result result = new Frontend(AgentPath.parse(line.agentPath)).analyse(source);
-        printDiagnostics(source, result.diagnostics());
-        return result.succeeded() ? OK : PROGRAM_ERRORS;
+        return Pipeline.load(source, AgentPath.parse(line.agentPath), err) == null ? PROGRAM_ERRORS : OK;
     }
 
     private int compile(CommandLine line) throws UsageException {
@@ -133,13 +126,12 @@ public final class Masl {
         if (line.outputFolder == null) {
             throw new UsageException("masl compile needs -d DIR, the folder to write the Java sources into");
         }
-        Translation translation = new Translator(AgentPath.parse(line.agentPath)).translate(source);
-        printDiagnostics(source, translation.diagnostics());
-        if (!translation.succeeded()) {
+        Pipeline.Loaded loaded = Pipeline.load(source, AgentPath.parse(line.agentPath), err);
+        if (loaded == null) {
             return PROGRAM_ERRORS;
         }
         Path folder = Path.of(line.outputFolder);
-        for (Map.Entry<String, String> unit : translation.javaSources().entrySet()) {
+        for (Map.Entry<String, String> unit : loaded.translation().javaSources().entrySet()) {
             Path file = folder.resolve(unit.getKey().replace('.', '/') + ".java");
             try {
                 Files.createDirectories(file.getParent());
@@ -150,10 +142,6 @@ public final class Masl {
             }
         }
         return OK;
-    }
-
-    void printDiagnostics(SourceFile source, Diagnostics diagnostics) {
-        new DiagnosticPrinter(Map.of(source.name(), source.text())).print(diagnostics.sorted(), err);
     }
 
     private static SourceFile readProgram(String name) throws UsageException {
