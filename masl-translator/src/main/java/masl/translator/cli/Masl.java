@@ -41,7 +41,8 @@ public final class Masl {
               container join a JADE platform as container CONTAINER and host the bodies (the primitives) of the
                         agents a run --place puts there; their programs run in the run's JVM; ends with the mission
               compile   translate a MASL program into Java sources under DIR (one folder per package)
-              check     report every error of a MASL program and of the descriptors it imports
+              check     report every error of a MASL program and of the descriptors it imports: all that
+                        compile and run would report, as they translate and compile it, without running it
               timeline  draw a trace written by run --trace as a self-contained HTML page: one lane per
                         agent over time, coloured by block, with barrier trips, waves, events and invocations
             options:

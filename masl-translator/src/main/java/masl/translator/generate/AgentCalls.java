@@ -117,7 +117,6 @@ final class AgentCalls {
     private String helper(Kind kind, Primitive primitive, Primitive countermeasure, String calleeClass,
             String receiverClass, Registration registration) {
         String key = kind + " " + primitive.name() + " " + calleeClass + " " + receiverClass + " " + registration;
-        boolean dispatches = !calleeClass.equals(receiverClass);
         String existing = names.get(key);
         if (existing != null) {
             return existing;
@@ -128,55 +127,70 @@ final class AgentCalls {
         String name = unique(prefix + "$" + primitive.name());
         names.put(key, name);
         boolean self = kind == Kind.INVOKE_SELF;
-        String receiver = self ? "self" : "callee";
-        List<String> parameters = new ArrayList<>();
-        parameters.add("AgentContext ctx");
-        if (labelled) {
-            parameters.add("final Label label");
-        }
-        if (!self) {
-            parameters.add("final " + (dispatches ? receiverClass + " receiver" : calleeClass + " callee"));
-        }
-        List<String> argumentNames = new ArrayList<>();
-        int i = 0;
-        for (Parameter parameter : primitive.parameters()) {
-            parameters.add("final " + simple(parameter.type()) + " " + argumentName(parameter, i));
-            argumentNames.add(argumentName(parameter, i));
-            i++;
-        }
-        if (registration == Registration.LABEL_STORING) {
-            parameters.add("final java.util.function.Consumer<? super " + simple(boxed(primitive.returnType()))
-                    + "> store");
-        }
-        boolean isVoid = primitive.returnType().equals("void");
-        String type = self ? simple(primitive.returnType()) : futureType(primitive);
-        String run = callable(receiver + "." + primitive.name() + "(" + String.join(", ", argumentNames) + ")", isVoid);
-        String runtimeCall = "ctx." + kind.prefix + "(" + (self ? "" : "callee, ") + JavaText.quote(primitive.name())
-                + ", " + defaultValue(primitive.returnType()) + ", " + run;
-        if (kind == Kind.LAUNCH && countermeasure != null) {
-            runtimeCall += ", " + JavaText.quote(countermeasure.name()) + ", "
-                    + callable("callee." + countermeasure.name() + "()", countermeasure.returnType().equals("void"));
-        }
-        runtimeCall += ")";
+        boolean dispatches = !calleeClass.equals(receiverClass);
+        String runtimeCall = runtimeCall(kind, primitive, countermeasure);
         String nop = "CompletableFuture.completedFuture(" + defaultValue(primitive.returnType()) + ")";
         if (labelled) {
             runtimeCall = "label.register(" + runtimeCall
                     + (registration == Registration.LABEL_STORING ? ", store)" : ")");
             nop = "label.register(" + nop + ")";
         }
+        String type = self ? simple(primitive.returnType()) : futureType(primitive);
         List<String> lines = new ArrayList<>();
         lines.add("    /** " + describe(kind, primitive, countermeasure)
                 + (labelled ? " Registered with a label (MASL 10); a nop() is done at once and stores nothing." : "")
                 + " */");
-        lines.add("    private " + (self ? "" : "static ") + type + " " + name + "(" + String.join(", ", parameters)
-                + ") {");
+        lines.add("    private " + (self ? "" : "static ") + type + " " + name + "("
+                + String.join(", ", parameters(kind, primitive, calleeClass, receiverClass, registration)) + ") {");
         if (dispatches) {
             lines.addAll(dispatch(calleeClass, "callee", "return " + nop + ";", primitive.name()));
         }
+        boolean isVoid = primitive.returnType().equals("void");
         lines.add("        " + (self && isVoid ? "" : "return ") + runtimeCall + ";");
         lines.add("    }");
         helpers.put(name, lines);
         return name;
+    }
+
+    /** A helper's parameters: the context, the label, the receiver, the primitive's arguments, the store. */
+    private static List<String> parameters(Kind kind, Primitive primitive, String calleeClass, String receiverClass,
+            Registration registration) {
+        List<String> parameters = new ArrayList<>();
+        parameters.add("AgentContext ctx");
+        if (registration != Registration.NONE) {
+            parameters.add("final Label label");
+        }
+        if (kind != Kind.INVOKE_SELF) {
+            parameters.add("final " + (calleeClass.equals(receiverClass) ? calleeClass + " callee"
+                    : receiverClass + " receiver"));
+        }
+        int i = 0;
+        for (Parameter parameter : primitive.parameters()) {
+            parameters.add("final " + simple(parameter.type()) + " " + argumentName(parameter, i++));
+        }
+        if (registration == Registration.LABEL_STORING) {
+            parameters.add("final java.util.function.Consumer<? super " + simple(boxed(primitive.returnType()))
+                    + "> store");
+        }
+        return parameters;
+    }
+
+    /** The runtime's call of {@code primitive} (contract §8.1) on {@code self} or {@code callee}, with its countermeasure. */
+    private static String runtimeCall(Kind kind, Primitive primitive, Primitive countermeasure) {
+        boolean self = kind == Kind.INVOKE_SELF;
+        List<String> argumentNames = new ArrayList<>();
+        for (int i = 0; i < primitive.parameters().size(); i++) {
+            argumentNames.add(argumentName(primitive.parameters().get(i), i));
+        }
+        String run = callable((self ? "self" : "callee") + "." + primitive.name() + "("
+                + String.join(", ", argumentNames) + ")", primitive.returnType().equals("void"));
+        String call = "ctx." + kind.prefix + "(" + (self ? "" : "callee, ") + JavaText.quote(primitive.name())
+                + ", " + defaultValue(primitive.returnType()) + ", " + run;
+        if (kind == Kind.LAUNCH && countermeasure != null) {
+            call += ", " + JavaText.quote(countermeasure.name()) + ", "
+                    + callable("callee." + countermeasure.name() + "()", countermeasure.returnType().equals("void"));
+        }
+        return call + ")";
     }
 
     private static String describe(Kind kind, Primitive primitive, Primitive countermeasure) {
