@@ -84,7 +84,9 @@ public class MaslPlugin implements Plugin<Project> {
         run.setGroup("masl");
         run.setDescription("Runs a MASL mission of src/main/masl and prints its journal"
                 + " (-Pmission=NAME, -Pplatform=inproc|jade, -Pseed=N, -Ptimeout=S, -PcallTimeout=MS)");
-        run.setPrograms(compile.getSource());
+        // Read when run: a build script may give maslCompile other sources (this repository's missions/ does).
+        Callable<FileCollection> programs = compile::getSource;
+        run.setPrograms(project.files(programs));
         run.setAgentPath(extension.getAgentPath());
         run.setMission(stringProperty(project, "mission"));
         run.setPlatform(stringProperty(project, "platform"));
