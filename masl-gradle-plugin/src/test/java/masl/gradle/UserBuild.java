@@ -48,7 +48,7 @@ final class UserBuild {
     }
 
     static GradleRunner gradle(Path project, String... arguments) {
-        List<String> all = new ArrayList<>(List.of("-Dmaven.repo.local=" + System.getProperty("masl.repo"), "--stacktrace"));
+        List<String> all = new ArrayList<>(List.of("-Dmaven.repo.local=" + System.getProperty("masl.repo")));
         all.addAll(List.of(arguments));
         return GradleRunner.create()
                 .withGradleInstallation(new File(System.getProperty("masl.gradleHome")))
