@@ -7,7 +7,6 @@ import org.gradle.api.Project;
 import org.gradle.api.plugins.JavaPlugin;
 import org.gradle.api.tasks.JavaExec;
 import org.gradle.api.tasks.SourceSet;
-import org.gradle.api.tasks.SourceSetContainer;
 import org.gradle.api.tasks.testing.Test;
 import org.gradle.util.GradleVersion;
 
@@ -51,13 +50,13 @@ final class JUnitPlatformTests {
     }
 
     private static JavaExec consoleLauncher(Project project) {
-        SourceSet tests = ((SourceSetContainer) project.property("sourceSets")).getByName(SourceSet.TEST_SOURCE_SET_NAME);
+        SourceSet tests = ProjectModel.sourceSets(project).getByName(SourceSet.TEST_SOURCE_SET_NAME);
         JavaExec console = project.getTasks().create(LEGACY_TASK, JavaExec.class);
         console.setGroup("verification");
         console.setDescription("Runs the JUnit 5 tests on the JUnit Platform (what `test` does from Gradle 4.6)");
         console.setClasspath(tests.getRuntimeClasspath());
         MaslRun.setMainClassName(console, "org.junit.platform.console.ConsoleLauncher");
-        File reports = new File(project.getBuildDir(), "test-results/junit-platform");
+        File reports = ProjectModel.buildDir(project, "test-results/junit-platform");
         String roots = tests.getOutput().getClassesDirs().getFiles().stream().map(File::getPath)
                 .collect(Collectors.joining(File.pathSeparator));
         // Roots that do not exist (no Groovy tests, say) are ignored by the launcher.

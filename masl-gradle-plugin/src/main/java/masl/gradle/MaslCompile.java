@@ -45,6 +45,7 @@ public class MaslCompile extends SourceTask {
 
     private final ConfigurableFileCollection agentPath = getProject().files();
     private final ConfigurableFileCollection classpath = getProject().files();
+    private final File projectDir = getProject().getProjectDir();
     private File outputDir;
     private File classesDir;
 
@@ -131,9 +132,9 @@ public class MaslCompile extends SourceTask {
     private SourceFile read(File file) {
         try {
             SourceFile absolute = SourceFile.read(file.toPath());
-            return new SourceFile(getProject().relativePath(file), absolute.folder(), absolute.text());
+            return new SourceFile(ProjectModel.relative(projectDir, file), absolute.folder(), absolute.text());
         } catch (IOException unreadable) {
-            throw new GradleException(getProject().relativePath(file) + ": cannot be read (" + unreadable.getMessage() + ")");
+            throw new GradleException(ProjectModel.relative(projectDir, file) + ": cannot be read (" + unreadable.getMessage() + ")");
         }
     }
 

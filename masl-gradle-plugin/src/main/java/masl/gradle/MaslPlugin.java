@@ -23,9 +23,9 @@ import org.gradle.api.tasks.SourceSetContainer;
  * translation runs after that Java is compiled and checks the descriptors against the classes.
  * The project's code therefore cannot refer to the generated classes of its own source set.
  *
- * <p>Uses only API present from Gradle 4.4 to current Gradle ({@code Project.property("sourceSets")}
- * rather than the Java convention object, {@code tasks.create}, plain getter/setter task properties
- * with input/output annotations), and {@code GradleVersion} guards where the two differ.
+ * <p>Uses only API present from Gradle 4.4 to current Gradle ({@code tasks.create}, plain
+ * getter/setter task properties with input/output annotations, the project read through
+ * {@link ProjectModel}), and {@code GradleVersion} guards where the two differ.
  */
 public class MaslPlugin implements Plugin<Project> {
 
@@ -34,7 +34,7 @@ public class MaslPlugin implements Plugin<Project> {
         project.getPluginManager().apply(JavaPlugin.class);
         MaslArtifacts artifacts = MaslArtifacts.ofThisPlugin();
         MaslExtension extension = project.getExtensions().create("masl", MaslExtension.class, project);
-        SourceSetContainer sourceSets = (SourceSetContainer) project.property("sourceSets");
+        SourceSetContainer sourceSets = ProjectModel.sourceSets(project);
         SourceSet main = sourceSets.getByName(SourceSet.MAIN_SOURCE_SET_NAME);
 
         // Generated code runs on the runtime and its agents extend the shipped types: both come with `agents`.
@@ -59,8 +59,8 @@ public class MaslPlugin implements Plugin<Project> {
         task.setAgentPath(extension.getAgentPath());
         Configuration runtime = project.getConfigurations().getByName(sourceSet.getRuntimeClasspathConfigurationName());
         task.setClasspath(project.files(compiledJava(project, sourceSet), sourceSet.getCompileClasspath(), runtime));
-        task.setOutputDir(new File(project.getBuildDir(), "generated/masl/" + sourceSet.getName()));
-        File classes = new File(project.getBuildDir(), "classes/masl/" + sourceSet.getName());
+        task.setOutputDir(ProjectModel.buildDir(project, "generated/masl/" + sourceSet.getName()));
+        File classes = ProjectModel.buildDir(project, "classes/masl/" + sourceSet.getName());
         task.setClassesDir(classes);
         sourceSet.getOutput().dir(Map.<String, Object>of("builtBy", task), classes);
         // The descriptors travel with the classes they describe: the jar can be another build's agent path.

@@ -11,6 +11,7 @@ import org.gradle.api.file.FileCollection;
 import org.gradle.api.provider.Property;
 import org.gradle.api.tasks.Internal;
 import org.gradle.api.tasks.JavaExec;
+import org.gradle.api.tasks.TaskAction;
 import org.gradle.util.GradleVersion;
 
 /**
@@ -28,6 +29,7 @@ public class MaslRun extends JavaExec {
 
     private final ConfigurableFileCollection programs = getProject().files();
     private final ConfigurableFileCollection agentPath = getProject().files();
+    private final File projectDir = getProject().getProjectDir();
     private String mission;
     private String platform;
     private String seed;
@@ -37,7 +39,7 @@ public class MaslRun extends JavaExec {
     public MaslRun() {
         setMainClassName(this, MAIN_CLASS);
         // Program names in diagnostics are relative to it, as maslCompile's are.
-        setWorkingDir(getProject().getProjectDir());
+        setWorkingDir(projectDir);
     }
 
     /**
@@ -128,6 +130,7 @@ public class MaslRun extends JavaExec {
 
     /** JavaExec's action, with the arguments of the mission chosen and masl's failure named as such. */
     @Override
+    @TaskAction
     public void exec() {
         File program = chosenProgram();
         setArgs(arguments(program));
@@ -141,7 +144,7 @@ public class MaslRun extends JavaExec {
     }
 
     private List<String> arguments(File program) {
-        List<String> arguments = new ArrayList<>(List.of("run", getProject().relativePath(program)));
+        List<String> arguments = new ArrayList<>(List.of("run", ProjectModel.relative(projectDir, program)));
         String path = agentPath.getFiles().stream().map(File::getPath).collect(Collectors.joining(File.pathSeparator));
         if (!path.isEmpty()) {
             arguments.addAll(List.of("--agent-path", path));

@@ -26,7 +26,6 @@ final class MaslTool {
         Configuration runtime = project.getConfigurations().getByName(JavaPlugin.RUNTIME_CLASSPATH_CONFIGURATION_NAME);
         Configuration tool = project.getConfigurations().create(NAME);
         tool.setDescription("The masl command maslRun runs, with the project's runtime dependencies");
-        tool.setVisible(false);
         tool.setCanBeConsumed(false);
         runtime.getExtendsFrom().forEach(tool::extendsFrom);
         AttributeContainer attributes = runtime.getAttributes();
