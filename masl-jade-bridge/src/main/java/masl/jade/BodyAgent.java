@@ -8,7 +8,6 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
-import java.util.concurrent.atomic.AtomicLong;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.JsonContent;
 import masl.jade.acl.Reply;
@@ -38,7 +37,6 @@ final class BodyAgent extends RegisteredMaslAgent {
     private final transient AID coordinator;
     private final transient ExecutorService primitiveThreads;
     private final transient Map<String, ACLMessage> relayed = new ConcurrentHashMap<>();
-    private final transient AtomicLong relays = new AtomicLong();
 
     BodyAgent(AgentImplementation implementation, BodyJournal journal, PrimitiveTable primitives, AID coordinator,
             ExecutorService primitiveThreads, CountDownLatch ready) {
@@ -55,7 +53,8 @@ final class BodyAgent extends RegisteredMaslAgent {
     }
 
     private void take(ACLMessage message) {
-        ACLMessage requester = message.getInReplyTo() == null ? null : relayed.remove(message.getInReplyTo());
+        ACLMessage requester = message.getInReplyTo() == null || !coordinator.equals(message.getSender()) ? null
+                : relayed.remove(message.getInReplyTo());
         if (requester != null) {
             answer(forwarded(requester, message));
             return;
@@ -88,7 +87,7 @@ final class BodyAgent extends RegisteredMaslAgent {
         relay.setLanguage(AclInvocations.LANGUAGE);
         relay.setOntology(AclInvocations.ONTOLOGY);
         relay.setContent(request.getContent());
-        String replyWith = getLocalName() + "-relay-" + relays.incrementAndGet();
+        String replyWith = UnguessableIds.next(getLocalName() + "-relay");
         relay.setReplyWith(replyWith);
         relayed.put(replyWith, request);
         send(relay);

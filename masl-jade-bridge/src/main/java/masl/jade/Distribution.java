@@ -100,8 +100,7 @@ final class Distribution {
     AgentImplementation stub(int proxyId, String name, String container, AgentType type,
             Class<? extends AgentImplementation> implementation) {
         List<Method> methods = new PrimitiveTable(type, implementation).methods();
-        RemoteBody body = new RemoteBody(name, new AID(name, AID.ISLOCALNAME), methods, coordinator,
-                implementation.getClassLoader());
+        RemoteBody body = new RemoteBody(name, new AID(name, AID.ISLOCALNAME), methods, coordinator);
         remotes.put(proxyId, new Remote(name, container, implementation.getName(), body));
         return StubClasses.instantiate(implementation, methods, body);
     }

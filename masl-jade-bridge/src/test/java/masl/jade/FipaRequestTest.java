@@ -132,7 +132,7 @@ class FipaRequestTest {
                     + "was expecting double-quote to start field name",
                     raw(ACLMessage.REQUEST, "{\"primitive\":\"log\",}"));
             assertNotUnderstood("content:1:14: error: unknown primitive \"fly\": ServiceAgent has getProxyID, nop, "
-                    + "log, logln, add, divide, unwritable, release, hang", raw(ACLMessage.REQUEST, "{\"primitive\":\"fly\"}"));
+                    + "log, logln, add, divide, unwritable, release, hang, gated", raw(ACLMessage.REQUEST, "{\"primitive\":\"fly\"}"));
             assertNotUnderstood("content:1:14: error: int add(int, int) takes 2 arguments, got 1",
                     raw(ACLMessage.REQUEST, "{\"primitive\":\"add\",\"args\":[1]}"));
             assertNotUnderstood("content:1:30: error: argument 2 of add: expected an int, got \"two\"",
