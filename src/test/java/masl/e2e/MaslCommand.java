@@ -3,7 +3,7 @@ package masl.e2e;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
-import masl.translator.cli.Masl;
+import masl.cli.Masl;
 
 /** One run of the {@code masl} command in this process: its exit status, standard output and standard error. */
 record MaslCommand(int status, String out, String err) {

@@ -12,9 +12,9 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import javax.imageio.ImageIO;
-import masl.runtime.trace.timeline.Timeline;
-import masl.runtime.trace.timeline.TimelineHtml;
-import masl.runtime.trace.timeline.TraceReader;
+import masl.cli.timeline.Timeline;
+import masl.cli.timeline.TimelineHtml;
+import masl.cli.timeline.TraceReader;
 import org.junit.jupiter.api.Test;
 
 /**

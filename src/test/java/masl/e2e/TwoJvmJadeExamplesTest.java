@@ -8,9 +8,9 @@ import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.util.List;
 import java.util.regex.Pattern;
+import masl.cli.Main;
 import masl.jade.JadeThreads;
 import masl.jade.testing.SecondJvm;
-import masl.translator.cli.Main;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

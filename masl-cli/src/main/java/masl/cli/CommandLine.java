@@ -1,0 +1,138 @@
+package masl.cli;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * The words of a {@code masl} invocation: a command, its operands and its options
+ * ({@code --agent-path P} or {@code --agent-path=P}). Only options the command knows are accepted.
+ */
+final class CommandLine {
+
+    /** The options each command accepts; those in {@link #FLAGS} take no value. */
+    private static final Map<String, Set<String>> OPTIONS = Map.of(
+            "check", Set.of("--agent-path"),
+            "compile", Set.of("--agent-path", "-d"),
+            "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--platform", "--main-host",
+                    "--main-port", "--sim", "--out", "--place", "--port"),
+            "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout"),
+            "timeline", Set.of("-o"));
+    private static final Set<String> FLAGS = Set.of("--threads");
+
+    final String command;
+    final List<String> operands = new ArrayList<>();
+    String agentPath = "";
+    String outputFolder;
+    String outputFile;
+    boolean threads;
+    Long seed;
+    Long timeoutSeconds;
+    Long callTimeoutMillis;
+    String traceFile;
+    String platform = "inproc";
+    String mainHost;
+    Integer mainPort;
+    String scenarioFile;
+    String place;
+    Integer port;
+    String containerName;
+
+    private CommandLine(String command) {
+        this.command = command;
+    }
+
+    static CommandLine parse(String... args) throws UsageException {
+        if (args.length == 0) {
+            throw new UsageException("no command given");
+        }
+        CommandLine line = new CommandLine(args[0]);
+        Set<String> known = OPTIONS.getOrDefault(line.command, Set.of());
+        for (int i = 1; i < args.length; i++) {
+            String arg = args[i];
+            if (!arg.startsWith("-") || arg.equals("-")) {
+                line.operands.add(arg);
+                continue;
+            }
+            String name = arg.contains("=") ? arg.substring(0, arg.indexOf('=')) : arg;
+            if (!known.contains(name)) {
+                throw new UsageException("unknown option " + name + (OPTIONS.containsKey(line.command)
+                        ? " for masl " + line.command : ""));
+            }
+            if (FLAGS.contains(name)) {
+                if (arg.contains("=")) {
+                    throw new UsageException(name + " takes no value");
+                }
+                line.threads = true;
+                continue;
+            }
+            String value;
+            if (arg.contains("=")) {
+                value = arg.substring(arg.indexOf('=') + 1);
+            } else if (i + 1 < args.length) {
+                value = args[++i];
+            } else {
+                throw new UsageException(name + " needs a value");
+            }
+            line.set(name, value);
+        }
+        return line;
+    }
+
+    private void set(String option, String value) throws UsageException {
+        switch (option) {
+            case "--agent-path" -> agentPath = value;
+            case "-d", "--out" -> outputFolder = value;
+            case "--sim" -> scenarioFile = value;
+            case "-o" -> outputFile = value;
+            case "--trace" -> traceFile = value;
+            case "--seed" -> seed = number(option, value, Long.MIN_VALUE);
+            case "--timeout" -> timeoutSeconds = number(option, value, 1);
+            case "--call-timeout" -> callTimeoutMillis = number(option, value, 1);
+            case "--platform" -> platform = oneOf(option, value, "inproc", "jade");
+            case "--main-host" -> mainHost = value;
+            case "--main-port" -> mainPort = port(option, value);
+            case "--port" -> port = port(option, value);
+            case "--place" -> place = value;
+            case "--name" -> containerName = value;
+            default -> throw new UsageException("unknown option " + option);
+        }
+    }
+
+    private static String oneOf(String option, String value, String... choices) throws UsageException {
+        for (String choice : choices) {
+            if (choice.equals(value)) {
+                return value;
+            }
+        }
+        throw new UsageException(option + " is one of " + String.join(", ", choices) + ", got '" + value + "'");
+    }
+
+    private static int port(String option, String value) throws UsageException {
+        long port = number(option, value, 1);
+        if (port > 65535) {
+            throw new UsageException(option + " must be at most 65535, got " + value);
+        }
+        return (int) port;
+    }
+
+    private static long number(String option, String value, long minimum) throws UsageException {
+        try {
+            long number = Long.parseLong(value);
+            if (number < minimum) {
+                throw new UsageException(option + " must be at least " + minimum + ", got " + value);
+            }
+            return number;
+        } catch (NumberFormatException notANumber) {
+            throw new UsageException(option + " needs a whole number, got '" + value + "'");
+        }
+    }
+
+    String singleFile() throws UsageException {
+        if (operands.size() != 1) {
+            throw new UsageException("masl " + command + " takes exactly one program file, got " + operands.size());
+        }
+        return operands.get(0);
+    }
+}

@@ -1,0 +1,135 @@
+package masl.cli;
+
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.atomic.AtomicReference;
+import masl.jade.JadeException;
+import masl.jade.JadeLauncher;
+import masl.jade.JadeOptions;
+import masl.jade.Placement;
+import masl.runtime.Mission;
+import masl.runtime.MissionOutcome;
+import masl.runtime.MissionProgram;
+import masl.runtime.descriptor.AgentPath;
+import masl.runtime.descriptor.DescriptorLoader;
+import masl.runtime.trace.Trace;
+import masl.translator.MissionLoader;
+import masl.translator.source.SourceFile;
+
+/**
+ * {@code masl run --platform jade}: runs a translated mission inside JADE through {@link JadeLauncher},
+ * in a new main container on loopback, or in a container joining the platform at
+ * {@code --main-host}/{@code --main-port}; with {@code --place}, the bodies of the agents named run in
+ * the containers named ({@code masl container}), their programs here. The journal, timeout, trace,
+ * Ctrl-C and outcome are those of an in-process run; a platform that cannot start or be joined, or a
+ * container that does not join, ends the run as a failed mission.
+ */
+final class JadeRun {
+
+    private final MissionLoader loaded;
+    private final DescriptorLoader descriptors;
+    private final JadeOptions options;
+    private final Map<String, String> placement;
+    private final PrintStream out;
+
+    /**
+     * @throws UsageException if the command line asks for something JADE runs cannot do: a scheduler
+     *                        of its own ({@code --threads}, {@code --seed}), or half a main address
+     */
+    JadeRun(CommandLine line, SourceFile source, AgentPath agentPath, MissionLoader loaded, PrintStream out)
+            throws UsageException {
+        if (line.threads || line.seed != null) {
+            throw new UsageException("--platform jade runs each agent in a JADE behaviour of its own:"
+                    + " --threads and --seed are for --platform inproc");
+        }
+        if ((line.mainHost == null) != (line.mainPort == null)) {
+            throw new UsageException("--main-host and --main-port name the main container to join: give both");
+        }
+        if (line.port != null && line.mainHost != null) {
+            throw new UsageException("--port is the port of the main container masl run starts: --main-host and"
+                    + " --main-port join one instead");
+        }
+        this.loaded = loaded;
+        this.descriptors = new DescriptorLoader(nextToProgram(source, agentPath));
+        this.options = line.mainHost != null ? JadeOptions.join(line.mainHost, line.mainPort)
+                : line.port != null ? JadeOptions.mainContainer().withPort(line.port) : JadeOptions.mainContainer();
+        this.placement = line.place == null ? Map.of() : placement(line.place, loaded);
+        this.out = out;
+    }
+
+    /** {@code --place}: pairs or a file, naming agents the program declares. */
+    private static Map<String, String> placement(String option, MissionLoader loaded) throws UsageException {
+        Map<String, String> placement;
+        try {
+            placement = Placement.parse(option);
+        } catch (IllegalArgumentException bad) {
+            throw new UsageException(bad.getMessage());
+        }
+        List<String> declared = loaded.program().agents().stream().map(MissionProgram.AgentSpec::name).toList();
+        for (String agent : placement.keySet()) {
+            if (!declared.contains(agent)) {
+                throw new UsageException("--place names " + agent + ", which the program does not declare (it"
+                        + " declares " + String.join(", ", declared) + ")");
+            }
+        }
+        return placement;
+    }
+
+    /** Descriptors are looked up in the program's folder first, as the translator looked them up. */
+    private static AgentPath nextToProgram(SourceFile source, AgentPath agentPath) {
+        List<Path> entries = new ArrayList<>();
+        if (source.folder() != null) {
+            entries.add(source.folder());
+        }
+        entries.addAll(agentPath.entries());
+        return AgentPath.of(entries, agentPath.resources());
+    }
+
+    /** Runs the mission; Ctrl-C stops it once its agents exist (its journal so far is kept). */
+    MissionOutcome run(Trace trace, Duration timeout) {
+        AtomicReference<Thread> stopper = new AtomicReference<>();
+        JadeLauncher launcher = JadeLauncher.of(loaded.program())
+                .types(spec -> descriptors.loadByClassName(spec.typeClassName()))
+                .implementations(loaded::newImplementation)
+                .place(placement)
+                .journal(out)
+                .trace(trace == null ? Trace.NONE : trace)
+                .whenReady(mission -> stopper.set(stopOnCtrlC(mission)));
+        try {
+            return launcher.run(options, timeout);
+        } catch (InterruptedException interrupted) {
+            Thread.currentThread().interrupt();
+            return failed(interrupted, MissionOutcome.Status.STOPPED);
+        } catch (JadeException | IllegalStateException cannotRun) {
+            return failed(cannotRun, MissionOutcome.Status.FAILED);
+        } finally {
+            removeHook(stopper.get());
+        }
+    }
+
+    private static Thread stopOnCtrlC(Mission mission) {
+        Thread stopper = new Thread(mission::stop, "masl-stop");
+        Runtime.getRuntime().addShutdownHook(stopper);
+        return stopper;
+    }
+
+    private static void removeHook(Thread stopper) {
+        if (stopper == null) {
+            return;
+        }
+        try {
+            Runtime.getRuntime().removeShutdownHook(stopper);
+        } catch (IllegalStateException shuttingDown) {
+            // The JVM is exiting because of Ctrl-C: the hook is running, as it should.
+        }
+    }
+
+    private static MissionOutcome failed(Exception why, MissionOutcome.Status status) {
+        return new MissionOutcome(status, "", Optional.of(why), "");
+    }
+}

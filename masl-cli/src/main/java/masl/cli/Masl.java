@@ -1,0 +1,175 @@
+package masl.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.Map;
+import masl.runtime.descriptor.AgentPath;
+import masl.translator.Frontend;
+import masl.translator.Translation;
+import masl.translator.Translator;
+import masl.translator.compile.GeneratedCodeException;
+import masl.translator.diagnostics.DiagnosticPrinter;
+import masl.translator.diagnostics.Diagnostics;
+import masl.translator.source.SourceFile;
+
+/**
+ * The {@code masl} command. Exit statuses (components.md): 0 success, 1 errors in the program or its
+ * descriptors, 2 the mission failed (deadlock, crash, timeout), 64 bad usage, 70 an internal error (a
+ * bug of masl, reported as one, never as a stack trace).
+ */
+public final class Masl {
+
+    static final int OK = 0;
+    static final int PROGRAM_ERRORS = 1;
+    static final int MISSION_FAILED = 2;
+    static final int USAGE = 64;
+    static final int INTERNAL_ERROR = 70;
+
+    static final String USAGE_TEXT = """
+            usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE]
+                           [--call-timeout MS] [--platform inproc|jade]
+                           [--main-host HOST --main-port PORT | --port PORT]
+                           [--place AGENT=CONTAINER,... | --place FILE]
+                   masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
+                           [--timeout SECONDS]
+                   masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH]
+                   masl compile FILE -d DIR [--agent-path PATH]
+                   masl check FILE [--agent-path PATH]
+                   masl timeline TRACE -o FILE.html
+              run       translate a MASL program, compile it in memory and run its mission in this process;
+                        the journal (and only the journal) goes to standard output
+                        with --sim, the mission the scenario names runs on its simulated robots; trajectories,
+                        events, trace, journal and a picture go to --out (default: NAME.out beside NAME.scenario.xml)
+              container join a JADE platform as container CONTAINER and host the bodies (the primitives) of the
+                        agents a run --place puts there; their programs run in the run's JVM; ends with the mission
+              compile   translate a MASL program into Java sources under DIR (one folder per package)
+              check     report every error of a MASL program and of the descriptors it imports
+              timeline  draw a trace written by run --trace as a self-contained HTML page: one lane per
+                        agent over time, coloured by block, with barrier trips, waves, events and invocations
+            options:
+              --agent-path PATH   folders and jars holding agent descriptors and their classes, ':'-separated;
+                                  searched after the program's folder, before the descriptors masl ships
+              --threads           run each agent on a thread of its own instead of a small pool
+              --seed N            run on one thread, every scheduling choice drawn from seed N (replayable)
+              --timeout SECONDS   stop the mission after SECONDS (default: no limit)
+              --call-timeout MS   a primitive running longer than MS milliseconds gives its caller its default
+                                  value and the event timeout; the mission goes on (default: no limit)
+              --trace FILE        write the trace (one JSON object per line) to FILE
+              --platform P        inproc (default): run in this process; jade: run inside a JADE platform,
+                                  one JADE agent per MASL agent, registered with the DF, answering FIPA requests
+              --main-host HOST, --main-port PORT
+                                  with --platform jade: join the platform whose main container listens there
+                                  instead of starting one on loopback
+              --port PORT         with --platform jade: the port of the main container run starts (default: a free one)
+              --place AGENT=CONTAINER,... or FILE (lines AGENT=CONTAINER)
+                                  with --platform jade: run these agents' bodies in the containers named (started
+                                  with masl container), their programs in this JVM; other agents stay here
+            exit status: 0 success, 1 errors in the program or its descriptors, 2 the mission failed,
+                         deadlocked or timed out, 64 bad usage, 70 internal error
+            """;
+
+    private final PrintStream out;
+    private final PrintStream err;
+
+    public Masl(PrintStream out, PrintStream err) {
+        this.out = out;
+        this.err = err;
+    }
+
+    /** Runs one invocation and returns its exit status; never throws. */
+    public int run(String... args) {
+        try {
+            if (args.length == 1 && (args[0].equals("--help") || args[0].equals("-h") || args[0].equals("help"))) {
+                out.print(USAGE_TEXT);
+                return OK;
+            }
+            CommandLine line = CommandLine.parse(args);
+            return switch (line.command) {
+                case "check" -> check(line);
+                case "compile" -> compile(line);
+                case "run" -> line.scenarioFile != null ? new SimRun(out, err).run(line)
+                        : new RunCommand(out, err).run(line, readProgram(line.singleFile()));
+                case "timeline" -> new TimelineCommand(err).run(line);
+                case "container" -> new ContainerCommand(out, err).run(line);
+                default -> throw new UsageException("unknown command '" + line.command + "'");
+            };
+        } catch (UsageException usage) {
+            err.println("masl: " + usage.getMessage());
+            err.print(USAGE_TEXT);
+            return USAGE;
+        } catch (GeneratedCodeException bug) {
+            err.println("masl: internal error: the Java generated for this program does not compile; please report it"
+                    + " with the program" + savedReport(bug));
+            return INTERNAL_ERROR;
+        } catch (RuntimeException | StackOverflowError | OutOfMemoryError bug) {
+            err.println("masl: internal error, please report it with the program that caused it: " + bug);
+            return INTERNAL_ERROR;
+        }
+    }
+
+    /** Keeps javac's messages for the bug report in a file, since the user is not meant to read them. */
+    private static String savedReport(GeneratedCodeException bug) {
+        try {
+            Path report = Files.createTempFile("masl-internal-error-", ".txt");
+            Files.writeString(report, bug.getMessage());
+            return " (details in " + report + ")";
+        } catch (IOException | RuntimeException cannotSave) {
+            return "";
+        }
+    }
+
+    private int check(CommandLine line) throws UsageException {
+        SourceFile source = readProgram(line.singleFile());
+        Frontend.Result result = new Frontend(AgentPath.parse(line.agentPath)).analyse(source);
+        printDiagnostics(source, result.diagnostics());
+        return result.succeeded() ? OK : PROGRAM_ERRORS;
+    }
+
+    private int compile(CommandLine line) throws UsageException {
+        SourceFile source = readProgram(line.singleFile());
+        if (line.outputFolder == null) {
+            throw new UsageException("masl compile needs -d DIR, the folder to write the Java sources into");
+        }
+        Translation translation = new Translator(AgentPath.parse(line.agentPath)).translate(source);
+        printDiagnostics(source, translation.diagnostics());
+        if (!translation.succeeded()) {
+            return PROGRAM_ERRORS;
+        }
+        Path folder = Path.of(line.outputFolder);
+        for (Map.Entry<String, String> unit : translation.javaSources().entrySet()) {
+            Path file = folder.resolve(unit.getKey().replace('.', '/') + ".java");
+            try {
+                Files.createDirectories(file.getParent());
+                Files.writeString(file, unit.getValue());
+            } catch (IOException | InvalidPathException cannotWrite) {
+                err.println("masl: cannot write " + file + ": " + cannotWrite.getMessage());
+                return USAGE;
+            }
+        }
+        return OK;
+    }
+
+    void printDiagnostics(SourceFile source, Diagnostics diagnostics) {
+        new DiagnosticPrinter(Map.of(source.name(), source.text())).print(diagnostics.sorted(), err);
+    }
+
+    private static SourceFile readProgram(String name) throws UsageException {
+        Path file;
+        try {
+            file = Path.of(name);
+        } catch (InvalidPathException bad) {
+            throw new UsageException("not a file name: " + name);
+        }
+        if (!Files.isRegularFile(file)) {
+            throw new UsageException(name + ": no such file");
+        }
+        try {
+            return SourceFile.read(file);
+        } catch (IOException unreadable) {
+            throw new UsageException(name + ": cannot be read (" + unreadable.getMessage() + ")");
+        }
+    }
+}

@@ -1,0 +1,180 @@
+package masl.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.LinkedHashSet;
+import java.util.Map;
+import java.util.Set;
+import masl.runtime.MissionOutcome;
+import masl.runtime.descriptor.AgentPath;
+import masl.sim.scenario.RunOptions;
+import masl.sim.scenario.Scenario;
+import masl.sim.scenario.ScenarioException;
+import masl.sim.scenario.ScenarioLoader;
+import masl.sim.scenario.ScenarioRunner;
+import masl.sim.scenario.SimulationResult;
+import masl.translator.MissionLoader;
+import masl.translator.Translation;
+import masl.translator.Translator;
+import masl.translator.diagnostics.DiagnosticPrinter;
+import masl.translator.source.SourceFile;
+
+/**
+ * {@code masl run --sim SCENARIO}: the scenario names the mission file; the mission is translated,
+ * compiled in memory and run on the scenario's simulated robots by {@link ScenarioRunner}. The
+ * journal (only the journal) goes to standard output; trajectories, events, trace, journal and the
+ * trajectory picture are written to {@code --out}, by default the folder {@code NAME.out} next to
+ * the scenario file {@code NAME.scenario.xml}. Folders holding the scenario's descriptor files are
+ * searched for descriptors before {@code --agent-path}.
+ */
+final class SimRun {
+
+    private static final Duration NO_TIMEOUT = Duration.ofDays(3650);
+
+    private final PrintStream out;
+    private final PrintStream err;
+
+    SimRun(PrintStream out, PrintStream err) {
+        this.out = out;
+        this.err = err;
+    }
+
+    int run(CommandLine line) throws UsageException {
+        if (!line.operands.isEmpty()) {
+            throw new UsageException("masl run --sim takes the scenario only: its <mission file=...> names the program");
+        }
+        if (line.callTimeoutMillis != null) {
+            throw new UsageException("--call-timeout and --sim: simulated robots' primitives are not bounded yet");
+        }
+        if (line.threads) {
+            throw new UsageException("--threads and --sim: the scenario chooses how agents and physics share time");
+        }
+        Path scenarioFile = existingFile(line.scenarioFile);
+        Scenario scenario;
+        try {
+            scenario = new ScenarioLoader().load(scenarioFile);
+        } catch (ScenarioException invalid) {
+            invalid.errors().forEach(err::println);
+            return Masl.PROGRAM_ERRORS;
+        }
+        if (scenario.mission().isEmpty()) {
+            err.println(scenarioFile + ":1:1: error: the scenario names no mission (<mission file=\"NAME.masl\"/>)");
+            return Masl.PROGRAM_ERRORS;
+        }
+        SourceFile source = readMission(scenario.mission().get());
+        if (source == null) {
+            return Masl.PROGRAM_ERRORS;
+        }
+        AgentPath agentPath = AgentPath.parse(agentPathWithDescriptors(scenario, line.agentPath));
+        Translation translation = new Translator(agentPath).translate(source);
+        new DiagnosticPrinter(Map.of(source.name(), source.text())).print(translation.diagnostics().sorted(), err);
+        if (!translation.succeeded()) {
+            return Masl.PROGRAM_ERRORS;
+        }
+        MissionLoader loaded = MissionLoader.load(translation, agentPath);
+        Path output = outputFolder(line.outputFolder, scenarioFile);
+        RunOptions options = RunOptions.defaults()
+                .withJournal(out)
+                .withOutput(output)
+                .withTimeout(line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds));
+        try {
+            SimulationResult result = new ScenarioRunner(seeded(scenario, line.seed)).run(loaded.program(), options);
+            return report(result, scenario, output);
+        } catch (ScenarioException doesNotFit) {
+            doesNotFit.errors().forEach(err::println);
+            return Masl.PROGRAM_ERRORS;
+        } catch (IOException cannotWrite) {
+            err.println("masl: cannot write the simulation's output to " + output + ": " + cannotWrite.getMessage());
+            return Masl.MISSION_FAILED;
+        } catch (InterruptedException interrupted) {
+            Thread.currentThread().interrupt();
+            err.println("masl: the mission stopped");
+            return Masl.MISSION_FAILED;
+        } finally {
+            out.flush();
+        }
+    }
+
+    /** {@code --seed} overrides the physics seed of the scenario; the lock-step scheduler draws from it. */
+    private static Scenario seeded(Scenario scenario, Long seed) {
+        if (seed == null) {
+            return scenario;
+        }
+        return new Scenario(scenario.name(), scenario.source(), scenario.physics().withSeed(seed), scenario.mode(),
+                scenario.slicesPerStep(), scenario.duration(), scenario.worlds(), scenario.agents(), scenario.faults(),
+                scenario.initialisation(), scenario.mission(), scenario.samplePeriod());
+    }
+
+    /**
+     * A simulated mission ends normally when it completes or when the scenario's duration has passed
+     * (the runner stops it then); a deadlock, a crash or the wall-clock timeout fail it.
+     */
+    private int report(SimulationResult result, Scenario scenario, Path output) {
+        MissionOutcome outcome = result.outcome();
+        boolean durationReached = outcome.status() == MissionOutcome.Status.STOPPED && scenario.duration() > 0
+                && result.simulatedSeconds() >= scenario.duration() - 1e-6;
+        if (outcome.completed() || durationReached) {
+            err.printf(java.util.Locale.ROOT, "masl: %.2f s simulated; output in %s%n", result.simulatedSeconds(), output);
+            return Masl.OK;
+        }
+        err.println("masl: the mission " + switch (outcome.status()) {
+            case DEADLOCKED -> "deadlocked: no agent can make progress";
+            case TIMED_OUT -> "timed out";
+            default -> "failed";
+        });
+        outcome.failure().ifPresent(failure -> err.println("  " + failure));
+        if (!outcome.report().isEmpty()) {
+            err.println(outcome.report().stripTrailing());
+        }
+        return Masl.MISSION_FAILED;
+    }
+
+    private static String agentPathWithDescriptors(Scenario scenario, String userPath) {
+        Set<String> folders = new LinkedHashSet<>();
+        scenario.agents().forEach(agent -> agent.descriptor()
+                .ifPresent(file -> folders.add(file.toAbsolutePath().getParent().toString())));
+        if (!userPath.isEmpty()) {
+            folders.add(userPath);
+        }
+        return String.join(java.io.File.pathSeparator, folders);
+    }
+
+    static Path outputFolder(String option, Path scenarioFile) throws UsageException {
+        if (option != null) {
+            try {
+                return Path.of(option);
+            } catch (InvalidPathException bad) {
+                throw new UsageException("not a folder name: " + option);
+            }
+        }
+        String name = scenarioFile.getFileName().toString();
+        String base = name.endsWith(".scenario.xml") ? name.substring(0, name.length() - ".scenario.xml".length())
+                : name.endsWith(".xml") ? name.substring(0, name.length() - 4) : name;
+        return scenarioFile.toAbsolutePath().resolveSibling(base + ".out");
+    }
+
+    private SourceFile readMission(Path file) {
+        try {
+            return SourceFile.read(file);
+        } catch (IOException unreadable) {
+            err.println("masl: the scenario's mission " + file + " cannot be read: " + unreadable.getMessage());
+            return null;
+        }
+    }
+
+    private static Path existingFile(String name) throws UsageException {
+        try {
+            Path file = Path.of(name);
+            if (!Files.isRegularFile(file)) {
+                throw new UsageException(name + ": no such scenario file");
+            }
+            return file;
+        } catch (InvalidPathException bad) {
+            throw new UsageException("not a file name: " + name);
+        }
+    }
+}

@@ -1,0 +1,90 @@
+package masl.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code masl check} as a user meets it: exit statuses, the rendering of errors, usage mistakes. */
+class CheckCommandTest {
+
+    @TempDir
+    Path folder;
+
+    /** One run of the command, with what it printed. */
+    record Run(int status, String out, String err) {
+        static Run of(String... args) {
+            ByteArrayOutputStream out = new ByteArrayOutputStream();
+            ByteArrayOutputStream err = new ByteArrayOutputStream();
+            int status = new Masl(new PrintStream(out, true, StandardCharsets.UTF_8),
+                    new PrintStream(err, true, StandardCharsets.UTF_8)).run(args);
+            return new Run(status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+        }
+    }
+
+    private Path write(String name, String text) throws IOException {
+        Path file = folder.resolve(name);
+        Files.writeString(file, text);
+        return file;
+    }
+
+    @Test
+    void aCorrectProgramGivesSilenceAndStatusZero() throws IOException {
+        Path program = write("hello.masl", """
+                import Default.xml as Default;
+                Default a, b = newAgent(Default);
+                scalar entry main (true) { .logln("hi"); }
+                """);
+        assertEquals(new Run(0, "", ""), Run.of("check", program.toString()));
+    }
+
+    @Test
+    void anErrorIsPrintedWithItsPositionSourceLineAndCaret() throws IOException {
+        Path program = write("broken.masl", """
+                import Default.xml as Default;
+                Default a = newAgent(Default);
+                scalar entry main (true {
+                  .logln("hi");
+                }
+                """);
+        Run run = Run.of("check", program.toString());
+        assertEquals(1, run.status());
+        assertEquals(program + ":3:24: error: expected ')'\n"
+                + "scalar entry main (true {\n"
+                + "                       ^\n"
+                + "1 error\n", run.err());
+        assertEquals("", run.out());
+    }
+
+    @Test
+    void aMissingFileIsBadUsage() {
+        Run run = Run.of("check", folder.resolve("absent.masl").toString());
+        assertEquals(64, run.status());
+        assertTrue(run.err().contains("absent.masl: no such file"), run.err());
+    }
+
+    @Test
+    void noCommandUnknownCommandAndUnknownOptionAreBadUsage() throws IOException {
+        Path program = write("p.masl", "import Default.xml;\n");
+        assertEquals(64, Run.of().status());
+        assertEquals(64, Run.of("chek", program.toString()).status());
+        assertEquals(64, Run.of("check", "--fast", program.toString()).status());
+        assertEquals(64, Run.of("check", program.toString(), program.toString()).status());
+        assertEquals(64, Run.of("check", program.toString(), "--agent-path").status());
+    }
+
+    @Test
+    void helpPrintsTheUsageOnStandardOutput() {
+        Run run = Run.of("--help");
+        assertEquals(0, run.status());
+        assertTrue(run.out().startsWith("usage: masl ") && run.out().contains("masl check FILE"), run.out());
+    }
+}

@@ -1,0 +1,104 @@
+package masl.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.net.ServerSocket;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import masl.cli.CheckCommandTest.Run;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code masl run --platform jade}: the same journal, statuses and errors as in-process. */
+@Timeout(120)
+class JadeRunTest {
+
+    private static final String HEADER = "import Default.xml as Default;\nDefault a, b = newAgent(Default);\n";
+
+    @TempDir
+    Path folder;
+
+    private String write(String name, String text) throws IOException {
+        Path file = folder.resolve(name);
+        Files.writeString(file, text);
+        return file.toString();
+    }
+
+    @Test
+    void aMissionInsideJadeWritesTheJournalAndOnlyTheJournal() throws IOException {
+        String program = write("two.masl", HEADER + """
+                synchronous entry main (true) {
+                  .log("x");
+                  scalar entry end (true) { .logln(""); }
+                }
+                """);
+        assertEquals(new Run(0, "xx\n", ""), Run.of("run", program, "--platform", "jade"));
+    }
+
+    /** In-process this busy-wait is a deadlock; inside JADE a FIPA request might end it, so it waits. */
+    @Test
+    void aBusyWaitInsideJadeWaitsForRequestsUntilTheTimeout() throws IOException {
+        Run run = Run.of("run", write("waiting.masl", HEADER + """
+                asynchronous entry main (true) {
+                  shared int go = 0;
+                  while (go == 0) {}
+                }
+                """), "--platform=jade", "--timeout", "1");
+        assertEquals(2, run.status());
+        assertEquals("", run.out());
+        assertTrue(run.err().startsWith("masl: the mission timed out"), run.err());
+    }
+
+    @Test
+    void aMainContainerThatIsNotThereFailsTheMission() throws IOException {
+        int freePort;
+        try (ServerSocket probe = new ServerSocket(0)) {
+            freePort = probe.getLocalPort();
+        }
+        Run run = Run.of("run", write("one.masl", HEADER + "scalar entry main (true) { .nop(); }\n"),
+                "--platform", "jade", "--main-host", "127.0.0.1", "--main-port", String.valueOf(freePort));
+        assertEquals(2, run.status());
+        assertEquals("", run.out());
+        assertTrue(run.err().contains("masl.jade.JadeException"), run.err());
+    }
+
+    @Test
+    void optionsThatDoNotFitThePlatformAreBadUsage() throws IOException {
+        String program = write("one.masl", HEADER + "scalar entry main (true) { .nop(); }\n");
+        assertEquals(64, Run.of("run", program, "--platform", "corba").status());
+        assertEquals(64, Run.of("run", program, "--platform", "jade", "--seed", "1").status());
+        assertEquals(64, Run.of("run", program, "--platform", "jade", "--threads").status());
+        assertEquals(64, Run.of("run", program, "--platform", "jade", "--main-host", "127.0.0.1").status());
+        assertEquals(64, Run.of("run", program, "--platform", "jade", "--main-host", "h", "--main-port", "70000")
+                .status());
+        assertEquals(64, Run.of("run", program, "--main-host", "127.0.0.1", "--main-port", "1099").status());
+    }
+
+    @Test
+    void aPlacementThatDoesNotFitTheProgramIsBadUsageWithItsPosition() throws IOException {
+        String program = write("one.masl", HEADER + "scalar entry main (true) { .nop(); }\n");
+        Run undeclared = Run.of("run", program, "--platform", "jade", "--place", "a=c2,zed=c2");
+        assertEquals(64, undeclared.status());
+        assertTrue(undeclared.err().startsWith("masl: --place names zed, which the program does not declare (it"
+                + " declares a, b)\n"), undeclared.err());
+        Run malformed = Run.of("run", program, "--platform", "jade", "--place", "a=c2,b");
+        assertEquals(64, malformed.status());
+        assertTrue(malformed.err().startsWith("masl: --place:1:6: error: expected AGENT=CONTAINER, got 'b'\n"),
+                malformed.err());
+        assertEquals(64, Run.of("run", program, "--place", "a=c2").status(), "--place needs --platform jade");
+        assertEquals(64, Run.of("run", program, "--platform", "jade", "--port", "1099", "--main-host", "h",
+                "--main-port", "1099").status(), "--port starts a main container, --main-* join one");
+    }
+
+    @Test
+    void aContainerNeedsItsPlatformAndName() {
+        Run noName = Run.of("container", "--main-host", "127.0.0.1", "--main-port", "1099");
+        assertEquals(64, noName.status());
+        assertTrue(noName.err().startsWith("masl: masl container needs --main-host, --main-port and --name\n"),
+                noName.err());
+        assertEquals(64, Run.of("container", "--main-host", "h", "--main-port", "1", "--name", "c", "x.masl").status());
+    }
+}

@@ -1,0 +1,96 @@
+package masl.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import masl.cli.CheckCommandTest.Run;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code masl run --sim SCENARIO}: streams, exit statuses, the output folder. */
+@Timeout(120)
+class SimRunTest {
+
+    private static final String FLOOR = """
+            <xode version="1.0r23"><world><space>
+              <geom name="floor"><plane a="0" b="0" c="1" d="0"/></geom>
+            </space></world></xode>""";
+
+    private static final String DRIVE = """
+            import WheeledRobot.xml as WheeledRobot;
+            WheeledRobot k = newAgent(WheeledRobot);
+            scalar entry main (true) {
+              .setSpeeds(5.0, 5.0);
+              .sleep(1000);
+              .stop();
+              .logln("drove");
+            }
+            """;
+
+    @TempDir
+    Path folder;
+
+    private Path scenario(String mission) throws IOException {
+        Files.writeString(folder.resolve("floor.xode"), FLOOR);
+        Files.writeString(folder.resolve("drive.masl"), mission);
+        return Files.writeString(folder.resolve("drive.scenario.xml"), """
+                <scenario name="drive">
+                  <world file="floor.xode"/>
+                  <agent name="k" model="wheeled"><pose x="0" y="0" heading="0"/></agent>
+                  <mission file="drive.masl"/>
+                </scenario>""");
+    }
+
+    @Test
+    void theJournalGoesToStandardOutputAndTheFilesNextToTheScenario() throws IOException {
+        Run run = Run.of("run", "--sim", scenario(DRIVE).toString());
+        assertEquals(0, run.status(), run.err());
+        assertEquals("drove\n", run.out());
+        Path out = folder.resolve("drive.out");
+        assertTrue(run.err().contains("output in " + out), run.err());
+        for (String file : new String[] {"trajectories.csv", "events.jsonl", "trace.jsonl", "journal.txt",
+                "trajectories.png"}) {
+            assertTrue(Files.isRegularFile(out.resolve(file)), file);
+        }
+        assertEquals("drove\n", Files.readString(out.resolve("journal.txt")));
+    }
+
+    @Test
+    void outChoosesTheFolderAndTheSameSeedGivesTheSameTrajectories() throws IOException {
+        Path scenario = scenario(DRIVE);
+        Path first = folder.resolve("first");
+        Path second = folder.resolve("second");
+        assertEquals(0, Run.of("run", "--sim", scenario.toString(), "--out", first.toString(), "--seed", "9").status());
+        assertEquals(0, Run.of("run", "--sim", scenario.toString(), "--out", second.toString(), "--seed", "9").status());
+        assertEquals(Files.readString(first.resolve("trajectories.csv")),
+                Files.readString(second.resolve("trajectories.csv")));
+    }
+
+    @Test
+    void errorsInTheMissionArePositionedInItsFileWithStatusOne() throws IOException {
+        Run run = Run.of("run", "--sim", scenario(DRIVE.replace(".stop()", ".fly()")).toString());
+        assertEquals(1, run.status());
+        assertEquals("", run.out());
+        assertTrue(run.err().contains("drive.masl:6:4: error: cannot find primitive fly"), run.err());
+    }
+
+    @Test
+    void anAgentTheMissionDoesNotDeclareIsAScenarioErrorWithStatusOne() throws IOException {
+        Run run = Run.of("run", "--sim", scenario(DRIVE.replace("WheeledRobot k =", "WheeledRobot j =")).toString());
+        assertEquals(1, run.status());
+        assertTrue(run.err().contains("drive.scenario.xml:3:3: error: agent 'k' is not declared by the mission"),
+                run.err());
+    }
+
+    @Test
+    void aProgramOperandOrAMissingScenarioIsBadUsage() throws IOException {
+        Path scenario = scenario(DRIVE);
+        assertEquals(64, Run.of("run", "--sim", scenario.toString(), "drive.masl").status());
+        assertEquals(64, Run.of("run", "--sim", folder.resolve("none.xml").toString()).status());
+        assertEquals(64, Run.of("run", "--sim", scenario.toString(), "--threads").status());
+    }
+}
