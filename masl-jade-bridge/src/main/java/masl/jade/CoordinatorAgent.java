@@ -12,6 +12,7 @@ import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
@@ -41,6 +42,9 @@ final class CoordinatorAgent extends Agent {
     static final String EVENT = "masl-event";
 
     private final transient PendingAnswers answers = new PendingAnswers(NAME);
+    private final transient MissionSecret secret;
+    /** The number of the last control message to each receiver, by local name. */
+    private final transient Map<String, AtomicLong> sequences = new ConcurrentHashMap<>();
     /** Why each agent that can no longer answer (its container is gone) cannot, by local name. */
     private final transient Map<String, String> gone = new ConcurrentHashMap<>();
     private final transient CountDownLatch ready;
@@ -51,14 +55,16 @@ final class CoordinatorAgent extends Agent {
     private transient ContainerRemovals removals;
 
     /**
+     * @param secret           signs the requests and events this agent sends ({@link MissionSecret})
      * @param relays           serves a request a body relays (conversation {@value #RELAY}), on this agent's thread
      * @param containerRemoved told the name of each container the AMS reports removed (its JVM ended or
      *                         died), on this agent's thread
      * @param unreachable      told the local name of an agent a request could not be delivered to (the
      *                         AMS answered {@code FAILURE}), on this agent's thread; it may {@link #abandon} it
      */
-    CoordinatorAgent(CountDownLatch ready, Consumer<ACLMessage> relays, Consumer<String> containerRemoved,
-            Consumer<String> unreachable) {
+    CoordinatorAgent(MissionSecret secret, CountDownLatch ready, Consumer<ACLMessage> relays,
+            Consumer<String> containerRemoved, Consumer<String> unreachable) {
+        this.secret = secret;
         this.ready = ready;
         this.relays = relays;
         this.containerRemoved = containerRemoved;
@@ -95,12 +101,15 @@ final class CoordinatorAgent extends Agent {
     }
 
     /**
-     * Sends {@code request} with a fresh, unguessable {@code reply-with}; the future completes with
-     * its answer, which only its receiver can give. May be called from any thread.
+     * Sends {@code request} (one receiver) with a fresh, unguessable {@code reply-with}, signed with the
+     * mission's secret; the future completes with its answer, which only its receiver can give. May be
+     * called from any thread.
      */
     CompletableFuture<ACLMessage> ask(ACLMessage request) {
         CompletableFuture<ACLMessage> answer = answers.register(request);
-        String reason = gone.get(((AID) request.getAllReceiver().next()).getLocalName());
+        String receiver = ((AID) request.getAllReceiver().next()).getLocalName();
+        sign(request, receiver);
+        String reason = gone.get(receiver);
         if (reason != null) {
             // Checked after registering so that a removal reported meanwhile cannot miss this call.
             answers.fail(request.getReplyWith(), new ContainerGoneException(reason));
@@ -122,6 +131,16 @@ final class CoordinatorAgent extends Agent {
     /** Sends a message from any thread. */
     void post(ACLMessage message) {
         send(message);
+    }
+
+    /** Sends {@code message} to its one receiver, signed with the mission's secret, from any thread. */
+    void postSigned(ACLMessage message) {
+        sign(message, ((AID) message.getAllReceiver().next()).getLocalName());
+        send(message);
+    }
+
+    private void sign(ACLMessage message, String receiver) {
+        secret.sign(message, receiver, sequences.computeIfAbsent(receiver, r -> new AtomicLong()).incrementAndGet());
     }
 
     private void take(ACLMessage message) {

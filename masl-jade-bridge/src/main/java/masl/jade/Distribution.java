@@ -66,12 +66,12 @@ final class Distribution {
      *
      * @throws JadeException if it cannot start (another mission spanning containers runs on the platform)
      */
-    Distribution(JadePlatform platform, Map<String, String> containerOfAgent, Duration agentsTimeout)
-            throws InterruptedException {
+    Distribution(JadePlatform platform, Map<String, String> containerOfAgent, MissionSecret secret,
+            Duration agentsTimeout) throws InterruptedException {
         this.containerOfAgent = Map.copyOf(containerOfAgent);
         this.agentsTimeout = agentsTimeout;
         CountDownLatch ready = new CountDownLatch(1);
-        coordinator = new CoordinatorAgent(ready, this::serveRelayed, this::containerRemoved, this::unreachable);
+        coordinator = new CoordinatorAgent(secret, ready, this::serveRelayed, this::containerRemoved, this::unreachable);
         try {
             controller = platform.container().acceptNewAgent(CoordinatorAgent.NAME, coordinator);
             controller.start();
@@ -134,21 +134,24 @@ final class Distribution {
 
     /**
      * The mission's trace, plus shared events sent as {@code INFORM}s (conversation
-     * {@value CoordinatorAgent#EVENT}) to every container hosting bodies, for its observers:
-     * {@code {"event": "go", "block": "main", "emitter": "leader", "message": "now"}}.
+     * {@value CoordinatorAgent#EVENT}, one signed message for each) to every container hosting bodies,
+     * for its observers: {@code {"event": "go", "block": "main", "emitter": "leader", "message": "now"}}.
      */
     Trace sendingEvents(Trace trace, List<String> names) {
         return event -> {
             trace.record(event);
             if (event instanceof TraceEvent.EventEmitted emitted && emitted.block() != null && !containers.isEmpty()) {
-                ACLMessage inform = new ACLMessage(ACLMessage.INFORM);
-                inform.setConversationId(CoordinatorAgent.EVENT);
-                inform.setLanguage(AclInvocations.LANGUAGE);
-                inform.setOntology(AclInvocations.ONTOLOGY);
-                inform.setContent(JsonContent.event(emitted.event(), emitted.block(), names.get(emitted.agent()),
-                        emitted.message()));
-                containers.values().forEach(inform::addReceiver);
-                coordinator.post(inform);
+                String content = JsonContent.event(emitted.event(), emitted.block(), names.get(emitted.agent()),
+                        emitted.message());
+                for (AID container : containers.values()) {
+                    ACLMessage inform = new ACLMessage(ACLMessage.INFORM);
+                    inform.setConversationId(CoordinatorAgent.EVENT);
+                    inform.setLanguage(AclInvocations.LANGUAGE);
+                    inform.setOntology(AclInvocations.ONTOLOGY);
+                    inform.setContent(content);
+                    inform.addReceiver(container);
+                    coordinator.postSigned(inform);
+                }
             }
         };
     }

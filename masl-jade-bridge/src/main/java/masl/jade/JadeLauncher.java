@@ -51,6 +51,7 @@ public final class JadeLauncher {
     private Trace trace = Trace.NONE;
     private Consumer<Mission> whenReady = mission -> { };
     private Map<String, String> placement = Map.of();
+    private MissionSecret secret;
 
     private JadeLauncher(MissionProgram program) {
         this.program = Objects.requireNonNull(program, "program");
@@ -96,6 +97,16 @@ public final class JadeLauncher {
     }
 
     /**
+     * The secret the containers of {@link #place} know too (out of band: {@link MissionSecret#writeTo}):
+     * the coordinator signs its control messages with it, and they obey only those. Required with a
+     * placement.
+     */
+    public JadeLauncher secret(MissionSecret missionSecret) {
+        this.secret = Objects.requireNonNull(missionSecret, "missionSecret");
+        return this;
+    }
+
+    /**
      * Called on the launching thread once every JADE agent of a mission exists and is registered with
      * the DF, with the mission about to run: from then on FIPA agents can find and invoke them, and
      * the caller may {@link Mission#stop()} it (on Ctrl-C, say).
@@ -137,8 +148,12 @@ public final class JadeLauncher {
                         + " that name (it declares " + String.join(", ", names) + ")");
             }
         }
+        if (!placement.isEmpty() && secret == null) {
+            throw new IllegalStateException("a mission placing bodies in other containers needs their secret:"
+                    + " call secret(…) first");
+        }
         Distribution distribution = placement.isEmpty() ? null
-                : new Distribution(platform, placement, AGENTS_TIMEOUT);
+                : new Distribution(platform, placement, secret, AGENTS_TIMEOUT);
         List<AgentController> controllers = new ArrayList<>();
         List<MaslJadeAgent> locals = new ArrayList<>();
         try {
