@@ -39,6 +39,7 @@ final class JadeRun {
     private final JadeOptions options;
     private final Map<String, String> placement;
     private final Path secretFile;
+    private final Duration callTimeout;
     private final PrintStream out;
 
     /**
@@ -68,6 +69,7 @@ final class JadeRun {
                     + " give it with --place");
         }
         this.secretFile = Path.of(line.secretFile == null ? CommandLine.DEFAULT_SECRET_FILE : line.secretFile);
+        this.callTimeout = line.callTimeoutMillis == null ? null : Duration.ofMillis(line.callTimeoutMillis);
         this.out = out;
     }
 
@@ -110,6 +112,9 @@ final class JadeRun {
                 .trace(trace == null ? Trace.NONE : trace)
                 .whenReady(mission -> stopper.set(stopOnCtrlC(mission)));
         try {
+            if (callTimeout != null) {
+                launcher.callTimeout(callTimeout);
+            }
             if (!placement.isEmpty()) {
                 launcher.secret(shareSecret());
             }

@@ -56,7 +56,9 @@ public final class Masl {
               --seed N            run on one thread, every scheduling choice drawn from seed N (replayable)
               --timeout SECONDS   stop the mission after SECONDS (default: no limit)
               --call-timeout MS   a primitive running longer than MS milliseconds gives its caller its default
-                                  value and the event timeout; the mission goes on (default: no limit)
+                                  value and the event timeout; the mission goes on (default: no limit); with
+                                  --platform jade it also bounds each FIPA agent's call from outside the mission
+                                  (default for those: 10000)
               --trace FILE        write the trace (one JSON object per line) to FILE
               --platform P        inproc (default): run in this process; jade: run inside a JADE platform,
                                   one JADE agent per MASL agent, registered with the DF, answering FIPA requests

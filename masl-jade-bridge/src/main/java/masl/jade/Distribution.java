@@ -56,9 +56,9 @@ final class Distribution {
     private record Remote(String name, String container, String className, RemoteBody body) {
     }
 
-    /** What a relayed request needs: the mission, and each agent's name, primitives and implementation. */
+    /** What a relayed request needs: the mission, each agent's name, primitives and implementation, the time limit. */
     private record Served(Mission mission, List<String> names, List<PrimitiveTable> tables,
-            List<AgentImplementation> implementations) {
+            List<AgentImplementation> implementations, OutsideCalls outside) {
     }
 
     /**
@@ -113,9 +113,9 @@ final class Distribution {
      * @throws JadeException if a container does not join in time or cannot host its bodies
      */
     void place(Mission mission, List<String> names, List<PrimitiveTable> tables,
-            List<AgentImplementation> implementations) throws InterruptedException {
+            List<AgentImplementation> implementations, OutsideCalls outside) throws InterruptedException {
         remotes.values().forEach(remote -> remote.body().journal(mission.journal()));
-        served = new Served(mission, names, tables, implementations);
+        served = new Served(mission, names, tables, implementations, outside);
         Map<String, List<PlacementContent.Body>> byContainer = new LinkedHashMap<>();
         remotes.forEach((id, remote) -> byContainer.computeIfAbsent(remote.container(), c -> new ArrayList<>())
                 .add(new PlacementContent.Body(remote.name(), id, remote.className())));
@@ -258,8 +258,10 @@ final class Distribution {
 
     /**
      * A FIPA agent's request that a body relayed: filtered by the agent's state as an "other" when the
-     * agent serves it, then run through its stub (so on its body); the answer goes back to the body,
-     * which forwards it. On the coordinator's JADE thread; never blocks.
+     * agent serves it, then run through its stub (so on its body) within the limit of calls from
+     * outside the mission (past it, the call's wait ends; the primitive runs on in the body's JVM until
+     * it returns); the answer goes back to the body, which forwards it. On the coordinator's JADE
+     * thread; never blocks.
      */
     private void serveRelayed(ACLMessage relay) {
         Served mission = served;
@@ -280,7 +282,7 @@ final class Distribution {
         String primitive = call.primitive().name();
         // Queued, never served inline: the primitive is a request to the body, whose answer this thread takes.
         mission.mission().submitInvocation(id, primitive,
-                () -> coordinator.post(Answers.run(relay, call, mission.implementations().get(id), null)),
+                () -> coordinator.post(mission.outside().answer(relay, call, mission.implementations().get(id), name)),
                 () -> coordinator.post(Answers.refusal(relay, name, primitive)));
     }
 }
