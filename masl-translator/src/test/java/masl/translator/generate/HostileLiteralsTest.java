@@ -94,7 +94,7 @@ class HostileLiteralsTest {
     /** A file name is written into comments as well: one holding a Unicode escape stays a comment there. */
     @Test
     void aFileNameHoldingAUnicodeEscapeLeavesTheGeneratedCommentsComments() {
-        String name = "x\\u000aif (true) throw new IllegalStateException(); //*/.masl";
+        String name = "x\\u000aif (true) throw new IllegalStateException(); *\\u002f.masl";
         Translation translation = new Translator(AgentPath.parse("")).translate(
                 new SourceFile(name, Programs.FIXTURES, HEADER + "  .logln(\"ok\");\n}\n"));
         assertTrue(translation.succeeded(), () -> translation.diagnostics().sorted().toString());
