@@ -16,11 +16,8 @@ import masl.runtime.descriptor.DescriptorLoader;
 import masl.runtime.descriptor.DescriptorProblem;
 import masl.runtime.descriptor.DescriptorSource;
 import masl.translator.diagnostics.Diagnostic;
-<<<<<<< HEAD
-import masl.translator.parse.Literals;
-=======
 import masl.translator.diagnostics.Suggestions;
->>>>>>> main
+import masl.translator.parse.Literals;
 import org.antlr.v4.runtime.CommonTokenStream;
 import org.antlr.v4.runtime.Token;
 
