@@ -19,6 +19,13 @@ final class CaseWriter {
      */
     static final int LONGEST_CASE = 4_000;
 
+    /**
+     * The most characters of Java one statement may make: a case cannot be split inside a statement,
+     * and Java's bytecode takes at most one byte a character (about a third, mostly), so this much
+     * fits the 64 KB of a method with room for the machine around it.
+     */
+    static final int LARGEST_STATEMENT = 60_000;
+
     /** A resumption point: a case of the switch once placed. */
     static final class Point {
         private Case target;
@@ -85,6 +92,7 @@ final class CaseWriter {
     private final List<Case> cases = new ArrayList<>();
     private Case current;
     private boolean terminated = true;
+    private boolean grewTooLarge;
     private int indent;
 
     Point point() {
@@ -127,6 +135,16 @@ final class CaseWriter {
             place(point(), null);
             current.lastStatement = continued;
         }
+    }
+
+    /**
+     * Whether a case grew past {@value #LARGEST_STATEMENT} characters since this was last asked: the
+     * statement just written is too large for a Java method.
+     */
+    boolean tooLarge() {
+        boolean grown = grewTooLarge;
+        grewTooLarge = false;
+        return grown;
     }
 
     /** A line of code in the current case, starting an (unreachable) case if the previous code jumped away. */
@@ -230,7 +248,9 @@ final class CaseWriter {
             terminated = false;
         }
         current.lines.add(line);
+        int before = current.size;
         current.size += size(line) + 1;
+        grewTooLarge |= before <= LARGEST_STATEMENT && current.size > LARGEST_STATEMENT;
     }
 
     private void terminate() {

@@ -182,7 +182,7 @@ final class MissionClassWriter {
     /** A constant name for each instantiated type, by the type's MASL name. */
     private static Map<String, String> typeConstants(List<AgentDecl> agents) {
         Map<String, String> constants = new java.util.LinkedHashMap<>();
-        JavaNames.Unique names = new JavaNames.Unique("LOADER");
+        JavaNames.Unique names = JavaNames.Unique.besideGeneratedNames();
         for (AgentDecl agent : agents) {
             constants.computeIfAbsent(agent.instantiatedType().name(), type -> names.take(JavaNames.constant(type)));
         }

@@ -116,7 +116,7 @@ final class ProgramClassWriter {
         for (Block block : keptOnReelect) {
             if (block.variables().stream().anyMatch(v -> v.sharing() == Sharing.LOCAL)) {
                 out.add("    /** Set by a reelect of " + block.name() + ": its locals are kept if the agent enters again. */");
-                out.add("    private boolean keep$" + block.name() + ";");
+                out.add("    private boolean " + expressions.keepFlag(block) + ";");
             }
         }
         out.add("");

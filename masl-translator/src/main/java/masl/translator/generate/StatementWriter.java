@@ -7,8 +7,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.stream.Collectors;
-import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.StatementContext;
+import masl.grammar.MASLParser;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.Block;
 import masl.translator.analysis.BlockMode;
@@ -17,6 +17,7 @@ import masl.translator.analysis.EntryRef;
 import masl.translator.analysis.Reaction;
 import masl.translator.analysis.Sharing;
 import masl.translator.analysis.Variable;
+import masl.translator.parse.NumberLiterals;
 import org.antlr.v4.runtime.ParserRuleContext;
 
 /**
@@ -184,10 +185,11 @@ final class StatementWriter {
         CaseWriter.Point body = cases.point();
         cases.setPc(body);
         cases.open("switch (ctx.enter(" + definition + ", " + test + ")) {");
-        cases.jumpLine("case SKIPPED -> { " + (keeps ? "keep$" + block.name() + " = false; " : ""), after, " }");
+        cases.jumpLine("case SKIPPED -> { " + (keeps ? expressions.keepFlag(block) + " = false; " : ""), after, " }");
         cases.returning("case WAITING -> { ", " }");
         cases.line("case ENTERED -> { }");
         cases.close("}");
+        checkSize(tree.test);
         cases.place(body, null);
 
         Block outerBlock = current;
@@ -235,12 +237,13 @@ final class StatementWriter {
                 boolean stepped = instructions.awaitResults(variable.initializer());
                 cases.line("ctx.shared(" + structure.shared(variable) + ").initialise(() -> " + value + ");");
                 stepAfterInitialiser(variable, stepped);
+                checkSize(variable.initializer());
             }
         }
         CaseWriter.Point kept = cases.point();
         if (keeps) {
             // A step boundary cannot stand inside an if: a reelected member jumps over its locals instead.
-            cases.open("if (keep$" + block.name() + ") {");
+            cases.open("if (" + expressions.keepFlag(block) + ") {");
             cases.comment("reelected: " + block.name() + "'s locals keep their values");
             cases.jump(kept);
             cases.close("}");
@@ -253,11 +256,12 @@ final class StatementWriter {
                         variable.initializer() != null ? variable.initializer() : block.tree());
                 cases.line(expressions.local(variable) + " = " + value + ";");
                 stepAfterInitialiser(variable, stepped);
+                checkSize(variable.initializer() != null ? variable.initializer() : block.tree());
             }
         }
         if (keeps) {
             cases.place(kept, null);
-            cases.line("keep$" + block.name() + " = false;");
+            cases.line(expressions.keepFlag(block) + " = false;");
         }
     }
 
@@ -306,6 +310,19 @@ final class StatementWriter {
 
     private void statement(StatementContext statement) {
         cases.statementStart();
+        writeStatement(statement);
+        checkSize(statement);
+    }
+
+    /** Reports a statement whose Java does not fit in a method, whatever the splitting. */
+    private void checkSize(ParserRuleContext statement) {
+        if (cases.tooLarge()) {
+            unsupported.error(statement, "this statement is too large for Java, which holds at most 64 KB of bytecode"
+                    + " in a method: split it into several statements");
+        }
+    }
+
+    private void writeStatement(StatementContext statement) {
         if (statement instanceof MASLParser.EntryStmtContext) {
             statementInList(statement);
         } else if (statement instanceof MASLParser.BlockStmtContext block) {
@@ -323,7 +340,7 @@ final class StatementWriter {
         } else if (statement instanceof MASLParser.DoLoopStmtContext loop) {
             doLoop(loop);
         } else if (statement instanceof MASLParser.ExitStmtContext exit) {
-            int levels = exit.levels == null ? 1 : Integer.parseInt(exit.levels.getText());
+            int levels = exit.levels == null ? 1 : NumberLiterals.count(exit.levels.getText());
             cases.note(at(exit) + ": " + JavaText.snippet(exit));
             cases.jump(loopStack.stream().skip(levels - 1).findFirst().orElseThrow().exit());
         } else if (statement instanceof MASLParser.BreakStmtContext breakStmt) {
@@ -338,7 +355,7 @@ final class StatementWriter {
             endReaction();
             cases.line("ctx.reelect(" + structure.block(target) + ");");
             if (keptOnReelect.contains(target) && hasLocals(target)) {
-                cases.line("keep$" + target.name() + " = true;");
+                cases.line(expressions.keepFlag(target) + " = true;");
             }
             cases.jump(test(target));
         } else if (statement instanceof MASLParser.RestartStmtContext restart) {
@@ -382,7 +399,7 @@ final class StatementWriter {
             }
             throw new IllegalStateException("the analysis let through break or reelect to " + name);
         }
-        int levels = target == null ? 1 : Integer.parseInt(target.IntegerLiteral().getText());
+        int levels = target == null ? 1 : NumberLiterals.count(target.IntegerLiteral().getText());
         Block block = current;
         for (int i = 1; i < levels; i++) {
             block = block.parent();

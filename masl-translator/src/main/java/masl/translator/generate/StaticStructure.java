@@ -24,7 +24,7 @@ final class StaticStructure {
     static final int DECLARATIONS_PER_CLASS = 1_000;
 
     private final String sourceName;
-    private final JavaNames.Unique names = new JavaNames.Unique("AGENTS");
+    private final JavaNames.Unique names = JavaNames.Unique.besideGeneratedNames();
     private final Map<Block, String> blocks = new IdentityHashMap<>();
     private final Map<ESequence, String> sequences = new IdentityHashMap<>();
     private final Map<Variable, String> shared = new IdentityHashMap<>();
