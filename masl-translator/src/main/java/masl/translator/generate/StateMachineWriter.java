@@ -8,10 +8,11 @@ import java.util.List;
  * {@code resume}, a {@code switch (pc)} over the cases of a {@link CaseWriter}, and {@code sourceAt}
  * and {@code sourceOfCallIn}, which name the MASL statement of a case for the runtime's reports.
  *
- * <p>A Java method holds at most 64 KB of bytecode. A machine larger than {@value #LARGEST_PART}
- * characters of Java is split into parts by ranges of {@code pc}, one method each: {@code resume}
- * calls the part that holds {@code pc}; a part returns false once the agent suspended or finished,
- * true to go on at a {@code pc} another part holds. A small machine is one {@code resume}.
+ * <p>A Java method holds at most 64 KB of bytecode, and a class 65,535 constants. A machine larger
+ * than {@value #LARGEST_PART} characters of Java is split into parts by ranges of {@code pc}, each
+ * an inner class of its own ({@code From195} holds the cases from 195): {@code resume} calls the
+ * part that holds {@code pc}; a part returns false once the agent suspended or finished, true to go
+ * on at a {@code pc} another part holds. A small machine is one {@code resume}.
  */
 final class StateMachineWriter {
 
@@ -33,6 +34,7 @@ final class StateMachineWriter {
     }
 
     private static final String CASE_MARGIN = "                ";
+    private static final String PART_CASE_MARGIN = "                    ";
 
     private final List<Part> parts;
 
@@ -98,10 +100,14 @@ final class StateMachineWriter {
 
     private void writeParts(JavaLines out) {
         out.add("    /*");
-        out.add("     * The state machine in " + parts.size() + " parts by ranges of pc, a method each: a Java method holds");
-        out.add("     * at most 64 KB of bytecode. A part returns false once the agent suspended or finished, true to go");
-        out.add("     * on at a pc that another part holds.");
+        out.add("     * The state machine in " + parts.size() + " parts by ranges of pc, each a class of its own: a Java method");
+        out.add("     * holds at most 64 KB of bytecode, a class 65,535 constants. A part returns false once the agent");
+        out.add("     * suspended or finished, true to go on at a pc that another part holds.");
         out.add("     */");
+        for (Part part : parts) {
+            out.add("    private final From" + part.first() + " from" + part.first() + " = new From" + part.first() + "();");
+        }
+        out.add("");
         out.add("    @Override");
         out.add("    protected void resume(AgentContext ctx) {");
         out.add("        boolean goOn;");
@@ -109,7 +115,7 @@ final class StateMachineWriter {
         String keyword = "if";
         for (Part part : parts) {
             out.add("            " + keyword + " (pc < " + part.end() + ") {");
-            out.add("                goOn = resumeFrom" + part.first() + "(ctx);");
+            out.add("                goOn = from" + part.first() + ".resume(ctx);");
             keyword = "} else if";
         }
         out.add("            } else {");
@@ -118,23 +124,12 @@ final class StateMachineWriter {
         out.add("        } while (goOn);");
         out.add("    }");
         out.add("");
-        for (int i = 0; i < parts.size(); i++) {
-            writePart(out, parts.get(i), i + 1 < parts.size());
-        }
-        dispatch(out, "String sourceAt(int pc)", "sourceAtFrom", "null");
+        dispatch(out, "String sourceAt(int pc)", "sourceAt", "null");
         out.add("");
-        for (Part part : parts) {
-            out.add("    private static String sourceAtFrom" + part.first() + "(int pc) {");
-            sourceSwitch(out, "        ", part.cases(), false, "null");
-            out.add("    }");
+        dispatch(out, "String sourceOfCallIn(int pc)", "sourceOfCallIn", "sourceAt(pc)");
+        for (int i = 0; i < parts.size(); i++) {
             out.add("");
-        }
-        dispatch(out, "String sourceOfCallIn(int pc)", "sourceOfCallInFrom", "sourceAt(pc)");
-        for (Part part : parts) {
-            out.add("");
-            out.add("    private String sourceOfCallInFrom" + part.first() + "(int pc) {");
-            sourceSwitch(out, "        ", part.cases(), true, "sourceAt(pc)");
-            out.add("    }");
+            writePart(out, parts.get(i), i + 1 < parts.size());
         }
     }
 
@@ -142,33 +137,43 @@ final class StateMachineWriter {
         List<CaseWriter.Case> cases = part.cases();
         CaseWriter.Case last = cases.get(cases.size() - 1);
         out.add("    /** Resumption points " + part.first() + " to " + (part.end() - 1) + ". */");
-        out.add("    @SuppressWarnings(\"fallthrough\") // resumption points fall through into the next one");
-        out.add("    private boolean resumeFrom" + part.first() + "(AgentContext ctx) {");
-        out.add("        while (true) {");
-        out.add("            switch (pc) {");
+        out.add("    private final class From" + part.first() + " {");
+        out.add("");
+        out.add("        @SuppressWarnings(\"fallthrough\") // resumption points fall through into the next one");
+        out.add("        boolean resume(AgentContext ctx) {");
+        out.add("            while (true) {");
+        out.add("                switch (pc) {");
         for (CaseWriter.Case c : cases) {
-            CaseWriter.render(out.buffer(), c, CASE_MARGIN, true);
+            CaseWriter.render(out.buffer(), c, PART_CASE_MARGIN, true);
         }
         if (followed && last.fallsThrough()) {
-            out.add(CASE_MARGIN + "    pc = " + part.end() + "; // on in the next part");
-            out.add(CASE_MARGIN + "    return true;");
+            out.add(PART_CASE_MARGIN + "    pc = " + part.end() + "; // on in the next part");
+            out.add(PART_CASE_MARGIN + "    return true;");
         }
-        out.add("                default:");
-        out.add("                    return true;");
+        out.add("                    default:");
+        out.add("                        return true;");
+        out.add("                }");
         out.add("            }");
         out.add("        }");
-        out.add("    }");
         out.add("");
+        out.add("        String sourceAt(int pc) {");
+        sourceSwitch(out, "            ", cases, false, "null");
+        out.add("        }");
+        out.add("");
+        out.add("        String sourceOfCallIn(int pc) {");
+        sourceSwitch(out, "            ", cases, true, "sourceAt(pc)");
+        out.add("        }");
+        out.add("    }");
     }
 
-    /** An overriding method that calls the part's method of {@code pc}. */
+    /** An overriding method that calls the method of the part that holds {@code pc}. */
     private void dispatch(JavaLines out, String signature, String partMethod, String otherwise) {
         out.add("    @Override");
         out.add("    protected " + signature + " {");
         String keyword = "if";
         for (Part part : parts) {
             out.add("        " + keyword + " (pc < " + part.end() + ") {");
-            out.add("            return " + partMethod + part.first() + "(pc);");
+            out.add("            return from" + part.first() + "." + partMethod + "(pc);");
             keyword = "} else if";
         }
         out.add("        }");

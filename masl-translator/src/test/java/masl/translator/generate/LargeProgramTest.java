@@ -53,7 +53,7 @@ class LargeProgramTest {
         Translation translation = Programs.translate("large.masl", program.toString());
         assertTrue(translation.succeeded(), () -> translation.diagnostics().sorted().toString());
         String code = translation.javaSources().get("masl.generated.large.DefaultProgram");
-        assertTrue(code.contains("private boolean resumeFrom"), "the machine is split");
+        assertTrue(code.contains("private final class From"), "the machine is split");
         assertTrue(code.contains("private int reactionPcFrom1000(Reaction reaction)"), "reactionPc is split");
         assertTrue(translation.javaSources().get("masl.generated.large.LargeMission")
                 .contains("static final class Structure2"), "the static structure is split");
@@ -79,7 +79,7 @@ class LargeProgramTest {
                 """);
         String code = translation.javaSources().get("masl.generated.small.DefaultProgram");
         assertTrue(code.contains("    protected void resume(AgentContext ctx) {\n        while (true) {\n"), code);
-        assertFalse(code.contains("resumeFrom"), code);
+        assertFalse(code.contains("class From"), code);
         assertFalse(translation.javaSources().get("masl.generated.small.SmallMission").contains("Structure2"));
     }
 }
