@@ -1,5 +1,7 @@
 package masl.e2e;
 
+import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.Random;
 import java.util.stream.Collectors;
@@ -30,6 +32,10 @@ final class EdgePrograms {
             "\\377", "\\u0041", "\\u000a", "\\u000d", "\\u0022", "\\u0027", "\\u005c", "\\uuu005c", "\\ud83d", "\\ude00",
             "\\u002a\\u002f", "é", "😀", "*/", "/*", "//", "\u2028", "\\u00e9", "\\u0000", "\\uffff");
 
+    /** The contents of a character literal: most hold one char, a few do not. */
+    private static final List<String> CHARACTERS = List.of("a", "\\n", "\\\\", "\\'", "\"", "\\0", "\\377",
+            "\\u0041", "\\u0027", "\\u005c", "é", "\\uffff", "\\ud83d", "😀", "ab", "\u2028");
+
     private static final List<String> NUMBERS = List.of("2147483647", "2147483648", "-2147483648", "0x7fff_ffff",
             "0xFFFFFFFF", "0x1_0000_0000", "037777777777", "040000000000", "09", "0_7",
             "0b11111111111111111111111111111111", "0b111111111111111111111111111111111", "1e308", "1e309", "1e-323",
@@ -52,14 +58,18 @@ final class EdgePrograms {
         };
     }
 
+    /** Each role a distinct name: a clash between two roles is the program's error, not an edge. */
     private String names() {
-        String type = pick(NAMES);
-        String agent = pick(NAMES);
-        String other = pick(NAMES);
-        String block = pick(NAMES);
-        String local = pick(NAMES);
-        String shared = pick(NAMES);
-        String event = pick(NAMES);
+        List<String> shuffled = new ArrayList<>(NAMES);
+        Collections.shuffle(shuffled, random);
+        String type = shuffled.get(0);
+        String agent = shuffled.get(1);
+        String other = shuffled.get(2);
+        String block = shuffled.get(3);
+        String local = shuffled.get(4);
+        String inner = shuffled.get(5);
+        String shared = shuffled.get(6);
+        String event = shuffled.get(7);
         String declared = random.nextBoolean() ? "import Default.xml as " + type + ";\n" : "type " + type + " use Default.xml;\n";
         return declared + type + " " + agent + ", " + other + " = newAgent(" + type + ");\n"
                 + "asynchronous entry main (true) {\n"
@@ -67,10 +77,10 @@ final class EdgePrograms {
                 + "  local int " + local + " = 1;\n"
                 + "  shared int " + shared + " = 2;\n"
                 + "  scalar entry " + block + " (true) {\n"
-                + "    local int " + local + " = 3;\n"
-                + "    " + local + "++;\n"
-                + "    if (" + local + " > 100) reelect(" + block + ");\n"
-                + "    .logln(" + local + ");\n"
+                + "    local int " + inner + " = 3;\n"
+                + "    " + inner + "++;\n"
+                + "    if (" + inner + " > 100) reelect(" + block + ");\n"
+                + "    .logln(" + inner + " + " + local + ");\n"
                 + "  }\n"
                 + "  " + shared + " += " + local + ";\n"
                 + "  emit(" + event + ");\n"
@@ -79,27 +89,24 @@ final class EdgePrograms {
                 + "}\n";
     }
 
+    /** One string, one character and one comment of random pieces. */
     private String escapes() {
-        StringBuilder body = new StringBuilder();
-        for (int i = 0; i < 4; i++) {
-            body.append("  .logln(\"").append(literal(1 + random.nextInt(6))).append("\"); // ")
-                    .append(literal(3)).append('\n');
-            body.append("  .logln('").append(literal(1)).append("'); /* ").append(literal(3)).append(" */\n");
-        }
-        return header() + "scalar entry main (true) {\n" + body + "}\n";
+        return header() + "scalar entry main (true) {\n"
+                + "  .logln(\"" + literal(1 + random.nextInt(3)) + "\"); // " + literal(3) + "\n"
+                + "  .logln('" + pick(CHARACTERS) + "'); /* " + literal(2) + " */\n"
+                + "}\n";
     }
 
+    /** One number, and a count of loops to leave. */
     private String numbers() {
-        StringBuilder body = new StringBuilder();
-        for (int i = 0; i < 4; i++) {
-            String number = pick(NUMBERS);
-            String type = number.endsWith("f") ? "float" : number.endsWith("L") ? "long"
-                    : number.contains("e") || number.contains(".") ? "double" : "int";
-            body.append("  local ").append(type).append(" n").append(i).append(" = ").append(number).append(";\n");
-        }
-        body.append("  .logln(n0 + \" \" + n1 + \" \" + n2 + \" \" + n3);\n");
-        body.append("  while (true) { exit(").append(pick(List.of("1", "0x1", "01", "0b1", "2", "99999999999"))).append("); }\n");
-        return header() + "scalar entry main (true) {\n" + body + "}\n";
+        String number = pick(NUMBERS);
+        String type = number.endsWith("f") ? "float" : number.endsWith("L") ? "long"
+                : number.contains("e") || number.contains(".") ? "double" : "int";
+        return header() + "scalar entry main (true) {\n"
+                + "  local " + type + " n = " + number + ";\n"
+                + "  .logln(n);\n"
+                + "  while (true) { exit(" + pick(List.of("1", "0x1", "01", "0b1", "1_0", "99999999999")) + "); }\n"
+                + "}\n";
     }
 
     private String sizes() {

@@ -300,14 +300,47 @@ final class CaseWriter {
         }
     }
 
-    /** The characters of a line, about: a jump's number and a return's words are not known yet. */
+    /**
+     * The characters of a line that become bytecode, about: a string or character literal counts as
+     * the 3 bytes that load its constant, a comment as nothing; a jump's number and a return's words
+     * are not known yet.
+     */
     private static int size(Object line) {
         if (line instanceof Jump jump) {
-            return jump.indent().length() + jump.before().length() + jump.after().length() + 5;
+            return jump.indent().length() + size(jump.before()) + size(jump.after()) + 5;
         }
         if (line instanceof Return exit) {
-            return exit.indent().length() + exit.before().length() + exit.after().length() + 13;
+            return exit.indent().length() + size(exit.before()) + size(exit.after()) + 13;
         }
-        return ((String) line).length();
+        return size((String) line);
+    }
+
+    private static int size(String code) {
+        int size = 0;
+        int i = 0;
+        while (i < code.length()) {
+            char c = code.charAt(i);
+            if (c == '/' && i + 1 < code.length() && code.charAt(i + 1) == '/') {
+                break;
+            }
+            if (c == '"' || c == '\'') {
+                i = endOfLiteral(code, i);
+                size += 3;
+            } else {
+                i++;
+                size++;
+            }
+        }
+        return size;
+    }
+
+    /** The index after the literal that starts at {@code start} with its quote. */
+    private static int endOfLiteral(String code, int start) {
+        char quote = code.charAt(start);
+        int i = start + 1;
+        while (i < code.length() && code.charAt(i) != quote) {
+            i += code.charAt(i) == '\\' ? 2 : 1;
+        }
+        return i + 1;
     }
 }
