@@ -18,7 +18,8 @@ final class CommandLine {
             "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--platform", "--main-host",
                     "--main-port", "--sim", "--out", "--place", "--port"),
             "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout"),
-            "timeline", Set.of("-o"));
+            "timeline", Set.of("-o"),
+            "lsp", Set.of("--agent-path"));
     private static final Set<String> FLAGS = Set.of("--threads");
 
     final String command;
