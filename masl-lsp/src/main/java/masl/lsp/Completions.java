@@ -143,7 +143,7 @@ final class Completions {
         for (ProgramIndex.Block block = cursor.scope; block != null; block = block.parent) {
             add(block.name, CompletionItemKind.Module, Hovers.blockHeadline(block), "test: " + block.test);
         }
-        if (cursor.scope != null && cursor.index.root() != null) {
+        if (cursor.scope != null && !cursor.index.root().name.equals(ProgramIndex.MAIN)) {
             add(ProgramIndex.MAIN, CompletionItemKind.Module, "the top-level block", "break(main) ends the agent's mission");
         }
     }
@@ -151,7 +151,8 @@ final class Completions {
     private void events() {
         for (ProgramIndex.Block block = cursor.scope; block != null; block = block.parent) {
             block.declarations.stream().filter(declared -> declared.kind() == ProgramIndex.Kind.EVENT)
-                    .forEach(event -> add(event.name(), CompletionItemKind.Event, event.description(), null));
+                    .forEach(event -> add(event.name(), CompletionItemKind.Event,
+                            event.description() + " " + event.name(), null));
         }
         Vocabulary.SYSTEM_EVENTS.forEach(event -> add(event.name(), CompletionItemKind.Event, event.signature(),
                 event.description()));
@@ -171,7 +172,8 @@ final class Completions {
                     case EVENT -> CompletionItemKind.Event;
                     case LABEL -> CompletionItemKind.Reference;
                 };
-                add(declared.name(), kind, declared.description(), "declared in block " + block.name);
+                add(declared.name(), kind, declared.description() + " " + declared.name(),
+                        "declared in block " + block.name);
             }
         }
         cursor.index.agents().forEach(agent -> add(agent.name(), CompletionItemKind.Variable,

@@ -46,19 +46,19 @@ final class Cursor {
     }
 
     /**
-     * The position in {@link #tokens} of the token under the cursor, or -1: the one the cursor is in, else a
-     * name that ends right before the cursor (the cursor after the last letter of a word).
+     * The position in {@link #tokens} of the token under the cursor, or -1: the one the cursor is in; at the
+     * boundary between two tokens, a name rather than punctuation ({@code work|)} is on {@code work}).
      */
     int tokenAt() {
         int before = lastBefore(point);
         int next = before + 1;
-        if (next < tokens.size() && tokens.get(next).getStartIndex() <= point) {
+        boolean nextHere = next < tokens.size() && tokens.get(next).getStartIndex() <= point;
+        boolean nameEndsHere = before >= 0 && tokens.get(before).getStopIndex() == point - 1
+                && Receiver.isName(tokens.get(before));
+        if (nextHere && (tokens.get(next).getStartIndex() < point || Receiver.isName(tokens.get(next)) || !nameEndsHere)) {
             return next;
         }
-        if (before >= 0 && tokens.get(before).getStopIndex() == point - 1 && Receiver.isName(tokens.get(before))) {
-            return before;
-        }
-        return -1;
+        return nameEndsHere ? before : -1;
     }
 
     /** Whether the cursor is inside a comment or a string literal, where nothing is completed. */

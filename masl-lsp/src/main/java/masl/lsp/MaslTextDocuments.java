@@ -35,8 +35,8 @@ import org.eclipse.lsp4j.services.TextDocumentService;
  */
 final class MaslTextDocuments implements TextDocumentService {
 
-    /** A version and the index built from it. */
-    private record Indexed(int version, ProgramIndex index) { }
+    /** A document and the index built from it. */
+    private record Indexed(TextDocument document, ProgramIndex index) { }
 
     private final AgentPath agentPath;
     private final Supplier<LanguageClient> client;
@@ -143,8 +143,8 @@ final class MaslTextDocuments implements TextDocumentService {
 
     private ProgramIndex index(TextDocument document) {
         Indexed indexed = indexes.get(document.uri());
-        if (indexed == null || indexed.version() != document.version()) {
-            indexed = new Indexed(document.version(), ProgramIndex.of(document.source(), agentPath));
+        if (indexed == null || indexed.document() != document) {
+            indexed = new Indexed(document, ProgramIndex.of(document.source(), agentPath));
             indexes.put(document.uri(), indexed);
         }
         return indexed.index();
