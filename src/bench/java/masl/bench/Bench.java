@@ -7,11 +7,11 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import masl.bench.jade.AclPingPong;
+import masl.bench.jade.BridgePingPong;
 import masl.jade.JadeException;
 import masl.jade.JadeOptions;
 import masl.jade.JadePlatform;
-import masl.jade.bench.AclPingPong;
-import masl.jade.bench.BridgePingPong;
 
 /**
  * {@code gradle bench}: runs MASL and its baselines side by side in one JVM and prints tables of

@@ -43,7 +43,9 @@ class TraceSourcePositionTest {
                         record::toString);
             }
         }
-        assertEquals(List.of("4: asynchronous entry main (true)"), sources(records, "entered", "main"));
+        // main has one wave (§4): every agent is held at its arrival until all have tested it
+        assertEquals(List.of("4: asynchronous entry main (true)"), sources(records, "waiting-in", "main"));
+        assertEquals(List.of("4: asynchronous entry main (true)"), sources(records, "released", "main"));
         assertEquals(List.of("12: asynchronous entry work (.getProxyID() != 0)"), sources(records, "entered", "work"));
         assertEquals(List.of("10: emitWithMessage(go, \"now\");"), sources(records, "event-emitted", "main"));
         // The leader reacts at the boundary of its emit; the workers are woken in their busy-wait.

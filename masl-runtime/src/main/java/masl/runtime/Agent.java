@@ -122,8 +122,6 @@ final class Agent implements AgentContext, AgentTask {
     final List<Membership> memberships = new ArrayList<>();
     List<Wave> activeIn = new ArrayList<>();
     List<SynchronisationBarrier> participatesIn = new ArrayList<>();
-    /** The synchronous block the agent left last, until its next step boundary or arrival. */
-    EntryDefinition lastLeftSynchronous;
     /** Its program died: it counts in no wave, not even the mission's (see {@link EntryCoordinator#leaveAll}). */
     boolean departed;
 
@@ -402,7 +400,6 @@ final class Agent implements AgentContext, AgentTask {
         requireOutsideReaction("a step boundary");
         progress++;
         boolean synchronous = isInnermostSynchronous();
-        lastLeftSynchronous = null;
         if (startReactions(synchronous)) {
             return false;
         }
@@ -419,21 +416,36 @@ final class Agent implements AgentContext, AgentTask {
     }
 
     @Override
-    public boolean endOfSequence(ESequence sequence) {
+    public boolean endOfChild(EntryDefinition block) {
         atCallBefore();
-        EntryDefinition innermost = memberships.isEmpty() ? null : innermost().entry.definition();
-        if (innermost != sequence.parent()) {
-            throw new IllegalStateException(describe() + " ends " + sequence + " inside " + innermost);
-        }
-        requireOutsideReaction("the end of an e-sequence");
+        requireAtLevelOf(block.parent(), block);
+        requireOutsideReaction("the end of " + block.name());
         progress++;
-        boolean ranSynchronousBlock = lastLeftSynchronous != null && lastLeftSynchronous.sequence() == sequence;
-        boolean barrier = isInnermostSynchronous() && !ranSynchronousBlock;
-        lastLeftSynchronous = null;
-        if (startReactions(barrier)) {
+        boolean synchronous = isInnermostSynchronous();
+        if (startReactions(synchronous)) {
             return false;
         }
-        return completeBoundary(barrier);
+        return completeBoundary(synchronous);
+    }
+
+    @Override
+    public boolean endOfSequence(ESequence sequence) {
+        atCallBefore();
+        requireAtLevelOf(sequence.parent(), sequence);
+        requireOutsideReaction("the end of an e-sequence");
+        progress++;
+        if (startReactions(false)) {
+            return false;
+        }
+        return completeBoundary(false);
+    }
+
+    /** The agent's innermost block must be {@code parent} ({@code null}: no block) when it ends {@code what} in it. */
+    private void requireAtLevelOf(EntryDefinition parent, Object what) {
+        EntryDefinition innermost = memberships.isEmpty() ? null : innermost().entry.definition();
+        if (innermost != parent) {
+            throw new IllegalStateException(describe() + " ends " + what + " inside " + innermost);
+        }
     }
 
     @Override

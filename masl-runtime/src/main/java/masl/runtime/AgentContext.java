@@ -67,11 +67,21 @@ public interface AgentContext {
     boolean leave(EntryDefinition block);
 
     /**
-     * The end of an e-sequence in the body of a block: for an agent whose innermost block is
-     * synchronous, the barrier at the end of the e-sequence (§6.4), unless its last action in the
-     * e-sequence was to leave a synchronous block of it (whose instructions were barrier points
-     * already); otherwise a step boundary without barrier. Before the call set {@code pc} to the
-     * instruction after the e-sequence.
+     * The end of an asynchronous or scalar child of a synchronous block (§6.4): one instruction for
+     * every active member of the parent, whether it ran the child, was not the one elected to run a
+     * scalar child, skipped it, or left it by {@code break} or a reaction. The agent reaches the
+     * parent's synchronisation barrier here, before anyone tests the next block of the e-sequence.
+     * The translator calls it after each such child, and only there; before the call set {@code pc}
+     * to the instruction after the block.
+     */
+    boolean endOfChild(EntryDefinition block);
+
+    /**
+     * The end of an e-sequence in the body of a block, or of the top-level one: a step boundary
+     * without barrier (events and invocations). The barrier points of a synchronous parent are the
+     * instructions of its synchronous children and the end of each asynchronous or scalar child
+     * ({@link #endOfChild}); a member that skips a synchronous child does not wait for it (§6.4).
+     * Before the call set {@code pc} to the instruction after the e-sequence.
      */
     boolean endOfSequence(ESequence sequence);
 

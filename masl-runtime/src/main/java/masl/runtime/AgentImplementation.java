@@ -36,4 +36,14 @@ public abstract class AgentImplementation {
         }
         return bound;
     }
+
+    /**
+     * The proxy id of the agent {@code agent} runs for: generated type tests on an agent of any type
+     * (MASL §4) ask it, whatever class the type's root names.
+     *
+     * @throws IllegalStateException if {@code agent} is not bound to an agent yet
+     */
+    public static int proxyIdOf(AgentImplementation agent) {
+        return agent.services().proxyId();
+    }
 }

@@ -2,14 +2,16 @@ package masl.runtime;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 
 /**
  * The state of one e-block in one mission, and its entry members (MASL §6.7).
  *
  * <p>Members are counted as §6.4 says: a member of a child is a member of this block too, and
- * counts as active unless it is held by an entry or exit barrier (of this block or of a
- * descendant). Every member method reads or changes the state atomically with respect to all
+ * counts as active here unless this block's own entry or exit barrier holds it (one held by a
+ * descendant's barrier still has an instruction of this block to run: the descendant). Every member method reads or changes the state atomically with respect to all
  * membership changes of the mission; a value it returns may be stale by the time it is used, as
  * for any concurrent counter.
  *
@@ -44,6 +46,16 @@ public final class Entry {
         }
     }
 
+    /** The top-level block before its one wave (§4): whatever its mode, it holds arrivals until every agent has tested it. */
+    boolean isTopLevelBeforeItsWave() {
+        return parent == null && wavesStarted == 0;
+    }
+
+    /** The top-level block after its one wave ended (§4): it is never entered again. */
+    boolean isTopLevelAfterItsWave() {
+        return parent == null && wavesStarted > 0 && currentWave == null;
+    }
+
     public EntryDefinition definition() {
         return definition;
     }
@@ -70,9 +82,9 @@ public final class Entry {
         });
     }
 
-    /** {@code e.getActiveCount()}: members held by no entry or exit barrier. */
+    /** {@code e.getActiveCount()}: members held by neither this block's entry barrier nor its exit barrier. */
     public int getActiveCount() {
-        return coordinator.query(() -> currentWave == null ? 0 : currentWave.active);
+        return coordinator.query(() -> currentWave == null ? 0 : currentWave.members.size() - currentWave.waitingOut.size());
     }
 
     public List<AgentImplementation> getActiveList() {
@@ -148,8 +160,9 @@ public final class Entry {
     private List<Agent> waveMembers(boolean activeOnly) {
         List<Agent> members = new ArrayList<>();
         if (currentWave != null) {
+            Set<Agent> waitingOut = activeOnly ? new HashSet<>(currentWave.waitingOut) : Set.of();
             for (Agent member : currentWave.members) {
-                if (!activeOnly || member.activeIn.contains(currentWave)) {
+                if (!waitingOut.contains(member)) {
                     members.add(member);
                 }
             }

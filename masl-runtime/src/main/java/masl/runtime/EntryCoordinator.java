@@ -87,15 +87,17 @@ final class EntryCoordinator {
             if (test || sequence.endsWith(entry.definition())) {
                 parentWave.markReached(sequence, agent);
             }
-            agent.lastLeftSynchronous = null;
             Arrival arrival;
-            if (!test) {
+            if (!test || entry.isTopLevelAfterItsWave()) {
                 arrival = Arrival.SKIPPED;
             } else if (entry.mode() == Mode.SYNCHRONOUS) {
                 holdAtEntry(agent, entry);
                 arrival = Arrival.WAITING;
             } else if (entry.mode() == Mode.SCALAR && !parentWave.electScalar(entry)) {
                 arrival = Arrival.SKIPPED;
+            } else if (entry.isTopLevelBeforeItsWave()) {
+                holdAtEntry(agent, entry);
+                arrival = Arrival.WAITING;
             } else {
                 join(agent, entry);
                 arrival = Arrival.ENTERED;
@@ -295,7 +297,8 @@ final class EntryCoordinator {
         entry.memberJoined(agent);
         trace.record(new TraceEvent.WaitingIn(clock.getAsLong(), agent.id(), entry.name(), agent.source()));
         reconcile(agent);
-        if (entry.policy == LockPolicy.FREE) {
+        if (entry.policy == LockPolicy.FREE || entry.mode() != Mode.SYNCHRONOUS) {
+            // a free entry barrier, or the top-level block before its one wave (§4)
             awaitingFirstRelease.add(entry);
         }
         changed = true;
@@ -305,7 +308,9 @@ final class EntryCoordinator {
         if (entry.waitingIn.isEmpty()) {
             return;
         }
-        entry.policy = LockPolicy.LOCKED;
+        if (entry.mode() == Mode.SYNCHRONOUS) {
+            entry.policy = LockPolicy.LOCKED;
+        }
         awaitingFirstRelease.remove(entry);
         for (int released = 0; released < n && !entry.waitingIn.isEmpty(); released++) {
             admit(entry.waitingIn.poll(), entry);
@@ -333,9 +338,6 @@ final class EntryCoordinator {
         Membership membership = agent.memberships.remove(agent.memberships.size() - 1);
         Wave wave = membership.wave;
         wave.members.remove(agent);
-        if (membership.entry.mode() == Mode.SYNCHRONOUS) {
-            agent.lastLeftSynchronous = membership.entry.definition();
-        }
         trace.record(new TraceEvent.Left(clock.getAsLong(), agent.id(), membership.entry.name(), cause,
                 agent.source()));
         reconcile(agent);
@@ -446,7 +448,7 @@ final class EntryCoordinator {
     /** Opens one free entry barrier whose condition holds (§6.3); false if none does. */
     private boolean openFirstWave() {
         for (Entry entry : awaitingFirstRelease) {
-            if (entry.policy == LockPolicy.FREE && !entry.waitingIn.isEmpty() && sequenceReachedByAll(entry)) {
+            if (!entry.waitingIn.isEmpty() && sequenceReachedByAll(entry)) {
                 releaseWaiting(entry, Integer.MAX_VALUE);
                 return true;
             }

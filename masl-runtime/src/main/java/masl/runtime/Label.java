@@ -12,6 +12,10 @@ import java.util.function.Consumer;
  * result (if the registration asked for it) <em>before</em> it is counted, so a program that saw
  * {@link #isFinished()} true reads every stored result. Completions advance the mission's change
  * epoch, so a busy-wait on {@code isFinished()} parks instead of spinning and wakes at the last one.
+ *
+ * <p>{@link #register} gives back a future that completes only once the completion is stored and
+ * counted: a synchronous call awaits that one, so the instruction that made it ends with the
+ * call done, counted and its result stored (§10), whichever thread served it.
  */
 public final class Label {
 
@@ -26,8 +30,9 @@ public final class Label {
     }
 
     /**
-     * {@code l.a.m(args)} (§10): registers {@code invocation}; an already completed one (a
-     * synchronous primitive) counts as done at once.
+     * {@code l.a.m(args)} (§10): registers {@code invocation}; an already completed one (an
+     * internal synchronous primitive) counts as done at once. The future given back completes
+     * with the invocation's value once the label has counted it.
      */
     public <T> CompletableFuture<T> register(CompletableFuture<T> invocation) {
         return register(invocation, value -> { });
@@ -36,7 +41,9 @@ public final class Label {
     /**
      * {@code l.x = a.m(args)}, {@code l.a.x = …}: registers {@code invocation}, and when it completes
      * (unless the label was freed meanwhile) passes its value to {@code store}, which assigns the
-     * variable or attribute, on the completing thread.
+     * variable or attribute, on the completing thread. The future given back completes with the
+     * invocation's value after the store and the count, so awaiting it (a synchronous primitive)
+     * never sees the call done but not yet counted.
      */
     public <T> CompletableFuture<T> register(CompletableFuture<T> invocation, Consumer<? super T> store) {
         long registeredIn;
@@ -44,8 +51,10 @@ public final class Label {
             pending++;
             registeredIn = generation;
         }
-        invocation.thenAccept(value -> completed(registeredIn, () -> store.accept(value)));
-        return invocation;
+        return invocation.thenApply(value -> {
+            completed(registeredIn, () -> store.accept(value));
+            return value;
+        });
     }
 
     private void completed(long registeredIn, Runnable store) {
@@ -62,6 +71,11 @@ public final class Label {
     /** {@code l.isFinished()} / {@code isFinished(l)}: every registered invocation has completed. Zero duration. */
     public synchronized boolean isFinished() {
         return pending == 0;
+    }
+
+    /** {@code l.getRemainingInvocations()}: how many registered invocations have not completed yet. Zero duration. */
+    public synchronized int getRemainingInvocations() {
+        return pending;
     }
 
     /** {@code l.free()}: forgets the registered invocations; their completions are ignored. Zero duration. */

@@ -23,8 +23,10 @@ final class Wave {
     /** Members in arrival order: active ones, waiting-out ones, those held inside children. */
     final Set<Agent> members = new LinkedHashSet<>();
     /**
-     * Members not held by any entry or exit barrier: the active count of §6.4/§6.7. Changed only
-     * through {@link #activate} and {@link #deactivate}, which keep the reached counts in step.
+     * Members held by no entry or exit barrier anywhere in their chain of blocks: the members an
+     * exit barrier and a free entry barrier wait for (§6.3). (The query {@code getActiveCount()}
+     * counts more, see {@link Entry#getActiveCount}.) Changed only through {@link #activate} and
+     * {@link #deactivate}, which keep the reached counts in step.
      */
     int active;
     /** Members held by the exit barrier, in arrival order (synchronous blocks only). */

@@ -2,6 +2,7 @@ package masl.runtime;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
@@ -13,6 +14,7 @@ import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
 import masl.runtime.trace.Trace;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -116,5 +118,39 @@ class LabelTest {
             assertEquals(List.of("launched, finished false", "two measured, finished false", "finished: 10 20 30"),
                     seen);
         }
+    }
+
+    /**
+     * A synchronous call through a label is awaited on the future {@code register} gives back
+     * (contract §8.3): whoever wakes when that future completes, as {@code ctx.await} does, sees the
+     * call counted and its result stored. The raw invocation's own dependants run before the label's
+     * (a completing future runs the latest registered first), which is how a caller could go on
+     * with the call done but still pending.
+     */
+    @Test
+    void theFutureARegistrationGivesBackCompletesAfterTheCountAndTheStore() {
+        Label l = new Label(new ChangeEpoch());
+        CompletableFuture<Integer> call = new CompletableFuture<>();
+        int[] stored = {0};
+        List<String> seenOnWaking = new ArrayList<>();
+        CompletableFuture<Integer> awaited = l.register(call, v -> stored[0] = v);
+        awaited.whenComplete((v, failure) -> seenOnWaking.add(
+                "remaining " + l.getRemainingInvocations() + ", finished " + l.isFinished() + ", stored " + stored[0]));
+        call.complete(42);
+        assertEquals(List.of("remaining 0, finished true, stored 42"), seenOnWaking);
+        assertEquals(42, awaited.join());
+    }
+
+    @Test
+    void aCompletionAfterFreeIsIgnoredButStillEndsTheAwait() {
+        Label l = new Label(new ChangeEpoch());
+        CompletableFuture<Integer> call = new CompletableFuture<>();
+        int[] stored = {0};
+        CompletableFuture<Integer> awaited = l.register(call, v -> stored[0] = v);
+        l.register(new CompletableFuture<Integer>());
+        assertEquals(2, l.getRemainingInvocations());
+        l.free();
+        call.complete(7);
+        assertEquals(List.of(0, 7, 0), List.of(l.getRemainingInvocations(), awaited.join(), stored[0]));
     }
 }

@@ -65,10 +65,10 @@ class SharedVariableAndScalarTest {
                         continue;
                     case 5: i++; pc = 4; if (!ctx.loopIteration()) return; continue;
                     case 6: if (!leave(ctx, COUNT, 7)) return; continue;
-                    case 7: if (!endOf(ctx, COUNT.sequence(), 8)) return; continue;
+                    case 7: if (!endOfChild(ctx, COUNT, 8)) return; continue;
                     case 8: if (!arrive(ctx, REPORT, true, 9, 10)) return; continue;
                     case 9: reported.add(ctx.shared(N).get()); if (!leave(ctx, REPORT, 10)) return; continue;
-                    case 10: if (!endOf(ctx, REPORT.sequence(), 11)) return; continue;
+                    case 10: if (!endOfChild(ctx, REPORT, 11)) return; continue;
                     case 11: if (!leave(ctx, MAIN, 12)) return; continue;
                     case 12: if (!endOf(ctx, MAIN.sequence(), 13)) return; continue;
                     case 13: ctx.finish(); return;
@@ -136,7 +136,7 @@ class SharedVariableAndScalarTest {
                     case 7: runs.incrementAndGet(); if (!leave(ctx, ONCE, 8)) return; continue;
                     case 8: if (!endOf(ctx, ONCE.sequence(), 9)) return; continue;
                     case 9: if (!leave(ctx, P, 10)) return; continue;
-                    case 10: if (!endOf(ctx, P.sequence(), 11)) return; continue;
+                    case 10: if (!endOfChild(ctx, P, 11)) return; continue;
                     case 11: if (!leave(ctx, MAIN, 12)) return; continue;
                     case 12: if (!endOf(ctx, MAIN.sequence(), 13)) return; continue;
                     case 13: ctx.finish(); return;

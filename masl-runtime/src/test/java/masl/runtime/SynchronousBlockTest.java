@@ -95,10 +95,10 @@ class SynchronousBlockTest {
                         assertEquals(5 + k, phase.get("m" + k), "agent " + agent + " m" + k);
                     }
                 } else {
-                    // Skippers wait once at the end of the e-sequence, in phase 0, then keep pace.
+                    // Skippers do not wait for a synchronous child (§6.4): m0 pairs with c0.
                     assertEquals(10, phase.size());
                     for (int k = 0; k < 10; k++) {
-                        assertEquals(1 + k, phase.get("m" + k), "agent " + agent + " m" + k);
+                        assertEquals(k, phase.get("m" + k), "agent " + agent + " m" + k);
                     }
                 }
             }
@@ -114,7 +114,7 @@ class SynchronousBlockTest {
             Map<Integer, Map<String, Integer>> phases = log.phases();
             for (int agent = 0; agent < 6; agent++) {
                 Map<String, Integer> phase = phases.get(agent);
-                int firstMainPhase = agent % 2 == 0 ? 3 : 1;
+                int firstMainPhase = agent % 2 == 0 ? 3 : 0;
                 for (int k = 0; agent % 2 == 0 && k < 3; k++) {
                     assertEquals(k, phase.get("c" + k), "agent " + agent + " c" + k);
                 }
@@ -154,7 +154,7 @@ class SynchronousBlockTest {
                     case 0: if (!arrive(ctx, MAIN, true, 1, 10)) return; continue;
                     case 1: if (!arrive(ctx, SETUP, true, 2, 3)) return; continue;
                     case 2: ctx.entry(CHILD).lock(); if (!leave(ctx, SETUP, 3)) return; continue;
-                    case 3: if (!endOf(ctx, SETUP.sequence(), 4)) return; continue;
+                    case 3: if (!endOfChild(ctx, SETUP, 4)) return; continue;
                     case 4: if (!arrive(ctx, CHILD, id % 2 == 0, 5, 7)) return; continue;
                     case 5: self.nop(); c++; if (!step(ctx, c < 3 ? 5 : 6)) return; continue;
                     case 6: if (!leave(ctx, CHILD, 7)) return; continue;
@@ -194,8 +194,8 @@ class SynchronousBlockTest {
                     tripsWhileHeld.add(trip);
                 }
             }
-            // The odd agents' end of e-sequence and m0 … m3 trip without the three held agents.
-            assertEquals(5, tripsWhileHeld.size(), events::toString);
+            // The odd agents' m0 … m3 trip without the three held agents (skipping child takes no step).
+            assertEquals(4, tripsWhileHeld.size(), events::toString);
             tripsWhileHeld.forEach(trip -> assertEquals(3, trip.agents(), events::toString));
         }
     }
@@ -468,8 +468,10 @@ class SynchronousBlockTest {
             ConcurrentLinkedQueue<Integer> seen = new ConcurrentLinkedQueue<>();
             Missions.run(driver, Gate.MAIN, 7, self -> new Gate(self, false, waitingAfterRelease, seen), trace);
             assertEquals(4, waitingAfterRelease.get());
-            List<Integer> arrivals = trace.events(TraceEvent.WaitingIn.class).stream().map(TraceEvent.WaitingIn::agent).toList();
-            List<Integer> released = trace.events(TraceEvent.Released.class).stream().map(TraceEvent.Released::agent).toList();
+            List<Integer> arrivals = trace.events(TraceEvent.WaitingIn.class).stream()
+                    .filter(w -> w.block().equals("gate")).map(TraceEvent.WaitingIn::agent).toList();
+            List<Integer> released = trace.events(TraceEvent.Released.class).stream()
+                    .filter(r -> r.block().equals("gate")).map(TraceEvent.Released::agent).toList();
             assertEquals(6, released.size());
             assertEquals(arrivals.subList(0, 2), released.subList(0, 2));
         }
@@ -489,7 +491,7 @@ class SynchronousBlockTest {
                     waves.add("start " + w.wave());
                 } else if (event instanceof TraceEvent.WaveEnded w && w.block().equals("gate")) {
                     waves.add("end " + w.wave());
-                } else if (event instanceof TraceEvent.Released r) {
+                } else if (event instanceof TraceEvent.Released r && r.block().equals("gate")) {
                     waves.add("released into " + r.wave());
                 }
             }

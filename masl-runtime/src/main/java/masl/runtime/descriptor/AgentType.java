@@ -14,8 +14,9 @@ import java.util.function.Function;
  * every rule of agent-types.md checked. Immutable.
  *
  * <p>Members: the supertype's members are inherited; a member the type declares with the name of an
- * inherited one of the same kind redefines it (it must keep its member id). Visible members keep the
- * supertype's order, redefinitions in place, new members after them in declaration order.
+ * inherited one of the same kind redefines it, keeping the inherited member id or taking its own (ids
+ * belong to the descriptor that declares them). Visible members keep the supertype's order,
+ * redefinitions in place, new members after them in declaration order.
  */
 public final class AgentType {
 
@@ -64,8 +65,9 @@ public final class AgentType {
     }
 
     /**
-     * The supertype's implementation class: {@code super_full_class_name}, or the implicit root
-     * ({@code masl.agents.Default} by default) when the descriptor names none; null only for a root.
+     * The supertype's implementation class: {@code super_full_class_name}, or the implicit root's
+     * (the {@code Default.xml} found first, see {@link DescriptorLoader}) when the descriptor names
+     * none; null only for a root.
      */
     public String superFullClassName() {
         return superFullClassName;

@@ -15,9 +15,13 @@ import java.util.function.Supplier;
  * resolves their supertypes, along an {@link AgentPath}. Implementation classes are loaded through
  * {@link AgentPath#classLoader} with the path's resource loader as parent.
  *
- * <p>Every type that names no {@code super_full_class_name} extends the <em>root type</em>
- * ({@link #ROOT_TYPE}, {@code masl.agents.Default}) unless it is the root type itself; its descriptor is
- * found like any supertype. A loader built with a null root type has no implicit supertype.
+ * <p>Every type that names no {@code super_full_class_name} extends the <em>root type</em> unless it is
+ * a root itself: a descriptor named {@link #ROOT_FILE} or declaring the root class ({@link #ROOT_TYPE},
+ * {@code masl.agents.Default}). The root type is the {@code Default.xml} found first from the subtype:
+ * in its folder, then along the agent path, then among the shipped descriptors; so a user's own
+ * {@code Default.xml}, whatever class it names, is the root of the types next to it (components.md,
+ * "Agent path"). Only when no {@code Default.xml} is found is the root class looked up by name like any
+ * supertype. A loader built with a null root type has no implicit supertype.
  *
  * <p>A supertype is found by class name, first match wins (a candidate's {@code full_class_name}
  * must match): in the subtype's folder as {@code SimpleName.xml} or {@code package/path/SimpleName.xml},
@@ -35,6 +39,9 @@ public final class DescriptorLoader {
 
     /** The implementation class of the type every other type extends. */
     public static final String ROOT_TYPE = "masl.agents.Default";
+
+    /** The file name of a root type's descriptor. */
+    public static final String ROOT_FILE = "Default.xml";
 
     /** Resources of no class loader: for searching one folder alone. */
     private static final ClassLoader EMPTY_RESOURCES = new ClassLoader(null) {
@@ -102,10 +109,12 @@ public final class DescriptorLoader {
         }
         loading.add(declaration.fullClassName());
         try {
-            String supertypeName = supertypeName(declaration);
-            AgentType supertype = supertypeName == null ? null
-                    : resolveSupertype(supertypeName, declaration, source, problems);
-            if (supertypeName != null && supertype == null) {
+            boolean root = declaration.superFullClassName() == null && isRoot(declaration, source);
+            AgentType supertype = root ? null
+                    : declaration.superFullClassName() != null
+                            ? resolveSupertype(declaration.superFullClassName(), declaration, source, problems)
+                            : resolveRoot(declaration, source, problems);
+            if (!root && supertype == null) {
                 problems.throwIfAny();
             }
             AgentType type = TypeAssembler.assemble(declaration, supertype, source, problems);
@@ -140,42 +149,79 @@ public final class DescriptorLoader {
         return load(found.get());
     }
 
-    private String supertypeName(Declaration declaration) {
-        if (declaration.superFullClassName() != null) {
-            return declaration.superFullClassName();
+    /** A descriptor naming no supertype is a root when there is no implicit root, or it is named or declares one. */
+    private boolean isRoot(Declaration declaration, DescriptorSource source) {
+        return rootType == null || rootType.equals(declaration.fullClassName()) || source.fileName().equals(ROOT_FILE);
+    }
+
+    /** The implicit supertype: the {@code Default.xml} found first from {@code source}, else the root class. */
+    private AgentType resolveRoot(Declaration declaration, DescriptorSource source, Problems problems) {
+        Optional<DescriptorSource> named;
+        try {
+            named = agentPath.find(ROOT_FILE, folderOf(source));
+        } catch (UncheckedIOException e) {
+            problems.at(0, 0, "cannot search for " + ROOT_FILE + ": " + e.getMessage());
+            return null;
         }
-        return rootType == null || rootType.equals(declaration.fullClassName()) ? null : rootType;
+        if (named.isEmpty()) {
+            return resolveSupertype(rootType, declaration, source, problems);
+        }
+        Optional<String> rootClass = DescriptorReader.peekFullClassName(named.get());
+        if (rootClass.isPresent() && isCycle(rootClass.get(), declaration, problems)) {
+            return null;
+        }
+        return loadSupertype(named.get(), declaration, problems);
     }
 
     /** The loaded supertype, or null after adding to {@code problems} why there is none. */
     private AgentType resolveSupertype(String name, Declaration declaration, DescriptorSource source,
             Problems problems) {
-        XmlElement agent = declaration.agent();
-        String role = declaration.superFullClassName() != null ? "supertype" : "implicit supertype";
-        int cycleStart = loading.indexOf(name);
-        if (cycleStart >= 0) {
-            List<String> cycle = new ArrayList<>(loading.subList(cycleStart, loading.size()));
-            cycle.add(name);
-            problems.at(agent, "cycle in supertypes: " + String.join(" -> ", cycle));
+        if (isCycle(name, declaration, problems)) {
             return null;
         }
         AgentType cached = byClassName.get(name);
         if (cached != null) {
             return cached;
         }
-        Optional<DescriptorSource> found = locate(name, source.file().map(Path::getParent).orElse(null), problems);
+        Optional<DescriptorSource> found = locate(name, folderOf(source), problems);
         if (found.isEmpty()) {
-            problems.at(agent, role + " '" + name + "' not found: no descriptor with full_class_name=\"" + name
-                    + "\" next to this file, on the agent path or among the shipped descriptors");
+            problems.at(declaration.agent(), role(declaration) + " '" + name + "' not found: no descriptor with "
+                    + "full_class_name=\"" + name + "\" next to this file, on the agent path or among the shipped "
+                    + "descriptors");
             return null;
         }
+        return loadSupertype(found.get(), declaration, problems);
+    }
+
+    private boolean isCycle(String supertypeName, Declaration declaration, Problems problems) {
+        int cycleStart = loading.indexOf(supertypeName);
+        if (cycleStart < 0) {
+            return false;
+        }
+        List<String> cycle = new ArrayList<>(loading.subList(cycleStart, loading.size()));
+        cycle.add(supertypeName);
+        problems.at(declaration.agent(), "cycle in supertypes: " + String.join(" -> ", cycle));
+        return true;
+    }
+
+    private AgentType loadSupertype(DescriptorSource found, Declaration declaration, Problems problems) {
         try {
-            return load(found.get());
+            return load(found);
         } catch (DescriptorException e) {
-            problems.at(agent, role + " '" + name + "' (" + found.get().displayName() + ") has errors");
+            String name = DescriptorReader.peekFullClassName(found).orElse(found.fileName());
+            problems.at(declaration.agent(), role(declaration) + " '" + name + "' (" + found.displayName()
+                    + ") has errors");
             problems.addAll(e.problems());
             return null;
         }
+    }
+
+    private static String role(Declaration declaration) {
+        return declaration.superFullClassName() != null ? "supertype" : "implicit supertype";
+    }
+
+    private static Path folderOf(DescriptorSource source) {
+        return source.file().map(Path::getParent).orElse(null);
     }
 
     private Optional<DescriptorSource> locate(String className, Path nearFolder, Problems problems) {

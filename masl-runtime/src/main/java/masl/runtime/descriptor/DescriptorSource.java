@@ -32,6 +32,12 @@ public record DescriptorSource(URI uri, String displayName) {
         return "file".equals(uri.getScheme()) ? Optional.of(Path.of(uri)) : Optional.empty();
     }
 
+    /** The descriptor's file name, without folders: {@code Khepera.xml}. */
+    public String fileName() {
+        String location = uri.toString();
+        return location.substring(location.lastIndexOf('/') + 1);
+    }
+
     /** Opens the descriptor for reading; the caller closes the stream. */
     public InputStream open() throws IOException {
         URLConnection connection = uri.toURL().openConnection();

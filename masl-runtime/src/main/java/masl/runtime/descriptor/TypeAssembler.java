@@ -5,26 +5,35 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
-import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 /**
  * Puts a {@link Declaration} together with its resolved supertype into an {@link AgentType}, checking
- * the rules that involve inherited members: redefinitions (same kind, same member id), ids not taken by
- * an inherited member, {@code <Member>} ids, countermeasures. Builds the permeability states by the
+ * the rules that involve inherited members: redefinitions (same kind), member ids unique in the type
+ * and its supertypes, {@code <Member>} ids, countermeasures. Builds the permeability states by the
  * inheritance rule of {@link AgentType#states()}.
+ *
+ * <p>Member ids belong to the descriptor that declares them: a redefinition may take a new id, a
+ * state names the ids of its own descriptor's members, and an inherited state's rights pass to this
+ * type's members by name, whatever id a redefinition gave them.
  */
 final class TypeAssembler {
 
     private final Declaration declaration;
     private final AgentType supertype;
     private final Problems problems;
+    /** This type's members, inherited then new, by name: their member ids here. */
+    private final Map<String, String> idByName;
 
     private TypeAssembler(Declaration declaration, AgentType supertype, Problems problems) {
         this.declaration = declaration;
         this.supertype = supertype;
         this.problems = problems;
+        this.idByName = new LinkedHashMap<>();
+        if (supertype != null) {
+            idByName.putAll(memberIds(supertype.primitives(), supertype.attributes()));
+        }
+        idByName.putAll(memberIds(declaration.primitives(), declaration.attributes()));
     }
 
     /** The type; any rule broken is added to {@code problems} (the type is then not to be used). */
@@ -38,22 +47,25 @@ final class TypeAssembler {
         return type;
     }
 
+    private static Map<String, String> memberIds(List<Primitive> primitives, List<Attribute> attributes) {
+        Map<String, String> ids = new LinkedHashMap<>();
+        primitives.forEach(p -> ids.put(p.name(), p.memberId()));
+        attributes.forEach(a -> ids.put(a.name(), a.memberId()));
+        return ids;
+    }
+
     private void checkAgainstInherited() {
         if (supertype == null) {
             return;
         }
-        Map<String, String> inheritedNameById = new HashMap<>();
-        supertype.primitives().forEach(p -> inheritedNameById.put(p.memberId(), p.name()));
-        supertype.attributes().forEach(a -> inheritedNameById.put(a.memberId(), a.name()));
+        Map<String, String> ancestorNameById = ancestorNameById();
         for (Primitive primitive : declaration.primitives()) {
             XmlElement element = declaration.memberElementAt(primitive.line(), primitive.column());
             if (supertype.findAttribute(primitive.name()).isPresent()) {
                 problems.at(element, "primitive '" + primitive.name() + "' has the name of an attribute inherited from "
                         + declaringType(primitive.name()));
             } else {
-                checkId(element, primitive.name(), primitive.memberId(),
-                        supertype.findPrimitive(primitive.name()).map(Primitive::memberId).orElse(null),
-                        inheritedNameById);
+                checkId(element, primitive.name(), primitive.memberId(), ancestorNameById);
             }
         }
         for (Attribute attribute : declaration.attributes()) {
@@ -62,25 +74,30 @@ final class TypeAssembler {
                 problems.at(element, "attribute '" + attribute.name() + "' has the name of a primitive inherited from "
                         + declaringType(attribute.name()));
             } else {
-                checkId(element, attribute.name(), attribute.memberId(),
-                        supertype.findAttribute(attribute.name()).map(Attribute::memberId).orElse(null),
-                        inheritedNameById);
+                checkId(element, attribute.name(), attribute.memberId(), ancestorNameById);
             }
         }
     }
 
+    /** Every member id declared by a supertype, with the name of its member (the nearest declaration's). */
+    private Map<String, String> ancestorNameById() {
+        Map<String, String> names = new HashMap<>();
+        for (AgentType type = supertype; type != null; type = type.supertype()) {
+            type.declaredPrimitives().forEach(p -> names.putIfAbsent(p.memberId(), p.name()));
+            type.declaredAttributes().forEach(a -> names.putIfAbsent(a.memberId(), a.name()));
+        }
+        return names;
+    }
+
     /**
-     * A redefinition ({@code redefinedId} not null) must keep the member id, so that the inherited
-     * states' rights keep applying to it; a new member must not take an inherited member's id.
+     * Member ids are unique in the type and its supertypes (agent-types.md): a member may only take an
+     * id a supertype used for the member it redefines. A redefinition may keep the inherited id or
+     * take one of its own.
      */
-    private void checkId(XmlElement element, String name, String id, String redefinedId,
-            Map<String, String> inheritedNameById) {
-        if (redefinedId != null && !redefinedId.equals(id)) {
-            problems.at(element, "redefines '" + name + "' of " + declaringType(name) + " with member_id '" + id
-                    + "': a redefinition keeps the inherited member_id '" + redefinedId + "'");
-        } else if (redefinedId == null && inheritedNameById.containsKey(id)) {
-            String owner = inheritedNameById.get(id);
-            problems.at(element, "duplicate member_id '" + id + "': already used by '" + owner + "' inherited from "
+    private void checkId(XmlElement element, String name, String id, Map<String, String> ancestorNameById) {
+        String owner = ancestorNameById.get(id);
+        if (owner != null && !owner.equals(name)) {
+            problems.at(element, "duplicate member_id '" + id + "': already used by '" + owner + "' of "
                     + declaringType(owner));
         }
     }
@@ -113,30 +130,24 @@ final class TypeAssembler {
      * redeclaration, then this descriptor's new states. See the README, "Descriptors", for the rights.
      */
     private List<PermeabilityState> states() {
-        Set<String> visibleIds = visibleMemberIds();
         Map<String, PermeabilityState> states = new LinkedHashMap<>();
         if (supertype != null) {
             for (PermeabilityState inherited : supertype.states()) {
-                Map<String, Integer> granted = new HashMap<>();
-                for (String id : visibleIds) {
-                    granted.put(id, isInherited(id) ? inherited.granted(id) : inherited.grantedToUnlisted());
-                }
-                states.put(inherited.name(), new PermeabilityState(inherited.name(), inherited.umask(), granted,
-                        inherited.grantedToUnlisted(), inherited.line()));
+                states.put(inherited.name(), inheritedState(inherited));
             }
         }
         for (Declaration.StateDeclaration declared : declaration.states()) {
-            checkMembers(declared, visibleIds);
+            checkMembers(declared);
             PermeabilityState inherited = states.get(declared.name());
             Map<String, Integer> granted = new HashMap<>();
             int grantedToUnlisted;
             if (declared.members().isEmpty()) {
-                visibleIds.forEach(id -> granted.put(id, PermeabilityState.ALL_RIGHTS));
+                idByName.values().forEach(id -> granted.put(id, PermeabilityState.ALL_RIGHTS));
                 grantedToUnlisted = PermeabilityState.ALL_RIGHTS;
             } else {
-                visibleIds.forEach(id -> granted.put(id, inherited == null ? 0 : inherited.granted(id)));
+                idByName.values().forEach(id -> granted.put(id, inherited == null ? 0 : inherited.granted(id)));
                 declared.members().forEach((id, rights) -> {
-                    if (visibleIds.contains(id)) {
+                    if (idByName.containsValue(id)) {
                         granted.put(id, rights);
                     }
                 });
@@ -148,28 +159,37 @@ final class TypeAssembler {
         return new ArrayList<>(states.values());
     }
 
-    private void checkMembers(Declaration.StateDeclaration declared, Set<String> visibleIds) {
+    /**
+     * A supertype's state as this type has it: each inherited member keeps its rights under the id it
+     * has here (a redefinition's own id included); a new member gets what the state gives unlisted ones.
+     */
+    private PermeabilityState inheritedState(PermeabilityState inherited) {
+        Map<String, String> inheritedIds = memberIds(supertype.primitives(), supertype.attributes());
+        Map<String, Integer> granted = new HashMap<>();
+        idByName.forEach((name, id) -> {
+            String inheritedId = inheritedIds.get(name);
+            granted.put(id, inheritedId == null ? inherited.grantedToUnlisted() : inherited.granted(inheritedId));
+        });
+        return new PermeabilityState(inherited.name(), inherited.umask(), granted, inherited.grantedToUnlisted(),
+                inherited.line());
+    }
+
+    /** A state names the ids of this type's members: its own declarations' and the inherited ones it keeps. */
+    private void checkMembers(Declaration.StateDeclaration declared) {
+        Map<String, String> inheritedIds = supertype == null ? Map.of()
+                : memberIds(supertype.primitives(), supertype.attributes());
         for (XmlElement member : declared.memberElements()) {
             String id = member.attribute("member_id");
-            if (!visibleIds.contains(id)) {
-                problems.at(member, "state '" + declared.name() + "' names member_id '" + id
-                        + "', which is no member of " + declaration.shortName());
+            if (idByName.containsValue(id)) {
+                continue;
             }
+            String redefined = inheritedIds.entrySet().stream().filter(entry -> entry.getValue().equals(id))
+                    .map(Map.Entry::getKey).findFirst().orElse(null);
+            problems.at(member, "state '" + declared.name() + "' names member_id '" + id + "', which is no member of "
+                    + declaration.shortName() + (redefined == null ? ""
+                            : ": it is the id of '" + redefined + "' in " + declaringType(redefined) + ", which "
+                                    + declaration.shortName() + " redefines as '" + idByName.get(redefined) + "'"));
         }
-    }
-
-    private Set<String> visibleMemberIds() {
-        Stream<String> inherited = supertype == null ? Stream.empty()
-                : Stream.concat(supertype.primitives().stream().map(Primitive::memberId),
-                        supertype.attributes().stream().map(Attribute::memberId));
-        Stream<String> own = Stream.concat(declaration.primitives().stream().map(Primitive::memberId),
-                declaration.attributes().stream().map(Attribute::memberId));
-        return Stream.concat(inherited, own).collect(Collectors.toSet());
-    }
-
-    private boolean isInherited(String id) {
-        return supertype != null && (supertype.primitives().stream().anyMatch(p -> p.memberId().equals(id))
-                || supertype.attributes().stream().anyMatch(a -> a.memberId().equals(id)));
     }
 
     /** The supertype declaring {@code memberName} nearest to this type, for messages. */

@@ -98,13 +98,36 @@ class InheritanceErrorsTest {
     }
 
     @Test
-    void redefinitionMustKeepTheMemberId() {
+    void aRedefinitionMayTakeAnIdOfItsOwn() {
         Path file = kheperaUnderRobot("""
                   <Primitive function_name="halt" member_id="K9" synchronous_call="true" return_type_name="void"/>
                 """);
+        AgentType sub = TestDescriptors.loader().load(file);
+        assertEquals(List.of("D1", "D2", "D3", "D4", "D5", "R1", "K9"),
+                sub.primitives().stream().map(Primitive::memberId).toList(), "halt redefined in place, as K9");
+    }
+
+    @Test
+    void aRedefinitionMustNotTakeTheIdOfAnotherInheritedMember() {
+        Path file = kheperaUnderRobot("""
+                  <Primitive function_name="halt" member_id="R1" synchronous_call="true" return_type_name="void"/>
+                """);
         assertSingleProblem(problemsOf(() -> TestDescriptors.loader().load(file)), file, 4, 3,
-                "<Primitive function_name=\"halt\">", "redefines 'halt' of Robot",
-                "keeps the inherited member_id 'R2'");
+                "<Primitive function_name=\"halt\">", "duplicate member_id 'R1': already used by 'move' of Robot");
+    }
+
+    @Test
+    void aStateNamesTheRedefinitionsOwnIdNotTheOneItReplaced() {
+        Path file = kheperaUnderRobot("""
+                  <Primitive function_name="halt" member_id="K9" synchronous_call="true" return_type_name="void"/>
+                  <Permeability permeability_name="calm" umask="000">
+                    <Member member_id="K9" rights="100"/>
+                    <Member member_id="R2" rights="100"/>
+                  </Permeability>
+                """);
+        assertSingleProblem(problemsOf(() -> TestDescriptors.loader().load(file)), file, 7, 5,
+                "<Member member_id=\"R2\">", "state 'calm' names member_id 'R2', which is no member of Sub",
+                "it is the id of 'halt' in Robot", "which Sub redefines as 'K9'");
     }
 
     @Test
@@ -113,7 +136,7 @@ class InheritanceErrorsTest {
                   <Primitive function_name="stopGripper" member_id="R1" synchronous_call="false" return_type_name="void"/>
                 """);
         assertSingleProblem(problemsOf(() -> TestDescriptors.loader().load(file)), file, 4, 3,
-                "duplicate member_id 'R1': already used by 'move' inherited from Robot");
+                "duplicate member_id 'R1': already used by 'move' of Robot");
     }
 
     @Test
@@ -122,7 +145,7 @@ class InheritanceErrorsTest {
                   <Attribute attribute_name="battery" member_id="D1" attribute_class="int"/>
                 """);
         assertSingleProblem(problemsOf(() -> TestDescriptors.loader().load(file)), file, 4, 3,
-                "duplicate member_id 'D1': already used by 'getProxyID' inherited from Default");
+                "duplicate member_id 'D1': already used by 'getProxyID' of Default");
     }
 
     @Test

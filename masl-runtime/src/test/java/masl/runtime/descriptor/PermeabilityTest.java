@@ -103,4 +103,41 @@ class PermeabilityTest {
         AgentType two = new DescriptorLoader(AgentPath.of(List.of(), getClass().getClassLoader()), null).load(file);
         assertEquals("closed", two.initialState().orElseThrow().name());
     }
+
+    /**
+     * Robot's {@code chatty} state names the root's {@code log} as D3; Scribe redefines {@code log} as
+     * S1 and names S1 in a state of its own. Each state's ids are its own descriptor's.
+     */
+    @Test
+    void aRedefinitionWithItsOwnIdKeepsTheInheritedStatesRightsAndIsNamedByItsOwnStates(@TempDir Path folder) {
+        write(folder, "Robot.xml", """
+                <Agent short_class_name="Robot" full_class_name="masl.runtime.descriptor.fixtures.Robot">
+                  <Permeability permeability_name="chatty" umask="000">
+                    <Member member_id="D3" rights="111"/>
+                    <Member member_id="D4" rights="100"/>
+                  </Permeability>
+                </Agent>
+                """);
+        Path file = write(folder, "Scribe.xml", """
+                <Agent short_class_name="Scribe" full_class_name="masl.runtime.descriptor.fixtures.Khepera"
+                       super_full_class_name="masl.runtime.descriptor.fixtures.Robot">
+                  <Primitive function_name="log" member_id="S1" synchronous_call="true" return_type_name="void">
+                    <Parameter parameter_name="message" parameter_type="java.lang.String"/>
+                  </Primitive>
+                  <Permeability permeability_name="hushed" umask="000">
+                    <Member member_id="S1" rights="100"/>
+                    <Member member_id="D4" rights="110"/>
+                  </Permeability>
+                </Agent>
+                """);
+        AgentType scribe = TestDescriptors.loader().load(file);
+        assertEquals("S1", scribe.findPrimitive("log").orElseThrow().memberId());
+        PermeabilityState chatty = scribe.findState("chatty").orElseThrow();
+        assertEquals(List.of(0111, 0100, 0), List.of(chatty.rights("S1"), chatty.rights("D4"), chatty.rights("D3")),
+                "Robot's rights for its D3 are the redefined log's, now S1; D3 names nothing in Scribe");
+        PermeabilityState hushed = scribe.findState("hushed").orElseThrow();
+        assertEquals(List.of(0100, 0110, 0), List.of(hushed.rights("S1"), hushed.rights("D4"), hushed.rights("D1")));
+        assertEquals(0777, scribe.findState("default").orElseThrow().rights("S1"), "the root's default allows all");
+        assertEquals(0, scribe.findState("nothing").orElseThrow().rights("S1"));
+    }
 }

@@ -43,7 +43,7 @@ final class E2SharedAndLocal extends AgentProgram {
                 case 0: // 3: synchronous entry main (true)
                     pc = 1;
                     switch (ctx.enter(MAIN, true)) {
-                        case SKIPPED -> { pc = 9; continue; }
+                        case SKIPPED -> { pc = 10; continue; }
                         case WAITING -> { return; }
                         case ENTERED -> { }
                     }
@@ -72,20 +72,23 @@ final class E2SharedAndLocal extends AgentProgram {
                 case 5: // 8: end of report
                     pc = 6;
                     if (!ctx.leave(REPORT)) return;
-                case 6: // 8: end of the e-sequence {report}: one instruction of main
+                case 6: // 8: end of report, one instruction of main
                     pc = 7;
-                    if (!ctx.endOfSequence(REPORT_SEQUENCE)) return;
-                case 7: // 9: .logln("mine=" + mine);
-                    self.logln("mine=" + main$mine);
+                    if (!ctx.endOfChild(REPORT)) return;
+                case 7: // 8: end of the e-sequence {report}
                     pc = 8;
-                    if (!ctx.stepBoundary()) return;
-                case 8: // 10: end of main
+                    if (!ctx.endOfSequence(REPORT_SEQUENCE)) return;
+                case 8: // 9: .logln("mine=" + mine);
+                    self.logln("mine=" + main$mine);
                     pc = 9;
-                    if (!ctx.leave(MAIN)) return;
-                case 9: // after main
+                    if (!ctx.stepBoundary()) return;
+                case 9: // 10: end of main
                     pc = 10;
+                    if (!ctx.leave(MAIN)) return;
+                case 10: // after main
+                    pc = 11;
                     if (!ctx.endOfSequence(MAIN.sequence())) return;
-                case 10:
+                case 11:
                     ctx.finish();
                     return;
                 default:

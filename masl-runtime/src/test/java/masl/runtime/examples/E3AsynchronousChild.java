@@ -41,7 +41,7 @@ final class E3AsynchronousChild extends AgentProgram {
                 case 0: // 3: synchronous entry main (true)
                     pc = 1;
                     switch (ctx.enter(MAIN, true)) {
-                        case SKIPPED -> { pc = 13; continue; }
+                        case SKIPPED -> { pc = 15; continue; }
                         case WAITING -> { return; }
                         case ENTERED -> { }
                     }
@@ -67,37 +67,43 @@ final class E3AsynchronousChild extends AgentProgram {
                 case 5: // 6: end of evens
                     pc = 6;
                     if (!ctx.leave(EVENS)) return;
-                case 6: // 6: end of the e-sequence {evens}: one instruction of main
+                case 6: // 6: end of evens, one instruction of main
                     pc = 7;
-                    if (!ctx.endOfSequence(EVENS_SEQUENCE)) return;
-                case 7: // 7: .log("y");
-                    self.log("y");
+                    if (!ctx.endOfChild(EVENS)) return;
+                case 7: // 6: end of the e-sequence {evens}
                     pc = 8;
-                    if (!ctx.stepBoundary()) return;
-                case 8: // 8: scalar entry end (true)
+                    if (!ctx.endOfSequence(EVENS_SEQUENCE)) return;
+                case 8: // 7: .log("y");
+                    self.log("y");
                     pc = 9;
+                    if (!ctx.stepBoundary()) return;
+                case 9: // 8: scalar entry end (true)
+                    pc = 10;
                     switch (ctx.enter(END, true)) {
-                        case SKIPPED -> { pc = 11; continue; }
+                        case SKIPPED -> { pc = 12; continue; }
                         case WAITING -> { return; }
                         case ENTERED -> { }
                     }
-                case 9: // 8: .log("\n");
+                case 10: // 8: .log("\n");
                     self.log("\n");
-                    pc = 10;
-                    if (!ctx.stepBoundary()) return;
-                case 10: // 8: end of end
                     pc = 11;
-                    if (!ctx.leave(END)) return;
-                case 11: // 8: end of the e-sequence {end}
+                    if (!ctx.stepBoundary()) return;
+                case 11: // 8: end of end
                     pc = 12;
-                    if (!ctx.endOfSequence(END_SEQUENCE)) return;
-                case 12: // 9: end of main
+                    if (!ctx.leave(END)) return;
+                case 12: // 8: end of end, one instruction of main
                     pc = 13;
-                    if (!ctx.leave(MAIN)) return;
-                case 13: // after main
+                    if (!ctx.endOfChild(END)) return;
+                case 13: // 8: end of the e-sequence {end}
                     pc = 14;
+                    if (!ctx.endOfSequence(END_SEQUENCE)) return;
+                case 14: // 9: end of main
+                    pc = 15;
+                    if (!ctx.leave(MAIN)) return;
+                case 15: // after main
+                    pc = 16;
                     if (!ctx.endOfSequence(MAIN.sequence())) return;
-                case 14:
+                case 16:
                     ctx.finish();
                     return;
                 default:

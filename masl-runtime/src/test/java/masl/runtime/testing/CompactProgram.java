@@ -48,6 +48,17 @@ public abstract class CompactProgram extends AgentProgram {
         return ctx.leave(block);
     }
 
+    /**
+     * End of an asynchronous or scalar child of a synchronous block, one instruction of it (§6.4):
+     * the parent's barrier; continue at {@code next}. Where the child ends its e-sequence, test
+     * programs without events or invocations let this stand for the e-sequence's end too (a step
+     * boundary without barrier, which has nothing to do for them).
+     */
+    protected final boolean endOfChild(AgentContext ctx, EntryDefinition child, int next) {
+        pc = next;
+        return ctx.endOfChild(child);
+    }
+
     /** End of an e-sequence; continue at {@code next}. */
     protected final boolean endOf(AgentContext ctx, ESequence sequence, int next) {
         pc = next;

@@ -1,7 +1,7 @@
 package masl.translator.analysis;
 
 import java.util.Map;
-import masl.runtime.descriptor.DescriptorLoader;
+import masl.runtime.AgentImplementation;
 
 /**
  * The static type of a MASL expression or variable: Java's types plus agent types. {@link #ERROR}
@@ -90,7 +90,8 @@ public sealed interface MaslType {
         @Override
         public String javaName() {
             if (type == null) {
-                return DescriptorLoader.ROOT_TYPE;
+                // Any agent, of whatever root: a user's own Default.xml may name a class of its own.
+                return AgentImplementation.class.getName();
             }
             return type.isLoaded() ? type.descriptor().fullClassName() : Object.class.getName();
         }

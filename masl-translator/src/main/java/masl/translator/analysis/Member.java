@@ -23,7 +23,7 @@ public record Member(Kind kind, String name, List<ImportedType> declaringTypes, 
         ATTRIBUTE,
         /** {@code count}, {@code getList()}, {@code lock()}, … of an entry (§6.7). */
         ENTRY_MEMBER,
-        /** {@code isFinished()} or {@code free()} of a label (§10). */
+        /** {@code isFinished()}, {@code getRemainingInvocations()} or {@code free()} of a label (§10). */
         LABEL_MEMBER,
         /** A method of a Java object or class. */
         JAVA_METHOD,

@@ -123,17 +123,24 @@ final class MemberTyper {
         return arguments.isEmpty();
     }
 
-    /** {@code l.isFinished()} or {@code l.free()}; other names are primitives launched by the label. */
+    /**
+     * {@code l.isFinished()}, {@code l.getRemainingInvocations()} or {@code l.free()}; other names are
+     * primitives launched by the label.
+     */
     MaslType labelMember(Label label, Token name, List<MaslType> arguments, ParserRuleContext access) {
         bindings.bind(access, new Member(Member.Kind.LABEL_MEMBER, name.getText(), List.of(), null));
         if (!arguments.isEmpty()) {
             errors.at(name, name.getText() + "() of label " + label.name() + " takes no arguments");
         }
-        return name.getText().equals("isFinished") ? MaslType.BOOLEAN : MaslType.VOID;
+        return switch (name.getText()) {
+            case "isFinished" -> MaslType.BOOLEAN;
+            case "getRemainingInvocations" -> MaslType.INT;
+            default -> MaslType.VOID;
+        };
     }
 
     static boolean isLabelMember(String name) {
-        return name.equals("isFinished") || name.equals("free");
+        return name.equals("isFinished") || name.equals("getRemainingInvocations") || name.equals("free");
     }
 
     /** A method of a Java class, on an object or (when {@code staticOnly}) on the class itself. */

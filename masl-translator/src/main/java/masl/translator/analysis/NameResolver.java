@@ -141,7 +141,7 @@ final class NameResolver {
         }
         if (owner instanceof Receiver.OfLabel ofLabel) {
             errors.at(name, "label " + ofLabel.label().name() + " has no member " + name.getText()
-                    + "; a label is used as l.x = .m(…), l.a.m(…), l.isFinished() or l.free()");
+                    + "; a label is used as l.x = .m(…), l.a.m(…), l.isFinished(), l.getRemainingInvocations() or l.free()");
             return MaslType.ERROR;
         }
         if (owner instanceof Receiver.OfType ofType) {

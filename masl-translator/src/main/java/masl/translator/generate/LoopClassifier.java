@@ -70,7 +70,7 @@ final class LoopClassifier {
         return switch (member.kind()) {
             case ENTRY_MEMBER -> true;
             // A label's completions and free() advance the change epoch (contract §8.3).
-            case LABEL_MEMBER -> member.name().equals("isFinished");
+            case LABEL_MEMBER -> !member.name().equals("free");
             // The agent's id never changes.
             case PRIMITIVE -> member.name().equals("getProxyID");
             case JAVA_FIELD -> member.name().equals("length") || member.name().equals("class");

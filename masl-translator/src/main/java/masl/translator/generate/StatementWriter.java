@@ -11,6 +11,7 @@ import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.StatementContext;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.Block;
+import masl.translator.analysis.BlockMode;
 import masl.translator.analysis.ESequence;
 import masl.translator.analysis.EntryRef;
 import masl.translator.analysis.Reaction;
@@ -149,12 +150,27 @@ final class StatementWriter {
         List<Block> blocks = sequence.blocks();
         CaseWriter.Point end = cases.point();
         for (int i = 0; i < blocks.size(); i++) {
-            block(blocks.get(i), i + 1 < blocks.size() ? test(blocks.get(i + 1)) : end);
+            Block child = blocks.get(i);
+            CaseWriter.Point next = i + 1 < blocks.size() ? test(blocks.get(i + 1)) : end;
+            if (isOneInstruction(child)) {
+                CaseWriter.Point childEnd = cases.point();
+                block(child, childEnd);
+                cases.place(childEnd, file + ":" + child.tree().getStop().getLine() + ": end of " + child.name()
+                        + ", one instruction of " + current.name());
+                cases.suspending("ctx.endOfChild(" + structure.block(child) + ")", cases.point());
+            } else {
+                block(child, next);
+            }
         }
         Block last = blocks.get(blocks.size() - 1);
         cases.place(end, file + ":" + last.tree().getStop().getLine() + ": end of the e-sequence "
                 + blocks.stream().map(Block::name).collect(Collectors.joining(", ", "{", "}")));
         cases.suspending("ctx.endOfSequence(" + structure.sequence(sequence) + ")", cases.point());
+    }
+
+    /** §6.4: an asynchronous or scalar child of a synchronous block is one instruction of it, also in an e-sequence. */
+    private boolean isOneInstruction(Block child) {
+        return current.mode() == BlockMode.SYNCHRONOUS && child.mode() != BlockMode.SYNCHRONOUS;
     }
 
     private void block(Block block, CaseWriter.Point after) {

@@ -2,7 +2,6 @@ package masl.translator.generate;
 
 import java.util.List;
 import masl.grammar.MASLParser;
-import masl.runtime.descriptor.DescriptorLoader;
 import masl.translator.analysis.AgentDecl;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.ImportedType;
@@ -56,8 +55,8 @@ final class TypeTests {
         return List.of(
                 "    /** Whether {@code agent} is one of the agents {@code proxyIds}: a type test on an agent (MASL 4). */",
                 "    private static boolean " + HELPER + "(Object agent, int... proxyIds) {",
-                "        if (agent instanceof " + DescriptorLoader.ROOT_TYPE + " member) {",
-                "            int id = member.getProxyID();",
+                "        if (agent instanceof AgentImplementation member) {",
+                "            int id = AgentImplementation.proxyIdOf(member);",
                 "            for (int proxyId : proxyIds) {",
                 "                if (proxyId == id) {",
                 "                    return true;",

@@ -156,6 +156,7 @@ class MemberErrorsTest {
                 l.x = k.getProximity(3);
                 l.k.battery = .getProximity(2);
                 l.this.battery = this.getProximity(1);
+                x = l.getRemainingInvocations();
                 if (l.isFinished() || isFinished(l)) l.free();""").assertNoError();
     }
 }

@@ -130,7 +130,7 @@ class ModelTest {
         assertEquals("java.util.Map.Entry", new MaslType.JavaClass(java.util.Map.Entry.class).javaName());
         assertEquals("masl.translator.analysis.fixtures.Khepera",
                 new MaslType.AgentRef(program.types().get("K")).javaName());
-        assertEquals("masl.agents.Default", MaslType.ANY_AGENT.javaName());
+        assertEquals("masl.runtime.AgentImplementation", MaslType.ANY_AGENT.javaName());
     }
 
     @Test

@@ -66,7 +66,10 @@ class GeneratorTest {
             count++;
             assertTrue(cases.group(1).matches(" // e2\\.masl:\\d+: .+"), "uncommented case: " + cases.group());
         }
-        assertEquals(12, count, program);
+        assertEquals(13, count, program);
+        // §6.4: report, a scalar child of synchronous main, is one instruction of main
+        assertTrue(program.contains("case 7: // e2.masl:8: end of report, one instruction of main\n"
+                + "                    pc = 8;\n                    if (!ctx.endOfChild(REPORT)) return;\n"), program);
         assertTrue(program.contains("case 0: // e2.masl:3: synchronous entry main (true)"), program);
         assertTrue(program.contains("// e2.masl:6: n++;\n"), program);
         assertTrue(program.contains("ctx.shared(MAIN_N).getAndUpdate(n -> n + 1);"), program);
@@ -126,11 +129,13 @@ class GeneratorTest {
         String program = program("""
                 shared int flag = 0;
                 local int i = 0;
+                LLabel l;
                 while (flag != 1) {}
                 while (i < 10) { i++; }
                 while (System.currentTimeMillis() < 0) {}
+                while (l.getRemainingInvocations() > 0 && !l.isFinished()) {}
                 """);
-        assertEquals(1, occurrences(program, "ctx.busyWaitIteration()"), program);
+        assertEquals(2, occurrences(program, "ctx.busyWaitIteration()"), program);
         assertEquals(2, occurrences(program, "ctx.loopIteration()"), program);
     }
 

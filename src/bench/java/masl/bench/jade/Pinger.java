@@ -1,4 +1,4 @@
-package masl.jade.bench;
+package masl.bench.jade;
 
 import jade.core.AID;
 import jade.core.Agent;

@@ -1,4 +1,4 @@
-package masl.jade.bench;
+package masl.bench.jade;
 
 import jade.wrapper.AgentController;
 import jade.wrapper.StaleProxyException;
@@ -29,7 +29,7 @@ import masl.runtime.descriptor.DescriptorLoader;
  * JADE figure measured in the same platform, and their ratio of round-trip times.
  *
  * <pre>
- * java -cp … masl.jade.bench.BridgePingPong [runs] [warm-up s] [window s]     (defaults: 5 1 3)
+ * java -cp … masl.bench.jade.BridgePingPong [runs] [warm-up s] [window s]     (defaults: 5 1 3)
  * </pre>
  */
 public final class BridgePingPong {

@@ -1,4 +1,4 @@
-package masl.jade.bench;
+package masl.bench.jade;
 
 import jade.core.Agent;
 import jade.core.behaviours.CyclicBehaviour;
@@ -23,7 +23,7 @@ import masl.jade.JadePlatform;
  * at once. A benchmark harness, not a test: {@code main} prints one line per run and the median.
  *
  * <pre>
- * java -cp … masl.jade.bench.AclPingPong [runs] [warm-up s] [window s]     (defaults: 5 1 3)
+ * java -cp … masl.bench.jade.AclPingPong [runs] [warm-up s] [window s]     (defaults: 5 1 3)
  * </pre>
  */
 public final class AclPingPong {

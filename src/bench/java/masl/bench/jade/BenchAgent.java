@@ -1,4 +1,4 @@
-package masl.jade.bench;
+package masl.bench.jade;
 
 import java.util.concurrent.CompletableFuture;
 import masl.runtime.AgentContext;

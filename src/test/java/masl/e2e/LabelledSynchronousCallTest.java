@@ -1,0 +1,86 @@
+package masl.e2e;
+
+import java.util.stream.LongStream;
+import masl.testing.MaslMission;
+import masl.testing.MissionRun;
+import masl.testing.Schedule;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * A labelled call of a synchronous primitive completes before the instruction ends (MASL §10,
+ * issue 20 item 5): right after {@code l.got = b.twice(i);} the label has nothing pending and
+ * {@code got} holds the result. The two Workers call each other, so every call is external and
+ * is served on the callee's thread while the caller waits: the case where the caller used to wake
+ * before the label had counted the call.
+ */
+@Timeout(600)
+class LabelledSynchronousCallTest {
+
+    private static final int SEEDS = 400;
+    private static final int POOL_RUNS = 300;
+    private static final int THREAD_RUNS = 300;
+
+    /** Each agent makes ten labelled calls and checks the label and the stored result right after each. */
+    private static final MaslMission MISSION = MaslMission.fromString("labelled-synchronous.masl", """
+            import workers/Worker.xml;
+            Worker a, b = newAgent(Worker);
+            synchronous entry main (true) {
+              LLabel l;
+              local int got = 0;
+              local int i = 0;
+              local int remaining = 0;
+              local int seen = 0;
+              local int late = 0;
+              for (i = 1; i <= 10; i++) {
+                if (.getProxyID() == 0) l.got = b.twice(i); else l.got = a.twice(i);
+                remaining = l.getRemainingInvocations();
+                seen = got;
+                if (remaining != 0 || seen != 2 * i) {
+                  late++;
+                  .logln(.getProxyID() + " call " + i + ": remaining " + remaining + ", got " + seen);
+                }
+              }
+              if (.getProxyID() == 0) l.b.drain(1); else l.a.drain(2);
+              .logln(.getProxyID() + ": " + late + " late, then remaining " + l.getRemainingInvocations()
+                  + ", finished " + l.isFinished());
+            }
+            """);
+
+    @Test
+    void rightAfterALabelledSynchronousCallNothingIsPendingAndTheResultIsStored() {
+        MISSION.explore(LongStream.range(0, SEEDS), POOL_RUNS).assertEveryRun(LabelledSynchronousCallTest::counted);
+        for (int run = 0; run < THREAD_RUNS; run++) {
+            counted(MISSION.runWith(Schedule.threads()));
+        }
+    }
+
+    /** Asynchronous calls keep their futures: counted until they come; a busy-wait on the count parks until then. */
+    @Test
+    void labelledAsynchronousCallsStayRemainingUntilTheyCome() {
+        MaslMission mission = MaslMission.fromString("labelled-asynchronous.masl", """
+                import workers/Worker.xml;
+                Worker a, b, boss = newAgent(Worker);
+                asynchronous entry main (true) {
+                  scalar entry collect (.getProxyID() == 2) {
+                    LLabel l;
+                    local int ra = 0;
+                    l.ra = a.slow(1);
+                    l.b.battery = b.slow(2);
+                    .logln("launched: remaining " + l.getRemainingInvocations() + ", ra " + ra);
+                    .open(a);
+                    .open(b);
+                    while (l.getRemainingInvocations() > 0) {}
+                    .logln("came: ra " + ra + ", battery " + b.battery);
+                  }
+                }
+                """);
+        mission.explore(LongStream.range(0, 50), 20)
+                .assertEveryRun(run -> run.assertJournal("launched: remaining 2, ra 0\ncame: ra 10, battery 20\n"));
+    }
+
+    private static void counted(MissionRun run) {
+        run.assertLinesInAnyOrder("0: 0 late, then remaining 0, finished true",
+                "1: 0 late, then remaining 0, finished true");
+    }
+}
