@@ -22,8 +22,8 @@ import org.eclipse.lsp4j.services.TextDocumentService;
 import org.eclipse.lsp4j.services.WorkspaceService;
 
 /**
- * The MASL language server: diagnostics, completion, hover, go to definition and the outline of MASL
- * programs (issue 27). {@link MaslLsp#serve} runs it over a pair of streams.
+ * The MASL language server: diagnostics, completion, hover, go to definition, the outline and folding of
+ * MASL programs (issue 27). {@link MaslLsp#serve} runs it over a pair of streams.
  */
 public final class MaslLanguageServer implements LanguageServer, LanguageClientAware {
 
@@ -61,6 +61,7 @@ public final class MaslLanguageServer implements LanguageServer, LanguageClientA
         capabilities.setHoverProvider(true);
         capabilities.setDefinitionProvider(true);
         capabilities.setDocumentSymbolProvider(true);
+        capabilities.setFoldingRangeProvider(true);
         return CompletableFuture.completedFuture(new InitializeResult(capabilities, new ServerInfo("masl lsp",
                 MaslLanguageServer.class.getPackage().getImplementationVersion())));
     }

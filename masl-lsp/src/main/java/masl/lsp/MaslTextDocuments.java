@@ -17,6 +17,8 @@ import org.eclipse.lsp4j.DidOpenTextDocumentParams;
 import org.eclipse.lsp4j.DidSaveTextDocumentParams;
 import org.eclipse.lsp4j.DocumentSymbol;
 import org.eclipse.lsp4j.DocumentSymbolParams;
+import org.eclipse.lsp4j.FoldingRange;
+import org.eclipse.lsp4j.FoldingRangeRequestParams;
 import org.eclipse.lsp4j.Hover;
 import org.eclipse.lsp4j.Location;
 import org.eclipse.lsp4j.LocationLink;
@@ -117,6 +119,12 @@ final class MaslTextDocuments implements TextDocumentService {
         return answer(uri, new Position(0, 0), List.<DocumentSymbol>of(),
                 cursor -> Outline.of(cursor.index, cursor.document))
                 .thenApply(symbols -> symbols.stream().map(Either::<SymbolInformation, DocumentSymbol>forRight).toList());
+    }
+
+    @Override
+    public CompletableFuture<List<FoldingRange>> foldingRange(FoldingRangeRequestParams params) {
+        return answer(params.getTextDocument().getUri(), new Position(0, 0), List.<FoldingRange>of(),
+                cursor -> Folding.of(cursor.index));
     }
 
     /**
