@@ -86,8 +86,11 @@ final class Completions {
     }
 
     private void members(Receiver receiver) {
-        if (receiver instanceof Receiver.Entry) {
-            Vocabulary.ENTRY_MEMBERS.forEach(member -> fixed(member, CompletionItemKind.Property));
+        if (receiver instanceof Receiver.Entry entry) {
+            // Members of a block not declared with Entry are an error (MASL §6.7): not offered.
+            if (cursor.index.hasEntryMembers(entry.name())) {
+                Vocabulary.ENTRY_MEMBERS.forEach(member -> fixed(member, CompletionItemKind.Property));
+            }
             return;
         }
         if (receiver instanceof Receiver.Label) {

@@ -56,6 +56,10 @@ class CompletionTest {
                 "lock", "release")), labels.toString());
         assertFalse(labels.contains("log"), labels.toString());
         assertEquals("int getActiveCount()", editor.completion("getActiveCount").getDetail());
+        editor.open(Programs.team("main.‸"));
+        assertTrue(editor.completionLabels().contains("getList"), editor.completionLabels().toString());
+        editor.open(Programs.team("other.‸"));
+        assertEquals(List.of(), editor.completionLabels(), "other is not declared with Entry");
     }
 
     @Test
