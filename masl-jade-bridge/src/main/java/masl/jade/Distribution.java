@@ -45,6 +45,7 @@ final class Distribution {
     private final AgentController controller;
     /** Remote agents by proxy id, in proxy id order. */
     private final Map<Integer, Remote> remotes = new LinkedHashMap<>();
+    private final StubClasses stubs = new StubClasses();
     /** The agent of each container that hosts bodies, once found; read by emitting agents' threads. */
     private final Map<String, AID> containers = new ConcurrentHashMap<>();
     private volatile Served served;
@@ -103,7 +104,7 @@ final class Distribution {
         RemoteBody body = new RemoteBody(name, new AID(name, AID.ISLOCALNAME), methods, coordinator,
                 implementation.getClassLoader());
         remotes.put(proxyId, new Remote(name, container, implementation.getName(), body));
-        return StubClasses.instantiate(implementation, methods, body);
+        return stubs.instantiate(implementation, methods, body);
     }
 
     /**

@@ -1,38 +1,45 @@
 package masl.jade;
 
 import java.io.ByteArrayOutputStream;
-import java.io.DataOutputStream;
-import java.io.IOException;
-import java.io.UncheckedIOException;
+import java.io.File;
+import java.io.OutputStream;
+import java.lang.reflect.Constructor;
 import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
+import java.net.URI;
+import java.net.URISyntaxException;
+import java.security.CodeSource;
 import java.util.HashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.stream.Collectors;
+import javax.tools.DiagnosticCollector;
+import javax.tools.FileObject;
+import javax.tools.ForwardingJavaFileManager;
+import javax.tools.JavaCompiler;
+import javax.tools.JavaFileManager;
+import javax.tools.JavaFileObject;
+import javax.tools.SimpleJavaFileObject;
+import javax.tools.ToolProvider;
 import masl.runtime.AgentImplementation;
 
 /**
- * Makes stubs: instances of a subclass of an agent's implementation class whose primitives, instead
- * of running, hand their name's index and arguments to a {@link BodyStub}. The runtime and the
+ * Makes stubs: instances of a subclass of an agent's implementation class whose primitives hand
+ * their index and arguments to a {@link BodyStub} (source: {@link StubSource}). The runtime and the
  * generated program call a stub exactly as the implementation ({@code self.logln(…)}, or inside
  * {@code ctx.invoke(…)}), so a program cannot tell where its agent's body is.
  *
- * <p>The subclass is written as a class file here (straight-line code, version 52: no stack map
- * frames needed), because the JDK offers no public way to subclass a class at run time and the
- * project takes no bytecode library for one class. Each overriding method is:
- * <pre>{@code
- * public R m(A0 a0, A1 a1) { return (R) stub.call(i, new Object[] {box(a0), box(a1)}); }  // unboxed if R is primitive
- * }</pre>
- * The implementation class and its primitives' methods must be public and not final, with a public
- * no-argument constructor.
+ * <p>The stub's source is compiled in memory with {@code javax.tools} (masl runs on a JDK: it
+ * compiles the programs it translates), once per implementation class and list of primitives,
+ * against the folders and jars the implementation, its superclasses, its primitives' types and
+ * this module were loaded from. The implementation class and its primitives' methods must be public
+ * and not final, with a public no-argument constructor. Thread-safe.
  */
 final class StubClasses {
 
-    private static final String STUB = BodyStub.class.getName().replace('.', '/');
-    private static final String STUB_DESCRIPTOR = "L" + STUB + ";";
-
-    private StubClasses() {
-    }
+    private final Map<StubSource, Constructor<?>> made = new HashMap<>();
 
     /**
      * A stub of {@code implementation} forwarding {@code methods} (by their index in the list) to
@@ -40,17 +47,23 @@ final class StubClasses {
      *
      * @throws JadeException if the class or one of the methods cannot be overridden
      */
-    static AgentImplementation instantiate(Class<? extends AgentImplementation> implementation, List<Method> methods,
+    AgentImplementation instantiate(Class<? extends AgentImplementation> implementation, List<Method> methods,
             BodyStub stub) {
         check(implementation, methods);
-        String name = "masl/jade/stub/" + implementation.getSimpleName() + "$Stub";
-        byte[] bytes = new ClassWriter(name, implementation, methods).write();
         try {
-            Class<?> stubClass = new StubLoader(implementation.getClassLoader()).define(name.replace('/', '.'), bytes);
-            return (AgentImplementation) stubClass.getConstructor(BodyStub.class).newInstance(stub);
+            return (AgentImplementation) constructor(new StubSource(implementation, methods)).newInstance(stub);
         } catch (ReflectiveOperationException | LinkageError e) {
             throw new JadeException("cannot make a stub of " + implementation.getName() + ": " + e, e);
         }
+    }
+
+    private synchronized Constructor<?> constructor(StubSource source) throws ReflectiveOperationException {
+        Constructor<?> constructor = made.get(source);
+        if (constructor == null) {
+            constructor = compile(source).getConstructor(BodyStub.class);
+            made.put(source, constructor);
+        }
+        return constructor;
     }
 
     private static void check(Class<?> implementation, List<Method> methods) {
@@ -64,6 +77,90 @@ final class StubClasses {
                 throw new JadeException(method + " must be public, not static and not final for "
                         + implementation.getName() + " to be placed in another container");
             }
+        }
+    }
+
+    /** The stub class, in a class loader of its own that sees the implementation's classes. */
+    private static Class<?> compile(StubSource source) {
+        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
+        if (javac == null) {
+            throw new JadeException("no Java compiler in this runtime: placing agents needs a JDK, not a JRE");
+        }
+        DiagnosticCollector<JavaFileObject> problems = new DiagnosticCollector<>();
+        Output output = new Output(javac.getStandardFileManager(problems, null, null));
+        List<String> options = List.of("-classpath", classPath(source), "-proc:none", "-nowarn", "--release", "17");
+        JavaFileObject unit = new InMemory(source.className(), JavaFileObject.Kind.SOURCE, source.text());
+        if (!javac.getTask(null, output, problems, options, null, List.of(unit)).call()) {
+            throw new JadeException("cannot compile the stub " + source.className() + ":\n"
+                    + problems.getDiagnostics().stream().map(Object::toString).collect(Collectors.joining("\n")));
+        }
+        byte[] bytes = output.classes.get(source.className()).bytes.toByteArray();
+        return new StubLoader(source.implementation().getClassLoader()).define(source.className(), bytes);
+    }
+
+    /** Where the classes the stub names were loaded from, then this JVM's class path. */
+    private static String classPath(StubSource source) {
+        Set<Class<?>> named = new LinkedHashSet<>(List.of(BodyStub.class, AgentImplementation.class));
+        for (Class<?> type = source.implementation(); type != null; type = type.getSuperclass()) {
+            named.add(type);
+        }
+        for (Method method : source.methods()) {
+            named.add(method.getReturnType());
+            named.addAll(List.of(method.getParameterTypes()));
+        }
+        Set<String> entries = new LinkedHashSet<>();
+        for (Class<?> type : named) {
+            while (type.isArray()) {
+                type = type.getComponentType();
+            }
+            CodeSource origin = type.getProtectionDomain().getCodeSource();
+            if (origin != null && origin.getLocation() != null) {
+                try {
+                    entries.add(new File(origin.getLocation().toURI()).getPath());
+                } catch (URISyntaxException | IllegalArgumentException notAFile) {
+                    // Loaded from elsewhere than a folder or a jar: this JVM's class path may still have it.
+                }
+            }
+        }
+        entries.add(System.getProperty("java.class.path"));
+        return String.join(File.pathSeparator, entries);
+    }
+
+    /** A compilation unit or a class file, in memory. */
+    private static final class InMemory extends SimpleJavaFileObject {
+        private final String text;
+        private final ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+
+        InMemory(String className, Kind kind, String text) {
+            super(URI.create("memory:///" + className.replace('.', '/') + kind.extension), kind);
+            this.text = text;
+        }
+
+        @Override
+        public CharSequence getCharContent(boolean ignoreEncodingErrors) {
+            return text;
+        }
+
+        @Override
+        public OutputStream openOutputStream() {
+            return bytes;
+        }
+    }
+
+    /** Keeps the class files javac writes. */
+    private static final class Output extends ForwardingJavaFileManager<JavaFileManager> {
+        private final Map<String, InMemory> classes = new HashMap<>();
+
+        Output(JavaFileManager standard) {
+            super(standard);
+        }
+
+        @Override
+        public JavaFileObject getJavaFileForOutput(Location location, String className, JavaFileObject.Kind kind,
+                FileObject sibling) {
+            InMemory file = new InMemory(className, kind, "");
+            classes.put(className, file);
+            return file;
         }
     }
 
@@ -83,238 +180,6 @@ final class StubClasses {
 
         Class<?> define(String name, byte[] bytes) {
             return defineClass(name, bytes, 0, bytes.length);
-        }
-    }
-
-    /** The class file of one stub class. */
-    private static final class ClassWriter {
-        private static final int MAX_STACK = 8;
-
-        private final String name;
-        private final String superName;
-        private final List<Method> methods;
-        private final ByteArrayOutputStream constantBytes = new ByteArrayOutputStream();
-        private final DataOutputStream constants = new DataOutputStream(constantBytes);
-        private final Map<String, Integer> constantIndex = new HashMap<>();
-        private int constantCount = 1;
-
-        ClassWriter(String name, Class<?> superclass, List<Method> methods) {
-            this.name = name;
-            this.superName = superclass.getName().replace('.', '/');
-            this.methods = methods;
-        }
-
-        byte[] write() {
-            try {
-                ByteArrayOutputStream body = new ByteArrayOutputStream();
-                DataOutputStream out = new DataOutputStream(body);
-                out.writeShort(0x1031); // public final super synthetic
-                out.writeShort(classRef(name));
-                out.writeShort(classRef(superName));
-                out.writeShort(0); // interfaces
-                out.writeShort(1); // fields: private final BodyStub stub
-                out.writeShort(0x0012);
-                out.writeShort(utf8("stub"));
-                out.writeShort(utf8(STUB_DESCRIPTOR));
-                out.writeShort(0);
-                out.writeShort(1 + methods.size());
-                writeConstructor(out);
-                for (int i = 0; i < methods.size(); i++) {
-                    writeForwarder(out, i, methods.get(i));
-                }
-                out.writeShort(0); // class attributes
-                ByteArrayOutputStream file = new ByteArrayOutputStream();
-                DataOutputStream header = new DataOutputStream(file);
-                header.writeInt(0xCAFEBABE);
-                header.writeShort(0);
-                header.writeShort(52);
-                header.writeShort(constantCount);
-                constantBytes.writeTo(file);
-                body.writeTo(file);
-                return file.toByteArray();
-            } catch (IOException impossible) {
-                throw new UncheckedIOException(impossible);
-            }
-        }
-
-        /** {@code public Stub(BodyStub stub) { super(); this.stub = stub; }} */
-        private void writeConstructor(DataOutputStream out) throws IOException {
-            ByteArrayOutputStream code = new ByteArrayOutputStream();
-            DataOutputStream c = new DataOutputStream(code);
-            c.writeByte(0x2a); // aload_0
-            c.writeByte(0xb7); // invokespecial
-            c.writeShort(methodRef(superName, "<init>", "()V", false));
-            c.writeByte(0x2a); // aload_0
-            c.writeByte(0x2b); // aload_1
-            c.writeByte(0xb5); // putfield
-            c.writeShort(fieldRef(name, "stub", STUB_DESCRIPTOR));
-            c.writeByte(0xb1); // return
-            writeMethod(out, "<init>", "(" + STUB_DESCRIPTOR + ")V", 2, 2, code.toByteArray());
-        }
-
-        private void writeForwarder(DataOutputStream out, int index, Method method) throws IOException {
-            ByteArrayOutputStream code = new ByteArrayOutputStream();
-            DataOutputStream c = new DataOutputStream(code);
-            c.writeByte(0x2a); // aload_0
-            c.writeByte(0xb4); // getfield
-            c.writeShort(fieldRef(name, "stub", STUB_DESCRIPTOR));
-            pushInt(c, index);
-            Class<?>[] parameters = method.getParameterTypes();
-            pushInt(c, parameters.length);
-            c.writeByte(0xbd); // anewarray
-            c.writeShort(classRef("java/lang/Object"));
-            int slot = 1;
-            for (int i = 0; i < parameters.length; i++) {
-                c.writeByte(0x59); // dup
-                pushInt(c, i);
-                slot += load(c, parameters[i], slot);
-                c.writeByte(0x53); // aastore
-            }
-            c.writeByte(0xb9); // invokeinterface
-            c.writeShort(methodRef(STUB, "call", "(I[Ljava/lang/Object;)Ljava/lang/Object;", true));
-            c.writeByte(3);
-            c.writeByte(0);
-            returnResult(c, method.getReturnType());
-            writeMethod(out, method.getName(), descriptor(method), MAX_STACK, slot, code.toByteArray());
-        }
-
-        private void writeMethod(DataOutputStream out, String methodName, String descriptor, int maxStack,
-                int maxLocals, byte[] code) throws IOException {
-            out.writeShort(0x0001); // public
-            out.writeShort(utf8(methodName));
-            out.writeShort(utf8(descriptor));
-            out.writeShort(1);
-            out.writeShort(utf8("Code"));
-            out.writeInt(12 + code.length);
-            out.writeShort(maxStack);
-            out.writeShort(maxLocals);
-            out.writeInt(code.length);
-            out.write(code);
-            out.writeShort(0); // exception table
-            out.writeShort(0); // attributes
-        }
-
-        /** Loads parameter {@code type} from {@code slot}, boxed; returns the slots it takes. */
-        private int load(DataOutputStream c, Class<?> type, int slot) throws IOException {
-            int opcode = type == long.class ? 0x16 : type == float.class ? 0x17 : type == double.class ? 0x18
-                    : type.isPrimitive() ? 0x15 : 0x19; // lload fload dload iload aload
-            c.writeByte(opcode);
-            c.writeByte(slot);
-            if (type.isPrimitive()) {
-                String box = box(type);
-                c.writeByte(0xb8); // invokestatic
-                c.writeShort(methodRef(box, "valueOf", "(" + descriptor(type) + ")L" + box + ";", false));
-            }
-            return type == long.class || type == double.class ? 2 : 1;
-        }
-
-        private void returnResult(DataOutputStream c, Class<?> type) throws IOException {
-            if (type == void.class) {
-                c.writeByte(0x57); // pop
-                c.writeByte(0xb1); // return
-            } else if (!type.isPrimitive()) {
-                c.writeByte(0xc0); // checkcast
-                c.writeShort(classRef(type.isArray() ? descriptor(type) : type.getName().replace('.', '/')));
-                c.writeByte(0xb0); // areturn
-            } else {
-                String box = box(type);
-                c.writeByte(0xc0);
-                c.writeShort(classRef(box));
-                c.writeByte(0xb6); // invokevirtual
-                c.writeShort(methodRef(box, type.getName() + "Value", "()" + descriptor(type), false));
-                c.writeByte(type == long.class ? 0xad : type == float.class ? 0xae : type == double.class ? 0xaf
-                        : 0xac); // lreturn freturn dreturn ireturn
-            }
-        }
-
-        private void pushInt(DataOutputStream c, int value) throws IOException {
-            if (value <= 5) {
-                c.writeByte(0x03 + value); // iconst_<n>
-            } else if (value <= Byte.MAX_VALUE) {
-                c.writeByte(0x10); // bipush
-                c.writeByte(value);
-            } else {
-                c.writeByte(0x11); // sipush
-                c.writeShort(value);
-            }
-        }
-
-        private static String box(Class<?> primitive) {
-            Class<?> boxed = java.lang.invoke.MethodType.methodType(primitive).wrap().returnType();
-            return boxed.getName().replace('.', '/');
-        }
-
-        private static String descriptor(Method method) {
-            StringBuilder descriptor = new StringBuilder("(");
-            for (Class<?> parameter : method.getParameterTypes()) {
-                descriptor.append(descriptor(parameter));
-            }
-            return descriptor.append(')').append(descriptor(method.getReturnType())).toString();
-        }
-
-        private static String descriptor(Class<?> type) {
-            return java.lang.invoke.MethodType.methodType(type).toMethodDescriptorString().substring(2);
-        }
-
-        private int utf8(String text) throws IOException {
-            return constant("U" + text, () -> {
-                constants.writeByte(1);
-                constants.writeUTF(text);
-            });
-        }
-
-        private int classRef(String internalName) throws IOException {
-            int nameIndex = utf8(internalName);
-            return constant("C" + internalName, () -> {
-                constants.writeByte(7);
-                constants.writeShort(nameIndex);
-            });
-        }
-
-        private int nameAndType(String memberName, String descriptor) throws IOException {
-            int nameIndex = utf8(memberName);
-            int typeIndex = utf8(descriptor);
-            return constant("N" + memberName + " " + descriptor, () -> {
-                constants.writeByte(12);
-                constants.writeShort(nameIndex);
-                constants.writeShort(typeIndex);
-            });
-        }
-
-        private int fieldRef(String owner, String fieldName, String descriptor) throws IOException {
-            int ownerIndex = classRef(owner);
-            int nat = nameAndType(fieldName, descriptor);
-            return constant("F" + owner + "." + fieldName, () -> {
-                constants.writeByte(9);
-                constants.writeShort(ownerIndex);
-                constants.writeShort(nat);
-            });
-        }
-
-        private int methodRef(String owner, String methodName, String descriptor, boolean ofInterface)
-                throws IOException {
-            int ownerIndex = classRef(owner);
-            int nat = nameAndType(methodName, descriptor);
-            return constant("M" + owner + "." + methodName + descriptor, () -> {
-                constants.writeByte(ofInterface ? 11 : 10);
-                constants.writeShort(ownerIndex);
-                constants.writeShort(nat);
-            });
-        }
-
-        private interface ConstantWriter {
-            void write() throws IOException;
-        }
-
-        private int constant(String key, ConstantWriter writer) throws IOException {
-            Integer known = constantIndex.get(key);
-            if (known != null) {
-                return known;
-            }
-            writer.write();
-            int index = constantCount++;
-            constantIndex.put(key, index);
-            return index;
         }
     }
 }

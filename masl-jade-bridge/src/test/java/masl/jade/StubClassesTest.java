@@ -13,7 +13,10 @@ import java.util.List;
 import masl.runtime.AgentImplementation;
 import org.junit.jupiter.api.Test;
 
-/** A stub's primitives hand their index and boxed arguments to its {@link BodyStub} and return its answer. */
+/**
+ * A stub's primitives hand their index and boxed arguments to its {@link BodyStub} and return its answer;
+ * the stub is Java source ({@link StubSource}) compiled once per implementation class and primitives.
+ */
 class StubClassesTest {
 
     /** An implementation with primitives of every kind of parameter and result. */
@@ -45,6 +48,7 @@ class StubClassesTest {
     }
 
     private final List<String> calls = new ArrayList<>();
+    private final StubClasses stubs = new StubClasses();
 
     private Calculator stub(BodyStub answers) throws NoSuchMethodException {
         List<Method> primitives = List.of(
@@ -54,7 +58,7 @@ class StubClassesTest {
                         byte.class, short.class),
                 Calculator.class.getMethod("names"),
                 Calculator.class.getMethod("half", double.class));
-        return (Calculator) StubClasses.instantiate(Calculator.class, primitives, (method, args) -> {
+        return (Calculator) stubs.instantiate(Calculator.class, primitives, (method, args) -> {
             calls.add(primitives.get(method).getName() + Arrays.toString(args));
             return answers.call(method, args);
         });
@@ -90,11 +94,40 @@ class StubClassesTest {
     }
 
     @Test
+    void agentsOfOneTypeShareOneStubClass() throws Exception {
+        Calculator first = stub((method, args) -> 1);
+        Calculator second = stub((method, args) -> 2);
+        assertSame(first.getClass(), second.getClass());
+        assertEquals(1, first.add(0, 0));
+        assertEquals(2, second.add(0, 0));
+    }
+
+    @Test
+    void theStubIsReadableJava() throws Exception {
+        String text = new StubSource(Calculator.class, List.of(Calculator.class.getMethod("add", int.class, int.class),
+                Calculator.class.getMethod("log", String.class))).text();
+        assertTrue(text.startsWith("package masl.jade;\n"), text);
+        assertTrue(text.contains("public final class StubClassesTest$Calculator$MaslStub extends"
+                + " masl.jade.StubClassesTest.Calculator {"), text);
+        assertTrue(text.contains("""
+                    @Override
+                    public int add(int a0, int a1) {
+                        return (java.lang.Integer) body.call(0, new Object[] {a0, a1});
+                    }
+                """), text);
+        assertTrue(text.contains("""
+                    public void log(java.lang.String a0) {
+                        body.call(1, new Object[] {a0});
+                    }
+                """), text);
+    }
+
+    @Test
     void aClassThatIsNotPublicCannotBeStubbed() {
         class Sealed extends AgentImplementation {
         }
         JadeException refused = assertThrows(JadeException.class,
-                () -> StubClasses.instantiate(Sealed.class, List.of(), (method, args) -> null));
+                () -> stubs.instantiate(Sealed.class, List.of(), (method, args) -> null));
         assertTrue(refused.getMessage().contains("must be public and not final"), refused.getMessage());
         assertArrayEquals(new Object[0], calls.toArray());
     }
