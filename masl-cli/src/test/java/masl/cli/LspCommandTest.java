@@ -61,7 +61,7 @@ import org.junit.jupiter.api.io.TempDir;
 class LspCommandTest {
 
     private static final long WAIT_SECONDS = 60;
-    private static final Pattern HEADLINE = Pattern.compile("^(.*):(\\d+):(\\d+): error: (.*)$", Pattern.MULTILINE);
+    private static final Pattern HEADLINE = Pattern.compile("(.*):(\\d+):(\\d+): error: (.*)");
 
     /** Two errors the analysis finds: a name no block declares, a primitive no type has. */
     private static final String TWO_ERRORS = """
@@ -181,16 +181,26 @@ class LspCommandTest {
                 .get(WAIT_SECONDS, TimeUnit.SECONDS).getLeft();
     }
 
-    /** {@code line:column: message} of each error {@code masl check} prints for the program. */
-    private List<String> maslCheck(Path program) {
+    /**
+     * {@code line:column: text} of each error {@code masl check} prints for the program: the headline's
+     * message and every further line it prints for the error but the source line and its caret (a hint, say),
+     * which the editor must show too.
+     */
+    private List<String> maslCheck(Path program) throws IOException {
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         new Masl(new PrintStream(new ByteArrayOutputStream()), new PrintStream(err, true, StandardCharsets.UTF_8))
                 .run("check", program.toString());
+        List<String> source = Files.readAllLines(program);
         List<String> errors = new ArrayList<>();
-        Matcher headline = HEADLINE.matcher(err.toString(StandardCharsets.UTF_8));
-        while (headline.find()) {
-            assertEquals(program.toString(), headline.group(1));
-            errors.add(headline.group(2) + ":" + headline.group(3) + ": " + headline.group(4));
+        for (String line : err.toString(StandardCharsets.UTF_8).split("\n")) {
+            Matcher headline = HEADLINE.matcher(line);
+            if (headline.matches()) {
+                assertEquals(program.toString(), headline.group(1));
+                errors.add(headline.group(2) + ":" + headline.group(3) + ": " + headline.group(4));
+            } else if (!errors.isEmpty() && !line.matches("\\d+ errors?") && !source.contains(line)
+                    && !line.matches("[ \\t]*\\^")) {
+                errors.set(errors.size() - 1, errors.get(errors.size() - 1) + "\n" + line);
+            }
         }
         return errors;
     }
