@@ -33,9 +33,9 @@ public final class Masl {
             usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE]
                            [--call-timeout MS] [--platform inproc|jade]
                            [--main-host HOST --main-port PORT | --port PORT]
-                           [--place AGENT=CONTAINER,... | --place FILE]
+                           [--place AGENT=CONTAINER,... | --place FILE] [--secret-file FILE]
                    masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
-                           [--timeout SECONDS]
+                           [--timeout SECONDS] [--secret-file FILE]
                    masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH]
                    masl compile FILE -d DIR [--agent-path PATH]
                    masl check FILE [--agent-path PATH]
@@ -60,7 +60,9 @@ public final class Masl {
               --seed N            run on one thread, every scheduling choice drawn from seed N (replayable)
               --timeout SECONDS   stop the mission after SECONDS (default: no limit)
               --call-timeout MS   a primitive running longer than MS milliseconds gives its caller its default
-                                  value and the event timeout; the mission goes on (default: no limit)
+                                  value and the event timeout; the mission goes on (default: no limit); with
+                                  --platform jade it also bounds each FIPA agent's call from outside the mission
+                                  (default for those: 10000)
               --trace FILE        write the trace (one JSON object per line) to FILE
               --platform P        inproc (default): run in this process; jade: run inside a JADE platform,
                                   one JADE agent per MASL agent, registered with the DF, answering FIPA requests
@@ -71,6 +73,9 @@ public final class Masl {
               --place AGENT=CONTAINER,... or FILE (lines AGENT=CONTAINER)
                                   with --platform jade: run these agents' bodies in the containers named (started
                                   with masl container), their programs in this JVM; other agents stay here
+              --secret-file FILE  with --place (and for masl container): where run writes a fresh secret for the
+                                  mission (owner-only, deleted at its end) and its containers read it; they obey
+                                  only messages signed with it (default: .masl-mission-secret in this folder)
             exit status: 0 success, 1 errors in the program or its descriptors, 2 the mission failed,
                          deadlocked or timed out, 64 bad usage, 70 internal error
             """;
@@ -90,10 +95,26 @@ public final class Masl {
         this.err = err;
     }
 
+    /**
+     * {@code masl --help}, {@code masl help [COMMAND]}, or {@code --help}/{@code -h} among a
+     * command's words, whatever else they hold: the usage, on standard output, status 0.
+     */
+    private static boolean asksForHelp(String... args) {
+        if (args.length > 0 && args[0].equals("help")) {
+            return true;
+        }
+        for (String arg : args) {
+            if (arg.equals("--help") || arg.equals("-h")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** Runs one invocation and returns its exit status; never throws. */
     public int run(String... args) {
         try {
-            if (args.length == 1 && (args[0].equals("--help") || args[0].equals("-h") || args[0].equals("help"))) {
+            if (asksForHelp(args)) {
                 out.print(USAGE_TEXT);
                 return OK;
             }

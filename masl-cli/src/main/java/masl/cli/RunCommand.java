@@ -46,11 +46,9 @@ final class RunCommand {
         if (!line.platform.equals("jade") && (line.mainHost != null || line.mainPort != null)) {
             throw new UsageException("--main-host and --main-port join a JADE platform: give them with --platform jade");
         }
-        if (line.callTimeoutMillis != null && line.platform.equals("jade")) {
-            throw new UsageException("--call-timeout bounds calls in-process: not with --platform jade yet");
-        }
-        if (!line.platform.equals("jade") && (line.place != null || line.port != null)) {
-            throw new UsageException("--place and --port are for a JADE platform: give them with --platform jade");
+        if (!line.platform.equals("jade") && (line.place != null || line.port != null || line.secretFile != null)) {
+            throw new UsageException("--place, --port and --secret-file are for a JADE platform: give them with"
+                    + " --platform jade");
         }
         AgentPath agentPath = AgentPath.parse(line.agentPath);
         Translation translation = new Translator(agentPath).translate(source);

@@ -447,7 +447,7 @@ final class ExpressionWriter {
         if (primary instanceof MASLParser.ParenExprContext paren) {
             return "(" + expr(paren.expression()) + ")";
         } else if (primary instanceof MASLParser.LiteralExprContext literal) {
-            return literal.getText();
+            return JavaText.literal(literal.literal());
         } else if (primary instanceof MASLParser.ThisExprContext) {
             return "self";
         } else if (primary instanceof MASLParser.SelfInvocationContext call) {
