@@ -8,12 +8,7 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.Map;
 import masl.runtime.descriptor.AgentPath;
-import masl.translator.Frontend;
-import masl.translator.Translation;
-import masl.translator.Translator;
 import masl.translator.compile.GeneratedCodeException;
-import masl.translator.diagnostics.DiagnosticPrinter;
-import masl.translator.diagnostics.Diagnostics;
 import masl.translator.source.SourceFile;
 
 /**
@@ -48,7 +43,8 @@ public final class Masl {
               container join a JADE platform as container CONTAINER and host the bodies (the primitives) of the
                         agents a run --place puts there; their programs run in the run's JVM; ends with the mission
               compile   translate a MASL program into Java sources under DIR (one folder per package)
-              check     report every error of a MASL program and of the descriptors it imports
+              check     report every error of a MASL program and of the descriptors it imports: all that
+                        compile and run would report, as they translate and compile it, without running it
               timeline  draw a trace written by run --trace as a self-contained HTML page: one lane per
                         agent over time, coloured by block, with barrier trips, waves, events and invocations
               lsp       serve the Language Server Protocol on standard input and output for an editor: the
@@ -156,9 +152,7 @@ public final class Masl {
 
     private int check(CommandLine line) throws UsageException {
         SourceFile source = readProgram(line.singleFile());
-        Frontend.Result result = new Frontend(AgentPath.parse(line.agentPath)).analyse(source);
-        printDiagnostics(source, result.diagnostics());
-        return result.succeeded() ? OK : PROGRAM_ERRORS;
+        return Pipeline.load(source, AgentPath.parse(line.agentPath), err) == null ? PROGRAM_ERRORS : OK;
     }
 
     private int compile(CommandLine line) throws UsageException {
@@ -166,13 +160,12 @@ public final class Masl {
         if (line.outputFolder == null) {
             throw new UsageException("masl compile needs -d DIR, the folder to write the Java sources into");
         }
-        Translation translation = new Translator(AgentPath.parse(line.agentPath)).translate(source);
-        printDiagnostics(source, translation.diagnostics());
-        if (!translation.succeeded()) {
+        Pipeline.Loaded loaded = Pipeline.load(source, AgentPath.parse(line.agentPath), err);
+        if (loaded == null) {
             return PROGRAM_ERRORS;
         }
         Path folder = Path.of(line.outputFolder);
-        for (Map.Entry<String, String> unit : translation.javaSources().entrySet()) {
+        for (Map.Entry<String, String> unit : loaded.translation().javaSources().entrySet()) {
             Path file = folder.resolve(unit.getKey().replace('.', '/') + ".java");
             try {
                 Files.createDirectories(file.getParent());
@@ -183,10 +176,6 @@ public final class Masl {
             }
         }
         return OK;
-    }
-
-    void printDiagnostics(SourceFile source, Diagnostics diagnostics) {
-        new DiagnosticPrinter(Map.of(source.name(), source.text())).print(diagnostics.sorted(), err);
     }
 
     private static SourceFile readProgram(String name) throws UsageException {

@@ -16,9 +16,6 @@ import masl.runtime.ThreadPerAgentScheduler;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.trace.JsonLinesTrace;
 import masl.translator.MissionLoader;
-import masl.translator.Translation;
-import masl.translator.Translator;
-import masl.translator.diagnostics.DiagnosticPrinter;
 import masl.translator.source.SourceFile;
 
 /**
@@ -51,13 +48,11 @@ final class RunCommand {
                     + " --platform jade");
         }
         AgentPath agentPath = AgentPath.parse(line.agentPath);
-        Translation translation = new Translator(agentPath).translate(source);
-        new DiagnosticPrinter(java.util.Map.of(source.name(), source.text()))
-                .print(translation.diagnostics().sorted(), err);
-        if (!translation.succeeded()) {
+        Pipeline.Loaded compiled = Pipeline.load(source, agentPath, err);
+        if (compiled == null) {
             return Masl.PROGRAM_ERRORS;
         }
-        MissionLoader loaded = MissionLoader.load(translation, agentPath);
+        MissionLoader loaded = compiled.loader();
         Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
         if (line.platform.equals("jade")) {
             JadeRun jade = new JadeRun(line, source, agentPath, loaded, out);
