@@ -120,12 +120,23 @@ class LspCommandTest {
         assertEquals(2, check.size(), "masl check finds two errors: " + check);
 
         String uri = open(program, TWO_ERRORS);
-        List<Diagnostic> diagnostics = diagnosticsOf(uri, 1);
-        assertEquals(check, diagnostics.stream().map(d -> (d.getRange().getStart().getLine() + 1) + ":"
-                + (d.getRange().getStart().getCharacter() + 1) + ": " + d.getMessage()).toList());
+        assertEquals(check, messages(diagnosticsOf(uri, 1)));
 
         change(uri, 2, FIXED);
         assertEquals(List.of(), diagnosticsOf(uri, 2));
+
+        // A construct the translator refuses: an error of masl check's translation, not of the analysis.
+        String refused = FIXED.replace("break(work);",
+                "if (java.nio.file.Files.size(java.nio.file.Path.of(\"x\")) > 0) .nop();");
+        List<String> refusal = maslCheck(write("refused.masl", refused));
+        assertEquals(1, refusal.size(), refusal.toString());
+        change(uri, 3, refused);
+        assertEquals(refusal, messages(diagnosticsOf(uri, 3)));
+    }
+
+    private static List<String> messages(List<Diagnostic> diagnostics) {
+        return diagnostics.stream().map(d -> (d.getRange().getStart().getLine() + 1) + ":"
+                + (d.getRange().getStart().getCharacter() + 1) + ": " + d.getMessage()).toList();
     }
 
     @Test

@@ -17,7 +17,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
 import masl.runtime.descriptor.AgentPath;
-import masl.translator.Frontend;
+import masl.translator.Translator;
 import masl.translator.diagnostics.Diagnostic;
 import masl.translator.source.SourceFile;
 import org.eclipse.lsp4j.MessageParams;
@@ -26,8 +26,11 @@ import org.eclipse.lsp4j.PublishDiagnosticsParams;
 import org.eclipse.lsp4j.services.LanguageClient;
 
 /**
- * Checks open programs with the front end {@code masl check} uses and publishes what it reports: the
- * program's diagnostics on the program, a descriptor's on the descriptor's file. Checks run one at a time on
+ * Checks open programs as {@code masl check} does and publishes what it reports: the program's diagnostics on
+ * the program, a descriptor's on the descriptor's file. {@code masl check} translates the program
+ * ({@link Translator#translate}: parse, analysis, generation, which refuses the constructs it cannot
+ * translate yet) and prints the translation's diagnostics; then it compiles the generated Java, whose
+ * failure is a bug of masl reported as an internal error, never a diagnostic: the editor leaves that step out. Checks run one at a time on
  * a thread of their own, so that typing is never held up by them; a check whose document has changed
  * again since it was asked for is skipped, the newer one being queued behind it.
  *
@@ -76,7 +79,7 @@ final class DiagnosticsPublisher implements AutoCloseable {
         SourceFile source = document.source();
         List<Diagnostic> found;
         try {
-            found = new Frontend(agentPath.get()).analyse(source).diagnostics().sorted();
+            found = new Translator(agentPath.get()).translate(source).diagnostics().sorted();
         } catch (RuntimeException | StackOverflowError bug) {
             client.get().logMessage(new MessageParams(MessageType.Error,
                     "masl: internal error while checking " + source.name() + ", please report it: " + bug));

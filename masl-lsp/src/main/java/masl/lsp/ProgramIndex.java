@@ -26,7 +26,7 @@ import org.antlr.v4.runtime.tree.ParseTree;
  * descriptors, its agents, its {@code Entry} names and its tree of blocks with their declarations, all with
  * the tokens they are written at. Built from the parse tree alone, so that it is there while the program
  * is being typed and does not parse or type-check: ANTLR's recovery keeps the blocks around a syntax error.
- * The diagnostics come from the front end, never from here.
+ * The diagnostics come from the translator, never from here.
  */
 final class ProgramIndex {
 
@@ -297,7 +297,7 @@ final class ProgramIndex {
         return tree.getStop() == null ? tree.getText() : parsed.tokens().getText(tree.getStart(), tree.getStop());
     }
 
-    /** The descriptor path as the front end reads it: a quoted path unquoted, else the tokens' text. */
+    /** The descriptor path as the translator reads it: a quoted path unquoted, else the tokens' text. */
     private String filePath(MASLParser.FilePathContext path) {
         if (path.StringLiteral() != null) {
             String quoted = path.StringLiteral().getText();

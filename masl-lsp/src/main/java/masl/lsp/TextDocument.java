@@ -52,7 +52,7 @@ final class TextDocument {
     }
 
     /**
-     * The program as the front end reads it: named by its path, as {@code masl check FILE} names it when
+     * The program as the translator reads it: named by its path, as {@code masl check FILE} names it when
      * given an absolute path, and with descriptors looked up next to it.
      */
     SourceFile source() {
