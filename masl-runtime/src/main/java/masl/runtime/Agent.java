@@ -280,6 +280,11 @@ final class Agent implements AgentContext, AgentTask {
         return current == PARKED && (nothingQueued || attentiveTicket.get() != 0);
     }
 
+    /** Its program is over (finished or died); the mission may not have counted it out yet. */
+    boolean isDone() {
+        return state.get() == DONE;
+    }
+
     /** Parked in a busy-wait: waiting for a change, which an outside invocation is. */
     boolean isParkedInBusyWait() {
         return state.get() == PARKED && busyWaitPark;

@@ -65,8 +65,10 @@ import masl.runtime.trace.TraceEvent;
  * {@code PARKED} to its serving slice being scheduled.</li>
  * </ol>
  * Every {@link #WATCHDOG_PERIOD} the watchdog <em>looks</em>: it reads the counts (one atomic word),
- * every agent, and the counts again. A look is quiet if nothing is pending, every agent is idle and
- * the counts did not move; two quiet looks in a row with the same counts end the mission.
+ * every agent, and the counts again. A look is quiet if nothing is pending, every agent is idle,
+ * every agent that is done has been counted out of the running ones (an agent turns {@code DONE}
+ * before the mission counts it out, and builds its report in between: until then it is ending, not
+ * idle) and the counts did not move; two quiet looks in a row with the same counts end the mission.
  *
  * <p>Why that is a deadlock: the counts did not move from the first read of the first look to the
  * last read of the second, and nothing was pending at the first read, so nothing was pending
@@ -200,6 +202,7 @@ public final class Mission {
             long look = wakeUps.look();
             boolean idle = WakeUps.nonePending(look) && agents.stream().allMatch(Agent::isIdle)
                     && !(openToOutsideInvocations && agents.stream().anyMatch(Agent::isParkedInBusyWait))
+                    && noAgentEnding()
                     && look == wakeUps.look();
             if (idle && lastLookIdle && look == lastIdleLook) {
                 return firstDeath.get() == null ? MissionOutcome.Status.DEADLOCKED : MissionOutcome.Status.FAILED;
@@ -207,6 +210,17 @@ public final class Mission {
             lastLookIdle = idle;
             lastIdleLook = look;
         }
+    }
+
+    /**
+     * Whether every agent whose program is over has been counted out: an agent is made DONE first
+     * and counted out after (its report is built in between), so a DONE agent still counted as
+     * running is ending, not idle. The states are read before the count, so a look that sees an
+     * agent DONE sees the count as of then or later.
+     */
+    private boolean noAgentEnding() {
+        long notDone = agents.stream().filter(agent -> !agent.isDone()).count();
+        return running.get() == notDone;
     }
 
     /** Stops the mission from outside: {@link #run} returns {@link MissionOutcome.Status#STOPPED}. */
@@ -409,9 +423,22 @@ public final class Mission {
             return call.call();
         }
         CountDownLatch started = new CountDownLatch(1);
+        PrimitiveTurn turn = PrimitiveTurn.current();
+        if (turn != null) {
+            turn.delegating();
+        }
         Future<T> running = primitives.submit(() -> {
-            started.countDown();
-            return call.call();
+            if (turn != null) {
+                turn.delegateStarted();
+            }
+            try {
+                started.countDown();
+                return call.call();
+            } finally {
+                if (turn != null) {
+                    turn.delegateFinished();
+                }
+            }
         });
         try {
             return Blocking.call(() -> {
@@ -426,6 +453,10 @@ public final class Mission {
                 throw error;
             }
             throw (Exception) failed.getCause();
+        } finally {
+            if (turn != null) {
+                turn.delegationEnded();
+            }
         }
     }
 

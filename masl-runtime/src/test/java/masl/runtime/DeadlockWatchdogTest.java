@@ -344,4 +344,68 @@ class DeadlockWatchdogTest {
         assertEquals(MissionOutcome.Status.DEADLOCKED, outcome.status(), outcome::toString);
         assertEquals("agent waiter (0) at pc 1: in no block\nagent caller (1) at pc 0: in no block\n", outcome.report());
     }
+
+    /**
+     * The program throws at once. While the runtime names the dying agent for the mission's report
+     * ({@code sourceAt}), its state is already DONE but the mission still counts it as running: the
+     * program holds its thread there until the watchdog has looked at that quiet mission three times.
+     */
+    static final class DiesHeldInTheWindow extends AgentProgram {
+        private final BooleanSupplier done;
+        private final CountDownLatch inTheWindow;
+        private final CountDownLatch looks;
+
+        DiesHeldInTheWindow(BooleanSupplier done, CountDownLatch inTheWindow, CountDownLatch looks) {
+            this.done = done;
+            this.inTheWindow = inTheWindow;
+            this.looks = looks;
+        }
+
+        @Override
+        protected void resume(AgentContext ctx) {
+            throw new IllegalStateException("boom");
+        }
+
+        @Override
+        protected String sourceAt(int pc) {
+            if (done.getAsBoolean() && inTheWindow.getCount() > 0) {
+                inTheWindow.countDown();
+                awaitUninterruptibly(looks);
+            }
+            return null;
+        }
+    }
+
+    /** Counts the watchdog's looks (two reads each) once the dying agent is in the window. */
+    static final class LookCounter extends WakeUps {
+        volatile CountDownLatch inTheWindow;
+        final CountDownLatch looks = new CountDownLatch(6);
+
+        @Override
+        long look() {
+            if (inTheWindow != null && inTheWindow.getCount() == 0) {
+                looks.countDown();
+            }
+            return super.look();
+        }
+    }
+
+    /** A dying agent between its end and the mission's count is not a deadlock: the mission fails with its cause. */
+    @ParameterizedTest
+    @EnumSource(value = Driver.class, names = {"POOL", "THREADS", "SEEDED"})
+    void aDyingAgentHeldBetweenItsEndAndTheMissionsCountIsNoDeadlock(Driver driver) throws Exception {
+        LookCounter wakeUps = new LookCounter();
+        CountDownLatch inTheWindow = new CountDownLatch(1);
+        wakeUps.inTheWindow = inTheWindow;
+        TestAgent dier = new TestAgent();
+        Mission[] mission = new Mission[1];
+        BooleanSupplier done = () -> mission[0].agentOf(dier).isIdle();
+        mission[0] = Mission.builder().scheduler(driver.newScheduler()).wakeUps(wakeUps)
+                .agent("dier", dier, TestTypes.testAgent(), self -> new DiesHeldInTheWindow(done, inTheWindow, wakeUps.looks))
+                .build();
+        MissionOutcome outcome = mission[0].run(Duration.ofSeconds(30));
+        assertEquals(0, inTheWindow.getCount(), "the agent was never held in the window");
+        assertEquals(MissionOutcome.Status.FAILED, outcome.status(), outcome::toString);
+        assertEquals("boom", outcome.failure().orElseThrow().getCause().getMessage(), outcome::toString);
+    }
 }
