@@ -79,10 +79,26 @@ public final class Masl {
         this.err = err;
     }
 
+    /**
+     * {@code masl --help}, {@code masl help [COMMAND]}, or {@code --help}/{@code -h} among a
+     * command's words, whatever else they hold: the usage, on standard output, status 0.
+     */
+    private static boolean asksForHelp(String... args) {
+        if (args.length > 0 && args[0].equals("help")) {
+            return true;
+        }
+        for (String arg : args) {
+            if (arg.equals("--help") || arg.equals("-h")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** Runs one invocation and returns its exit status; never throws. */
     public int run(String... args) {
         try {
-            if (args.length == 1 && (args[0].equals("--help") || args[0].equals("-h") || args[0].equals("help"))) {
+            if (asksForHelp(args)) {
                 out.print(USAGE_TEXT);
                 return OK;
             }
