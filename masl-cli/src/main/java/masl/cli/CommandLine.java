@@ -16,10 +16,12 @@ final class CommandLine {
             "check", Set.of("--agent-path"),
             "compile", Set.of("--agent-path", "-d"),
             "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--platform", "--main-host",
-                    "--main-port", "--sim", "--out", "--place", "--port"),
-            "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout"),
+                    "--main-port", "--sim", "--out", "--place", "--port", "--secret-file"),
+            "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout", "--secret-file"),
             "timeline", Set.of("-o"));
     private static final Set<String> FLAGS = Set.of("--threads");
+    /** Where {@code masl run --place} writes the mission's secret and {@code masl container} reads it, by default. */
+    static final String DEFAULT_SECRET_FILE = ".masl-mission-secret";
 
     final String command;
     final List<String> operands = new ArrayList<>();
@@ -38,6 +40,7 @@ final class CommandLine {
     String place;
     Integer port;
     String containerName;
+    String secretFile;
 
     private CommandLine(String command) {
         this.command = command;
@@ -96,6 +99,7 @@ final class CommandLine {
             case "--port" -> port = port(option, value);
             case "--place" -> place = value;
             case "--name" -> containerName = value;
+            case "--secret-file" -> secretFile = value;
             default -> throw new UsageException("unknown option " + option);
         }
     }

@@ -1,6 +1,8 @@
 package masl.cli;
 
+import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -11,6 +13,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import masl.jade.JadeException;
 import masl.jade.JadeLauncher;
 import masl.jade.JadeOptions;
+import masl.jade.MissionSecret;
 import masl.jade.Placement;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
@@ -35,6 +38,8 @@ final class JadeRun {
     private final DescriptorLoader descriptors;
     private final JadeOptions options;
     private final Map<String, String> placement;
+    private final Path secretFile;
+    private final Duration callTimeout;
     private final PrintStream out;
 
     /**
@@ -59,6 +64,12 @@ final class JadeRun {
         this.options = line.mainHost != null ? JadeOptions.join(line.mainHost, line.mainPort)
                 : line.port != null ? JadeOptions.mainContainer().withPort(line.port) : JadeOptions.mainContainer();
         this.placement = line.place == null ? Map.of() : placement(line.place, loaded);
+        if (line.secretFile != null && placement.isEmpty()) {
+            throw new UsageException("--secret-file is where the containers of --place find the mission's secret:"
+                    + " give it with --place");
+        }
+        this.secretFile = Path.of(line.secretFile == null ? CommandLine.DEFAULT_SECRET_FILE : line.secretFile);
+        this.callTimeout = line.callTimeoutMillis == null ? null : Duration.ofMillis(line.callTimeoutMillis);
         this.out = out;
     }
 
@@ -101,7 +112,16 @@ final class JadeRun {
                 .trace(trace == null ? Trace.NONE : trace)
                 .whenReady(mission -> stopper.set(stopOnCtrlC(mission)));
         try {
+            if (callTimeout != null) {
+                launcher.callTimeout(callTimeout);
+            }
+            if (!placement.isEmpty()) {
+                launcher.secret(shareSecret());
+            }
             return launcher.run(options, timeout);
+        } catch (IOException unwritable) {
+            return failed(new JadeException("cannot write the mission's secret for its containers to " + secretFile
+                    + ": " + unwritable.getMessage()), MissionOutcome.Status.FAILED);
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
             return failed(interrupted, MissionOutcome.Status.STOPPED);
@@ -109,6 +129,29 @@ final class JadeRun {
             return failed(cannotRun, MissionOutcome.Status.FAILED);
         } finally {
             removeHook(stopper.get());
+            forgetSecret();
+        }
+    }
+
+    /**
+     * A fresh secret for this mission, written to {@code --secret-file} (owner-only) for the
+     * containers of {@code --place} to read when its coordinator first writes to them.
+     */
+    private MissionSecret shareSecret() throws IOException {
+        MissionSecret secret = MissionSecret.generate();
+        secret.writeTo(secretFile);
+        return secret;
+    }
+
+    /** The secret served this mission only: its file goes with it. */
+    private void forgetSecret() {
+        if (placement.isEmpty()) {
+            return;
+        }
+        try {
+            Files.deleteIfExists(secretFile);
+        } catch (IOException kept) {
+            // Harmless: the next mission writes a secret of its own over it.
         }
     }
 

@@ -7,12 +7,7 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.Map;
 import masl.runtime.descriptor.AgentPath;
-import masl.translator.Frontend;
-import masl.translator.Translation;
-import masl.translator.Translator;
 import masl.translator.compile.GeneratedCodeException;
-import masl.translator.diagnostics.DiagnosticPrinter;
-import masl.translator.diagnostics.Diagnostics;
 import masl.translator.source.SourceFile;
 
 /**
@@ -32,9 +27,9 @@ public final class Masl {
             usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE]
                            [--call-timeout MS] [--platform inproc|jade]
                            [--main-host HOST --main-port PORT | --port PORT]
-                           [--place AGENT=CONTAINER,... | --place FILE]
+                           [--place AGENT=CONTAINER,... | --place FILE] [--secret-file FILE]
                    masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
-                           [--timeout SECONDS]
+                           [--timeout SECONDS] [--secret-file FILE]
                    masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH]
                    masl compile FILE -d DIR [--agent-path PATH]
                    masl check FILE [--agent-path PATH]
@@ -46,7 +41,8 @@ public final class Masl {
               container join a JADE platform as container CONTAINER and host the bodies (the primitives) of the
                         agents a run --place puts there; their programs run in the run's JVM; ends with the mission
               compile   translate a MASL program into Java sources under DIR (one folder per package)
-              check     report every error of a MASL program and of the descriptors it imports
+              check     report every error of a MASL program and of the descriptors it imports: all that
+                        compile and run would report, as they translate and compile it, without running it
               timeline  draw a trace written by run --trace as a self-contained HTML page: one lane per
                         agent over time, coloured by block, with barrier trips, waves, events and invocations
             options:
@@ -56,7 +52,9 @@ public final class Masl {
               --seed N            run on one thread, every scheduling choice drawn from seed N (replayable)
               --timeout SECONDS   stop the mission after SECONDS (default: no limit)
               --call-timeout MS   a primitive running longer than MS milliseconds gives its caller its default
-                                  value and the event timeout; the mission goes on (default: no limit)
+                                  value and the event timeout; the mission goes on (default: no limit); with
+                                  --platform jade it also bounds each FIPA agent's call from outside the mission
+                                  (default for those: 10000)
               --trace FILE        write the trace (one JSON object per line) to FILE
               --platform P        inproc (default): run in this process; jade: run inside a JADE platform,
                                   one JADE agent per MASL agent, registered with the DF, answering FIPA requests
@@ -67,6 +65,9 @@ public final class Masl {
               --place AGENT=CONTAINER,... or FILE (lines AGENT=CONTAINER)
                                   with --platform jade: run these agents' bodies in the containers named (started
                                   with masl container), their programs in this JVM; other agents stay here
+              --secret-file FILE  with --place (and for masl container): where run writes a fresh secret for the
+                                  mission (owner-only, deleted at its end) and its containers read it; they obey
+                                  only messages signed with it (default: .masl-mission-secret in this folder)
             exit status: 0 success, 1 errors in the program or its descriptors, 2 the mission failed,
                          deadlocked or timed out, 64 bad usage, 70 internal error
             """;
@@ -139,9 +140,7 @@ public final class Masl {
 
     private int check(CommandLine line) throws UsageException {
         SourceFile source = readProgram(line.singleFile());
-        Frontend.Result result = new Frontend(AgentPath.parse(line.agentPath)).analyse(source);
-        printDiagnostics(source, result.diagnostics());
-        return result.succeeded() ? OK : PROGRAM_ERRORS;
+        return Pipeline.load(source, AgentPath.parse(line.agentPath), err) == null ? PROGRAM_ERRORS : OK;
     }
 
     private int compile(CommandLine line) throws UsageException {
@@ -149,13 +148,12 @@ public final class Masl {
         if (line.outputFolder == null) {
             throw new UsageException("masl compile needs -d DIR, the folder to write the Java sources into");
         }
-        Translation translation = new Translator(AgentPath.parse(line.agentPath)).translate(source);
-        printDiagnostics(source, translation.diagnostics());
-        if (!translation.succeeded()) {
+        Pipeline.Loaded loaded = Pipeline.load(source, AgentPath.parse(line.agentPath), err);
+        if (loaded == null) {
             return PROGRAM_ERRORS;
         }
         Path folder = Path.of(line.outputFolder);
-        for (Map.Entry<String, String> unit : translation.javaSources().entrySet()) {
+        for (Map.Entry<String, String> unit : loaded.translation().javaSources().entrySet()) {
             Path file = folder.resolve(unit.getKey().replace('.', '/') + ".java");
             try {
                 Files.createDirectories(file.getParent());
@@ -166,10 +164,6 @@ public final class Masl {
             }
         }
         return OK;
-    }
-
-    void printDiagnostics(SourceFile source, Diagnostics diagnostics) {
-        new DiagnosticPrinter(Map.of(source.name(), source.text())).print(diagnostics.sorted(), err);
     }
 
     private static SourceFile readProgram(String name) throws UsageException {

@@ -17,6 +17,7 @@ import masl.runtime.descriptor.DescriptorProblem;
 import masl.runtime.descriptor.DescriptorSource;
 import masl.translator.diagnostics.Diagnostic;
 import masl.translator.diagnostics.Suggestions;
+import masl.translator.parse.Literals;
 import org.antlr.v4.runtime.CommonTokenStream;
 import org.antlr.v4.runtime.Token;
 
@@ -186,8 +187,11 @@ final class HeaderChecker {
      */
     private Optional<String> filePath(MASLParser.FilePathContext path) {
         if (path.StringLiteral() != null) {
-            String quoted = path.StringLiteral().getText();
-            return Optional.of(quoted.substring(1, quoted.length() - 1).replace("\\\"", "\"").replace("\\\\", "\\"));
+            try {
+                return Optional.of(Literals.string(path.StringLiteral().getText()));
+            } catch (Literals.Problem checkedByTheParser) {
+                throw new IllegalStateException(checkedByTheParser);
+            }
         }
         StringBuilder visible = new StringBuilder();
         for (MASLParser.PathElementContext element : path.pathElement()) {

@@ -63,8 +63,9 @@ public final class ProgramParser {
         parser.removeErrorListeners();
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
         parser.setErrorHandler(new BailErrorStrategy());
+        Parsed parsed;
         try {
-            return numbered(source, parser, tokens, false);
+            parsed = numbered(source, parser, tokens, false);
         } catch (ParseCancellationException notSll) {
             tokens.seek(0);
             parser.reset();
@@ -72,7 +73,32 @@ public final class ProgramParser {
             parser.setErrorHandler(new DefaultErrorStrategy());
             parser.addErrorListener(new Reporter(source.name(), diagnostics));
             correctMisspeltModes(tokens, source.name(), diagnostics);
-            return numbered(source, parser, tokens, true);
+            parsed = numbered(source, parser, tokens, true);
+        }
+        checkLiterals(source.name(), tokens, diagnostics);
+        return parsed;
+    }
+
+    /**
+     * Reports each string or character literal Java would not read as it shows ({@link Literals}), at
+     * the escape at fault: the generated Java holds the literals' values, and must hold exactly what
+     * the analysis saw.
+     */
+    private static void checkLiterals(String file, CommonTokenStream tokens, Diagnostics diagnostics) {
+        tokens.fill();
+        for (Token token : tokens.getTokens()) {
+            try {
+                if (token.getType() == MASLLexer.StringLiteral) {
+                    Literals.string(token.getText());
+                } else if (token.getType() == MASLLexer.CharacterLiteral) {
+                    Literals.character(token.getText());
+                }
+            } catch (Literals.Problem problem) {
+                String text = token.getText();
+                diagnostics.error(file, token.getLine(),
+                        token.getCharPositionInLine() + 1 + text.codePointCount(0, problem.offset()),
+                        problem.getMessage());
+            }
         }
     }
 
