@@ -84,10 +84,6 @@ final class ProgramIndex {
                     : stop.getType() == Token.EOF ? Integer.MAX_VALUE : stop.getStopIndex();
             return tree.getStart().getStartIndex() <= index && index <= end;
         }
-
-        int depth() {
-            return parent == null ? 1 : parent.depth() + 1;
-        }
     }
 
     private final ProgramParser.Parsed parsed;
@@ -120,10 +116,6 @@ final class ProgramIndex {
 
     static ProgramIndex of(SourceFile source, AgentPath agentPath) {
         return new ProgramIndex(ProgramParser.parse(source, new Diagnostics()), agentPath);
-    }
-
-    SourceFile source() {
-        return parsed.source();
     }
 
     CommonTokenStream tokens() {

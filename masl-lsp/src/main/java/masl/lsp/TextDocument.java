@@ -6,7 +6,6 @@ import java.util.Arrays;
 import java.util.List;
 import masl.translator.source.SourceFile;
 import org.eclipse.lsp4j.Position;
-import org.eclipse.lsp4j.Range;
 import org.eclipse.lsp4j.TextDocumentContentChangeEvent;
 
 /**
@@ -80,10 +79,6 @@ final class TextDocument {
         return new TextDocument(uri, newVersion, current.text);
     }
 
-    int lineCount() {
-        return lineStarts.length;
-    }
-
     /** The text of a 0-based line, without its line break; empty outside the document. */
     String line(int line) {
         if (line < 0 || line >= lineStarts.length) {
@@ -145,10 +140,6 @@ final class TextDocument {
             column++;
         }
         return new Position(Math.max(0, line1 - 1), utf16 + (codePointColumn - column));
-    }
-
-    Range range(int startOffset, int endOffset) {
-        return new Range(position(startOffset), position(endOffset));
     }
 
     private static int[] lineStarts(String text) {
