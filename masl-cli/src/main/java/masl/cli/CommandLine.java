@@ -18,7 +18,8 @@ final class CommandLine {
             "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--platform", "--main-host",
                     "--main-port", "--sim", "--out", "--place", "--port", "--secret-file"),
             "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout", "--secret-file"),
-            "timeline", Set.of("-o"));
+            "timeline", Set.of("-o"),
+            "lsp", Set.of("--agent-path"));
     private static final Set<String> FLAGS = Set.of("--threads");
     /** Where {@code masl run --place} writes the mission's secret and {@code masl container} reads it, by default. */
     static final String DEFAULT_SECRET_FILE = ".masl-mission-secret";

@@ -1,6 +1,7 @@
 package masl.cli;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
@@ -34,6 +35,7 @@ public final class Masl {
                    masl compile FILE -d DIR [--agent-path PATH]
                    masl check FILE [--agent-path PATH]
                    masl timeline TRACE -o FILE.html
+                   masl lsp [--agent-path PATH]
               run       translate a MASL program, compile it in memory and run its mission in this process;
                         the journal (and only the journal) goes to standard output
                         with --sim, the mission the scenario names runs on its simulated robots; trajectories,
@@ -45,6 +47,8 @@ public final class Masl {
                         compile and run would report, as they translate and compile it, without running it
               timeline  draw a trace written by run --trace as a self-contained HTML page: one lane per
                         agent over time, coloured by block, with barrier trips, waves, events and invocations
+              lsp       serve the Language Server Protocol on standard input and output for an editor: the
+                        diagnostics of check on every change, completion, hover, go to definition, outline
             options:
               --agent-path PATH   folders and jars holding agent descriptors and their classes, ':'-separated;
                                   searched after the program's folder, before the descriptors masl ships
@@ -72,10 +76,17 @@ public final class Masl {
                          deadlocked or timed out, 64 bad usage, 70 internal error
             """;
 
+    private final InputStream in;
     private final PrintStream out;
     private final PrintStream err;
 
     public Masl(PrintStream out, PrintStream err) {
+        this(System.in, out, err);
+    }
+
+    /** @param in what {@code masl lsp} reads its client's messages from */
+    public Masl(InputStream in, PrintStream out, PrintStream err) {
+        this.in = in;
         this.out = out;
         this.err = err;
     }
@@ -111,6 +122,7 @@ public final class Masl {
                         : new RunCommand(out, err).run(line, readProgram(line.singleFile()));
                 case "timeline" -> new TimelineCommand(err).run(line);
                 case "container" -> new ContainerCommand(out, err).run(line);
+                case "lsp" -> new LspCommand(in, out, err).run(line);
                 default -> throw new UsageException("unknown command '" + line.command + "'");
             };
         } catch (UsageException usage) {
