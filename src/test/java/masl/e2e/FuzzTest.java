@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Random;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -174,16 +175,43 @@ class FuzzTest {
         };
     }
 
-    /** Compiles the translations' Java in one run of javac and initialises each mission class. */
+    /**
+     * Compiles the translations' Java in one run of javac and initialises each mission class, on a
+     * thread with a deep stack as {@code MissionLoader} does: javac recurses into nested code too.
+     */
     private static void compileAndLoad(Collection<Translation> translations) throws ReflectiveOperationException {
         List<InMemoryCompiler.Source> sources = new ArrayList<>();
         for (Translation translation : translations) {
             translation.javaSources().forEach((className, text) -> sources.add(new InMemoryCompiler.Source(className, text)));
         }
-        ClassLoader loaded = new InMemoryCompiler(MaslClassPath.runtimeAndShippedAgents())
-                .compile(sources, FuzzTest.class.getClassLoader());
-        for (Translation translation : translations) {
-            Class.forName(translation.missionClassName(), true, loaded);
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        Thread javac = new Thread(null, () -> {
+            try {
+                ClassLoader loaded = new InMemoryCompiler(MaslClassPath.runtimeAndShippedAgents())
+                        .compile(sources, FuzzTest.class.getClassLoader());
+                for (Translation translation : translations) {
+                    Class.forName(translation.missionClassName(), true, loaded);
+                }
+            } catch (Throwable e) {
+                failure.set(e);
+            }
+        }, "javac", 256L * 1024 * 1024);
+        javac.start();
+        try {
+            javac.join();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new AssertionError(e);
+        }
+        Throwable thrown = failure.get();
+        if (thrown instanceof ReflectiveOperationException reflective) {
+            throw reflective;
+        }
+        if (thrown instanceof RuntimeException runtime) {
+            throw runtime;
+        }
+        if (thrown instanceof Error error) {
+            throw error;
         }
     }
 
