@@ -206,16 +206,18 @@ public final class Bench {
         LockStepRun pool = new TaskPoolWaves();
         LockStepRun threads = new PhaserThreads();
         LockStepRun maslThreads = MaslLockStep.threadPerAgent();
+        LockStepRun mason = MasonLockStep.schedule();
+        LockStepRun masonSequence = MasonLockStep.sequence();
         System.out.println("1. Lock-step: N agents in one synchronous block, steps per second (one barrier trip = one step),");
         System.out.println("   timed from the end of the first step to the end of the last (start-up left out), median of " + RUNS + ";");
         System.out.println("   then steps per second of process CPU time over those runs (every thread of the JVM, start-up included),");
         System.out.println("   which other jobs on the machine change much less than elapsed time");
-        System.out.printf(Locale.ROOT, "%8s | %12s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s%n",
+        System.out.printf(Locale.ROOT, "%8s | %12s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s || %12s | %12s | %11s%n",
                 "N", "MASL (pool)", "2-thr pool", "thr+Phaser", "MASL thr", "MASL/pool", "MASL/threads",
-                "MASL cpu", "pool cpu", "MASL/pool");
+                "MASL cpu", "pool cpu", "MASL/pool", "MASON Sched", "MASON Seq", "MASL/MASON");
         for (int agents : options.sizes) {
             int steps = stepsFor(agents, options.seconds);
-            List<LockStepRun> runs = new ArrayList<>(List.of(masl, pool));
+            List<LockStepRun> runs = new ArrayList<>(List.of(masl, pool, mason, masonSequence));
             if (agents <= options.threadLimit) {
                 runs.add(threads);
                 runs.add(maslThreads);
@@ -237,15 +239,18 @@ public final class Bench {
             Double poolRate = median(figures.get(pool.name()));
             Double threadRate = figures.containsKey(threads.name()) ? median(figures.get(threads.name())) : null;
             Double maslThreadRate = figures.containsKey(maslThreads.name()) ? median(figures.get(maslThreads.name())) : null;
+            Double masonRate = median(figures.get(mason.name()));
+            Double sequenceRate = median(figures.get(masonSequence.name()));
             double maslCpu = stepsPerCpuSecond(steps, cpuTimes.get(masl.name()));
             double poolCpu = stepsPerCpuSecond(steps, cpuTimes.get(pool.name()));
-            System.out.printf(Locale.ROOT, "%8d | %12s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s%n", agents,
-                    rate(maslRate), rate(poolRate), rate(threadRate), rate(maslThreadRate), ratio(maslRate, poolRate),
-                    ratio(maslRate, threadRate),
-                    rate(maslCpu), rate(poolCpu), ratio(maslCpu, poolCpu));
+            System.out.printf(Locale.ROOT, "%8d | %12s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s || %12s | %12s | %11s%n",
+                    agents, rate(maslRate), rate(poolRate), rate(threadRate), rate(maslThreadRate), ratio(maslRate, poolRate),
+                    ratio(maslRate, threadRate), rate(maslCpu), rate(poolCpu), ratio(maslCpu, poolCpu),
+                    rate(masonRate), rate(sequenceRate), ratio(maslRate, masonRate));
         }
         System.out.printf(Locale.ROOT, "   (thr+Phaser: hand-written, a platform thread per agent on a Phaser; MASL thr: MASL's thread-per-agent"
-                + " driver, masl run --threads; neither run above N=%d; goal: MASL/pool >= 0.5x at N=1000)%n%n",
+                + " driver, masl run --threads; neither run above N=%d;%n    MASON Sched: MASON 14, each agent scheduleRepeating;"
+                + " MASON Seq: one Sequence on one thread, the floor; goal: MASL/MASON >= 2x at N=1000 and 10000)%n%n",
                 options.threadLimit);
     }
 
