@@ -21,7 +21,7 @@ import masl.jade.JadePlatform;
  *
  * <p>Arguments: {@code --sizes 10,100,1000,10000} (agent counts), {@code --seconds S} (rough time
  * per measurement, default 1), {@code --thread-limit N} (largest N run with one thread per agent,
- * default 1000).
+ * default 1000), {@code --only lockstep,invocations,joining,translation,simulation,lsp,startup}.
  */
 public final class Bench {
 
@@ -31,9 +31,9 @@ public final class Bench {
 
     public static void main(String[] args) throws Exception {
         Options options = Options.parse(args);
-        System.out.printf(Locale.ROOT, "MASL benchmarks on %d cores, %s %s, max heap %d MiB%n%n",
+        System.out.printf(Locale.ROOT, "MASL benchmarks on %d cores, %s %s, max heap %d MiB, %s%n%n",
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.vm.name"),
-                System.getProperty("java.version"), Runtime.getRuntime().maxMemory() >> 20);
+                System.getProperty("java.version"), Runtime.getRuntime().maxMemory() >> 20, loadAverage());
         if (options.runs("lockstep")) {
             lockStep(options);
         }
@@ -51,6 +51,9 @@ public final class Bench {
         }
         if (options.runs("lsp")) {
             lsp();
+        }
+        if (options.runs("startup")) {
+            startUp();
         }
         // A JADE platform that failed to shut down (closeQuietly) leaves threads that are not daemons:
         // they must not keep the benchmark, and `gradle bench` with it, from ending.
@@ -153,6 +156,52 @@ public final class Bench {
         System.out.printf(Locale.ROOT, "%8d | %7.1f ms | %7.1f ms | %7.1f ms | %11.1f ms | %12.1f ms | %10s%n%n",
                 sorted.length, median(sorted), sorted[(int) Math.ceil(sorted.length * 0.9) - 1], sorted[sorted.length - 1],
                 figures.cpuPerChange(), figures.open(), "<= 200 ms");
+    }
+
+    /**
+     * Goal 2 of issue 26: {@code masl run} as whole processes, {@link StartUp}: before the cache, a first
+     * run and a second run of the unchanged program, interleaved.
+     */
+    private static void startUp() throws Exception {
+        System.out.println("8. Start-up: masl run missions/hello.masl as a whole process of the installed command, elapsed and"
+                + " the process's CPU time (median of " + RUNS + ", " + loadAverage() + ")");
+        StartUp startUp = StartUp.installed();
+        try {
+            List<StartUp.Timing> before = new ArrayList<>();
+            List<StartUp.Timing> first = new ArrayList<>();
+            List<StartUp.Timing> second = new ArrayList<>();
+            Map<String, double[]> figures = interleaved(RUNS, List.of(
+                    new Measure("before", () -> record(before, startUp.before())),
+                    new Measure("first", () -> record(first, startUp.first())),
+                    new Measure("second", () -> record(second, startUp.second()))));
+            System.out.printf(Locale.ROOT, "%-52s | %10s | %10s | %10s%n", "", "elapsed", "CPU", "goal");
+            printStartUp("before: --no-cache, the JDK's class-data archive", figures.get("before"), before, "");
+            printStartUp("first run: empty cache, lib/masl.jsa", figures.get("first"), first, "<= before");
+            printStartUp("second run: the mission from the cache", figures.get("second"), second, "<= 0.4 s");
+        } finally {
+            startUp.close();
+        }
+        System.out.println();
+    }
+
+    private static double record(List<StartUp.Timing> timings, StartUp.Timing timing) {
+        timings.add(timing);
+        return timing.elapsed();
+    }
+
+    /** The CPU column skips the warm-up run, as the elapsed figures do. */
+    private static void printStartUp(String row, double[] elapsed, List<StartUp.Timing> timings, String goal) {
+        double[] cpu = timings.subList(1, timings.size()).stream().mapToDouble(StartUp.Timing::cpu).toArray();
+        System.out.printf(Locale.ROOT, "%-52s | %8.2f s | %8.2f s | %10s%n", row, median(elapsed), median(cpu), goal);
+    }
+
+    /** The machine's load average over the last minute, as /proc/loadavg gives it: the bench runs on shared machines. */
+    static String loadAverage() {
+        try {
+            return "load average " + java.nio.file.Files.readString(java.nio.file.Path.of("/proc/loadavg")).split(" ")[0];
+        } catch (java.io.IOException | RuntimeException unknown) {
+            return "load average unknown";
+        }
     }
 
     /** JADE 4.3 sometimes fails to shut its platform down: the figures are printed by then, and the other benchmarks still run. */

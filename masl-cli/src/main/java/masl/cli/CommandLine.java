@@ -16,11 +16,11 @@ final class CommandLine {
             "check", Set.of("--agent-path"),
             "compile", Set.of("--agent-path", "-d"),
             "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--platform", "--main-host",
-                    "--main-port", "--sim", "--out", "--place", "--port", "--secret-file"),
+                    "--main-port", "--sim", "--out", "--place", "--port", "--secret-file", "--no-cache"),
             "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout", "--secret-file"),
             "timeline", Set.of("-o"),
             "lsp", Set.of("--agent-path"));
-    private static final Set<String> FLAGS = Set.of("--threads");
+    private static final Set<String> FLAGS = Set.of("--threads", "--no-cache");
     /** Where {@code masl run --place} writes the mission's secret and {@code masl container} reads it, by default. */
     static final String DEFAULT_SECRET_FILE = ".masl-mission-secret";
 
@@ -30,6 +30,7 @@ final class CommandLine {
     String outputFolder;
     String outputFile;
     boolean threads;
+    boolean noCache;
     Long seed;
     Long timeoutSeconds;
     Long callTimeoutMillis;
@@ -68,7 +69,11 @@ final class CommandLine {
                 if (arg.contains("=")) {
                     throw new UsageException(name + " takes no value");
                 }
-                line.threads = true;
+                if (name.equals("--threads")) {
+                    line.threads = true;
+                } else {
+                    line.noCache = true;
+                }
                 continue;
             }
             String value;

@@ -8,6 +8,7 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.Map;
 import masl.runtime.descriptor.AgentPath;
+import masl.translator.cache.CompiledMissionCache;
 import masl.translator.compile.GeneratedCodeException;
 import masl.translator.source.SourceFile;
 
@@ -26,7 +27,7 @@ public final class Masl {
 
     static final String USAGE_TEXT = """
             usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE]
-                           [--call-timeout MS] [--platform inproc|jade]
+                           [--call-timeout MS] [--platform inproc|jade] [--no-cache]
                            [--main-host HOST --main-port PORT | --port PORT]
                            [--place AGENT=CONTAINER,... | --place FILE] [--secret-file FILE]
                    masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
@@ -60,6 +61,9 @@ public final class Masl {
                                   --platform jade it also bounds each FIPA agent's call from outside the mission
                                   (default for those: 10000)
               --trace FILE        write the trace (one JSON object per line) to FILE
+              --no-cache          translate and compile the program even if an earlier run of the same program,
+                                  descriptors, agent path, masl and JDK left it compiled in the cache
+                                  ($MASL_CACHE_DIR, else $XDG_CACHE_HOME/masl, else ~/.cache/masl)
               --platform P        inproc (default): run in this process; jade: run inside a JADE platform,
                                   one JADE agent per MASL agent, registered with the DF, answering FIPA requests
               --main-host HOST, --main-port PORT
@@ -79,6 +83,7 @@ public final class Masl {
     private final InputStream in;
     private final PrintStream out;
     private final PrintStream err;
+    private final Map<String, String> environment;
 
     public Masl(PrintStream out, PrintStream err) {
         this(System.in, out, err);
@@ -86,9 +91,15 @@ public final class Masl {
 
     /** @param in what {@code masl lsp} reads its client's messages from */
     public Masl(InputStream in, PrintStream out, PrintStream err) {
+        this(in, out, err, System.getenv());
+    }
+
+    /** @param environment the variables that choose the cache of compiled missions ({@code MASL_CACHE_DIR}, {@code XDG_CACHE_HOME}) */
+    public Masl(InputStream in, PrintStream out, PrintStream err, Map<String, String> environment) {
         this.in = in;
         this.out = out;
         this.err = err;
+        this.environment = Map.copyOf(environment);
     }
 
     /**
@@ -119,7 +130,8 @@ public final class Masl {
                 case "check" -> check(line);
                 case "compile" -> compile(line);
                 case "run" -> line.scenarioFile != null ? new SimRun(out, err).run(line)
-                        : new RunCommand(out, err).run(line, readProgram(line.singleFile()));
+                        : new RunCommand(out, err, new CompiledMissionCache(CompiledMissionCache.defaultFolder(environment)))
+                                .run(line, readProgram(line.singleFile()));
                 case "timeline" -> new TimelineCommand(err).run(line);
                 case "container" -> new ContainerCommand(out, err).run(line);
                 case "lsp" -> new LspCommand(in, out, err).run(line);

@@ -16,6 +16,7 @@ import masl.runtime.ThreadPerAgentScheduler;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.trace.JsonLinesTrace;
 import masl.translator.MissionLoader;
+import masl.translator.cache.CompiledMissionCache;
 import masl.translator.source.SourceFile;
 
 /**
@@ -30,10 +31,13 @@ final class RunCommand {
 
     private final PrintStream out;
     private final PrintStream err;
+    private final CompiledMissionCache cache;
 
-    RunCommand(PrintStream out, PrintStream err) {
+    /** @param cache where compiled missions are kept between runs; null for none */
+    RunCommand(PrintStream out, PrintStream err, CompiledMissionCache cache) {
         this.out = out;
         this.err = err;
+        this.cache = cache;
     }
 
     int run(CommandLine line, SourceFile source) throws UsageException {
@@ -48,11 +52,10 @@ final class RunCommand {
                     + " --platform jade");
         }
         AgentPath agentPath = AgentPath.parse(line.agentPath);
-        Pipeline.Loaded compiled = Pipeline.load(source, agentPath, err);
-        if (compiled == null) {
+        MissionLoader loaded = load(line, source, agentPath);
+        if (loaded == null) {
             return Masl.PROGRAM_ERRORS;
         }
-        MissionLoader loaded = compiled.loader();
         Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
         if (line.platform.equals("jade")) {
             JadeRun jade = new JadeRun(line, source, agentPath, loaded, out);
@@ -90,6 +93,16 @@ final class RunCommand {
             out.flush();
             closeTrace(trace, line.traceFile);
         }
+    }
+
+    /** The compiled program, from the cache unless --no-cache; null when it has errors. */
+    private MissionLoader load(CommandLine line, SourceFile source, AgentPath agentPath) {
+        if (line.noCache || cache == null) {
+            Pipeline.Loaded compiled = Pipeline.load(source, agentPath, err);
+            return compiled == null ? null : compiled.loader();
+        }
+        cache.unusable().ifPresent(reason -> err.println("masl: not using the cache of compiled missions: " + reason));
+        return Pipeline.loadForRun(source, agentPath, err, cache);
     }
 
     /** Runs the mission; Ctrl-C stops it (its journal so far is flushed, the exit status is 2). */

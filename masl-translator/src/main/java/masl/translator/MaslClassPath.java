@@ -33,7 +33,8 @@ public final class MaslClassPath {
         return List.copyOf(locations);
     }
 
-    private static Optional<String> locationOf(Class<?> type) {
+    /** The jar or class folder {@code type} was loaded from, when it is a file. */
+    public static Optional<String> locationOf(Class<?> type) {
         CodeSource source = type.getProtectionDomain().getCodeSource();
         if (source == null || source.getLocation() == null) {
             return Optional.empty();

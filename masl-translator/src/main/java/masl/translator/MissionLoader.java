@@ -8,6 +8,7 @@ import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 import masl.runtime.MissionProgram;
 import masl.runtime.descriptor.AgentPath;
+import masl.runtime.descriptor.DescriptorLoader;
 import masl.translator.compile.GeneratedCodeException;
 import masl.translator.compile.InMemoryCompiler;
 
@@ -25,10 +26,16 @@ public final class MissionLoader {
 
     private final ClassLoader classes;
     private final Class<? extends MissionProgram> missionClass;
+    private final Map<String, byte[]> classFiles;
+    /** Whether the descriptors were validated when the program was compiled, byte for byte as they are now. */
+    private final boolean validatedBefore;
 
-    private MissionLoader(ClassLoader classes, Class<? extends MissionProgram> missionClass) {
+    private MissionLoader(ClassLoader classes, Class<? extends MissionProgram> missionClass, Map<String, byte[]> classFiles,
+            boolean validatedBefore) {
         this.classes = classes;
         this.missionClass = missionClass;
+        this.classFiles = classFiles;
+        this.validatedBefore = validatedBefore;
     }
 
     /**
@@ -42,7 +49,6 @@ public final class MissionLoader {
         if (!translation.succeeded()) {
             throw new IllegalArgumentException("the translation of " + translation.source().name() + " has errors");
         }
-        ClassLoader agents = agentPath.classLoader(MissionLoader.class.getClassLoader());
         List<String> classPath = new ArrayList<>();
         for (Path entry : agentPath.entries()) {
             classPath.add(entry.toString());
@@ -52,22 +58,50 @@ public final class MissionLoader {
         for (Map.Entry<String, String> source : translation.javaSources().entrySet()) {
             sources.add(new InMemoryCompiler.Source(source.getKey(), source.getValue()));
         }
-        ClassLoader compiled;
+        Map<String, byte[]> compiled;
         try {
             // javac recurses into nested constructs as the translator does.
             compiled = DeepStack.call("javac " + translation.source().name(),
-                    () -> new InMemoryCompiler(classPath).compile(sources, agents));
+                    () -> new InMemoryCompiler(classPath).compileToBytes(sources));
         } catch (DeepStack.TooDeep overflow) {
             throw new GeneratedCodeException("javac overflowed the stack of " + DeepStack.STACK_BYTES
                     + " bytes on the generated code");
         }
+        return define(translation.missionClassName(), compiled, agentPath, false);
+    }
+
+    /**
+     * Loads class files compiled before by {@link #load} (a cached mission): {@code classFiles} by
+     * binary name, among them {@code missionClassName}, compiled against the descriptors as they are
+     * now (the cache's key says so): their missions read them without validating them again.
+     *
+     * @throws GeneratedCodeException if the mission class cannot be loaded
+     */
+    public static MissionLoader ofCompiled(String missionClassName, Map<String, byte[]> classFiles, AgentPath agentPath) {
+        return define(missionClassName, classFiles, agentPath, true);
+    }
+
+    private static MissionLoader define(String missionClassName, Map<String, byte[]> classFiles, AgentPath agentPath,
+            boolean validatedBefore) {
+        Map<String, byte[]> copy = Map.copyOf(classFiles);
+        ClassLoader agents = agentPath.classLoader(MissionLoader.class.getClassLoader());
+        ClassLoader loaded = InMemoryCompiler.loaderOf(copy, agents);
         try {
-            return new MissionLoader(compiled,
-                    Class.forName(translation.missionClassName(), true, compiled).asSubclass(MissionProgram.class));
+            return new MissionLoader(loaded,
+                    Class.forName(missionClassName, true, loaded).asSubclass(MissionProgram.class), copy, validatedBefore);
         } catch (ClassNotFoundException | ClassCastException | LinkageError e) {
-            throw new GeneratedCodeException("cannot load the generated mission class " + translation.missionClassName()
-                    + ": " + e);
+            throw new GeneratedCodeException("cannot load the generated mission class " + missionClassName + ": " + e);
         }
+    }
+
+    /** The class files of the program, by binary name (read-only; the arrays are not to be changed). */
+    public Map<String, byte[]> classFiles() {
+        return classFiles;
+    }
+
+    /** The binary name of the program's mission class. */
+    public String missionClassName() {
+        return missionClass.getName();
     }
 
     /** A new instance of the generated mission class. */
@@ -88,7 +122,9 @@ public final class MissionLoader {
      */
     public Mission.Builder newMission() {
         try {
-            return program().configure(Mission.builder(), this::newImplementation);
+            return validatedBefore
+                    ? DescriptorLoader.readingValidated(() -> program().configure(Mission.builder(), this::newImplementation))
+                    : program().configure(Mission.builder(), this::newImplementation);
         } catch (IllegalStateException | ClassCastException e) {
             throw new AgentCreationException(e.getMessage(), e);
         }

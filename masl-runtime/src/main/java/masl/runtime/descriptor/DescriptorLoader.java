@@ -47,6 +47,9 @@ public final class DescriptorLoader {
     private static final ClassLoader EMPTY_RESOURCES = new ClassLoader(null) {
     };
 
+    /** Whether this thread is inside {@link #readingValidated}. */
+    private static final ThreadLocal<Boolean> VALIDATED_BEFORE = ThreadLocal.withInitial(() -> false);
+
     private final AgentPath agentPath;
     private final String rootType;
     private final ClassLoader implementationClasses;
@@ -79,6 +82,22 @@ public final class DescriptorLoader {
     }
 
     /**
+     * Runs {@code action} with the descriptors this thread loads meanwhile read without checking them
+     * against the schema (compiling the schema is most of a cold load). Only for descriptors whose bytes
+     * were validated already: a program the cache of compiled missions holds was translated against
+     * exactly these bytes, or it would have another key. Every other rule is still enforced.
+     */
+    public static <T> T readingValidated(Supplier<T> action) {
+        boolean outer = VALIDATED_BEFORE.get();
+        VALIDATED_BEFORE.set(true);
+        try {
+            return action.get();
+        } finally {
+            VALIDATED_BEFORE.set(outer);
+        }
+    }
+
+    /**
      * Loads the descriptor in {@code file}, and its supertypes.
      *
      * @throws DescriptorException when it or a supertype has problems
@@ -98,7 +117,7 @@ public final class DescriptorLoader {
             return cached;
         }
         Problems problems = new Problems(source.displayName());
-        DescriptorReader.Result read = DescriptorReader.read(source);
+        DescriptorReader.Result read = DescriptorReader.read(source, !VALIDATED_BEFORE.get());
         problems.addAll(read.problems());
         Declaration declaration = read.root() == null ? null : DeclarationReader.read(read.root(), problems);
         if (declaration == null) {

@@ -45,7 +45,6 @@ final class DescriptorReader {
     static final String SCHEMA_RESOURCE = "agent-type.xsd";
 
     private static final XMLInputFactory INPUT = secureInputFactory();
-    private static final Schema SCHEMA = loadSchema();
 
     /** The tree (null when the file is not well-formed or unreadable) and the problems found. */
     record Result(XmlElement root, List<DescriptorProblem> problems) {
@@ -54,13 +53,26 @@ final class DescriptorReader {
     private DescriptorReader() {
     }
 
+    /** Compiled when first needed: a run whose descriptors were validated before never needs it. */
+    private static final class Compiled {
+        static final Schema SCHEMA = loadSchema();
+    }
+
     static Result read(DescriptorSource source) {
+        return read(source, true);
+    }
+
+    /**
+     * Reads {@code source}; without {@code validate}, the schema is not checked: for a descriptor whose
+     * bytes were validated before (see {@link DescriptorLoader#readingValidated}).
+     */
+    static Result read(DescriptorSource source, boolean validate) {
         List<DescriptorProblem> problems = new ArrayList<>();
         String file = source.displayName();
         try (InputStream in = source.open()) {
             XMLStreamReader reader = INPUT.createXMLStreamReader(source.uri().toString(), in);
             try {
-                return new Result(readValidating(reader, file, problems), problems);
+                return new Result(readValidating(reader, file, problems, validate), problems);
             } finally {
                 reader.close();
             }
@@ -95,31 +107,28 @@ final class DescriptorReader {
         }
     }
 
-    private static XmlElement readValidating(XMLStreamReader reader, String file, List<DescriptorProblem> problems)
-            throws XMLStreamException, SAXException {
+    private static XmlElement readValidating(XMLStreamReader reader, String file, List<DescriptorProblem> problems,
+            boolean validate) throws XMLStreamException, SAXException {
         Deque<ElementBuilder> open = new ArrayDeque<>();
         ProblemCollector collector = new ProblemCollector(file, problems);
-        ValidatorHandler validator = SCHEMA.newValidatorHandler();
-        // Schema location hints (xsi:schemaLocation) must not make the validator fetch anything either.
-        validator.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
-        validator.setProperty(XMLConstants.ACCESS_EXTERNAL_DTD, "");
-        validator.setProperty(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "");
-        validator.setErrorHandler(collector);
-        validator.setDocumentLocator(new ReaderLocator(reader, file));
-        validator.startDocument();
+        ValidatorHandler validator = validate ? validator(reader, file, collector) : null;
         XmlElement root = null;
         while (reader.hasNext()) {
             switch (reader.next()) {
                 case XMLStreamConstants.START_ELEMENT -> {
                     ElementBuilder element = ElementBuilder.start(reader);
                     collector.validating = element;
-                    validator.startElement(nonNull(reader.getNamespaceURI()), element.name, qualifiedName(reader),
-                            saxAttributes(reader));
+                    if (validator != null) {
+                        validator.startElement(nonNull(reader.getNamespaceURI()), element.name, qualifiedName(reader),
+                                saxAttributes(reader));
+                    }
                     open.push(element);
                 }
                 case XMLStreamConstants.END_ELEMENT -> {
-                    validator.endElement(nonNull(reader.getNamespaceURI()), reader.getLocalName(),
-                            qualifiedName(reader));
+                    if (validator != null) {
+                        validator.endElement(nonNull(reader.getNamespaceURI()), reader.getLocalName(),
+                                qualifiedName(reader));
+                    }
                     XmlElement done = open.pop().build();
                     if (open.isEmpty()) {
                         root = done;
@@ -130,16 +139,32 @@ final class DescriptorReader {
                 }
                 case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA, XMLStreamConstants.SPACE -> {
                     collector.validating = open.peek();
-                    char[] text = reader.getTextCharacters();
-                    validator.characters(text, reader.getTextStart(), reader.getTextLength());
+                    if (validator != null) {
+                        validator.characters(reader.getTextCharacters(), reader.getTextStart(), reader.getTextLength());
+                    }
                 }
                 default -> {
                     // Comments, processing instructions and the ignored DOCTYPE mean nothing here.
                 }
             }
         }
-        validator.endDocument();
+        if (validator != null) {
+            validator.endDocument();
+        }
         return root;
+    }
+
+    private static ValidatorHandler validator(XMLStreamReader reader, String file, ProblemCollector collector)
+            throws SAXException {
+        ValidatorHandler validator = Compiled.SCHEMA.newValidatorHandler();
+        // Schema location hints (xsi:schemaLocation) must not make the validator fetch anything either.
+        validator.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
+        validator.setProperty(XMLConstants.ACCESS_EXTERNAL_DTD, "");
+        validator.setProperty(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "");
+        validator.setErrorHandler(collector);
+        validator.setDocumentLocator(new ReaderLocator(reader, file));
+        validator.startDocument();
+        return validator;
     }
 
     /**

@@ -43,6 +43,20 @@ public final class InMemoryCompiler {
      * @throws GeneratedCodeException if javac reports an error, with javac's messages for the bug report
      */
     public ClassLoader compile(List<Source> sources, ClassLoader parent) {
+        return loaderOf(compileToBytes(sources), parent);
+    }
+
+    /** A class loader defining {@code classes} (binary name to class file), child of {@code parent}. */
+    public static ClassLoader loaderOf(Map<String, byte[]> classes, ClassLoader parent) {
+        return new ByteArrayClassLoader(classes, parent);
+    }
+
+    /**
+     * Compiles {@code sources} to class files, by binary name.
+     *
+     * @throws GeneratedCodeException if javac reports an error, with javac's messages for the bug report
+     */
+    public Map<String, byte[]> compileToBytes(List<Source> sources) {
         JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
         if (javac == null) {
             throw new GeneratedCodeException("no Java compiler in this runtime: masl needs a JDK, not a JRE");
@@ -66,7 +80,9 @@ public final class InMemoryCompiler {
             }
             throw new GeneratedCodeException(report.toString());
         }
-        return new ByteArrayClassLoader(output.classes, parent);
+        Map<String, byte[]> classes = new HashMap<>();
+        output.classes.forEach((name, file) -> classes.put(name, file.bytes.toByteArray()));
+        return classes;
     }
 
     private String joinedClassPath() {
@@ -122,20 +138,19 @@ public final class InMemoryCompiler {
     }
 
     private static final class ByteArrayClassLoader extends ClassLoader {
-        private final Map<String, ClassInMemory> classes;
+        private final Map<String, byte[]> classes;
 
-        ByteArrayClassLoader(Map<String, ClassInMemory> classes, ClassLoader parent) {
+        ByteArrayClassLoader(Map<String, byte[]> classes, ClassLoader parent) {
             super(parent);
             this.classes = Map.copyOf(classes);
         }
 
         @Override
         protected Class<?> findClass(String name) throws ClassNotFoundException {
-            ClassInMemory file = classes.get(name);
-            if (file == null) {
+            byte[] bytes = classes.get(name);
+            if (bytes == null) {
                 throw new ClassNotFoundException(name);
             }
-            byte[] bytes = file.bytes.toByteArray();
             return defineClass(name, bytes, 0, bytes.length);
         }
     }
