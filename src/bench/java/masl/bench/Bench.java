@@ -114,6 +114,14 @@ public final class Bench {
         Callable<Double> elapsed = MaslTranslation.prepare(lines, false);
         Callable<Double> cpu = MaslTranslation.prepare(lines, true);
         System.out.printf(Locale.ROOT, "%26s | %14s | %14s | %12s%n", "first in this JVM (cpu)", "-", rate(cpu.call()), "");
+        // Goal 4 of issue 26: what masl run pays without its cache, in fresh JVMs started as the command starts them.
+        Map<String, double[]> cold = interleaved(RUNS, List.of(
+                new Measure("archive", () -> ColdTranslation.measure(lines, true)),
+                new Measure("plain", () -> ColdTranslation.measure(lines, false))));
+        System.out.printf(Locale.ROOT, "%26s | %14s | %14s | %12s%n", "fresh JVM, masl.jsa", "-",
+                rate(median(cold.get("archive"))), ">= 50,000");
+        System.out.printf(Locale.ROOT, "%26s | %14s | %14s | %12s%n", "fresh JVM, no archive", "-",
+                rate(median(cold.get("plain"))), "");
         for (int i = 0; i < TRANSLATION_WARM_UP; i++) {
             elapsed.call();
         }
