@@ -21,7 +21,7 @@ import masl.jade.JadePlatform;
  *
  * <p>Arguments: {@code --sizes 10,100,1000,10000} (agent counts), {@code --seconds S} (rough time
  * per measurement, default 1), {@code --thread-limit N} (largest N run with one thread per agent,
- * default 1000), {@code --only lockstep,invocations,joining,translation,simulation,lsp,startup}.
+ * default 1000), {@code --only lockstep,invocations,joining,translation,simulation,lsp,startup,scale}.
  */
 public final class Bench {
 
@@ -54,6 +54,9 @@ public final class Bench {
         }
         if (options.runs("startup")) {
             startUp();
+        }
+        if (options.runs("scale")) {
+            scale();
         }
         // A JADE platform that failed to shut down (closeQuietly) leaves threads that are not daemons:
         // they must not keep the benchmark, and `gradle bench` with it, from ending.
@@ -189,6 +192,26 @@ public final class Bench {
         } finally {
             startUp.close();
         }
+        System.out.println();
+    }
+
+    /** Goal 3 of issue 26: {@link AgentScale}, 100,000 agents in a fresh JVM with the default heap. */
+    private static void scale() throws Exception {
+        int agents = 100_000;
+        int steps = 200;
+        System.out.println("9. Scale: " + String.format(Locale.ROOT, "%,d", agents) + " agents in one synchronous block, "
+                + steps + " steps, a fresh JVM with the default heap (median of 3, " + loadAverage() + ")");
+        List<AgentScale.Figures> runs = new ArrayList<>();
+        for (int run = 0; run < 3; run++) {
+            runs.add(AgentScale.measure(agents, steps));
+        }
+        System.out.printf(Locale.ROOT, "%10s | %14s | %14s | %16s%n", "N", "start", "steps / s", "bytes per agent");
+        System.out.printf(Locale.ROOT, "%10s | %12.2f s | %14s | %16s%n", String.format(Locale.ROOT, "%,d", agents),
+                median(runs.stream().mapToDouble(AgentScale.Figures::startSeconds).toArray()),
+                rate(median(runs.stream().mapToDouble(AgentScale.Figures::stepsPerSecond).toArray())),
+                rate(median(runs.stream().mapToDouble(AgentScale.Figures::bytesPerAgent).toArray())));
+        System.out.println("   (start: the program's text to the end of its first step, translating and javac included;"
+                + " goals: start <= 5 s, >= 100 steps/s)");
         System.out.println();
     }
 

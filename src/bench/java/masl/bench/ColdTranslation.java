@@ -24,6 +24,16 @@ final class ColdTranslation {
 
     /** Lines per CPU second of one fresh JVM's first translation of a {@code lines}-line program. */
     static double measure(int lines, boolean archive) throws Exception {
+        String output = runFresh(archive, ColdTranslation.class, String.valueOf(lines));
+        return Double.parseDouble(output.substring(output.lastIndexOf('\n') + 1));
+    }
+
+    /** The output of {@code main} run in a fresh JVM started as the command starts its own, with its archive. */
+    static String runFresh(Class<?> main, String... args) throws Exception {
+        return runFresh(true, main, args);
+    }
+
+    private static String runFresh(boolean archive, Class<?> main, String... args) throws Exception {
         Path lib = Path.of(System.getProperty("masl.bench.home", ".")).toAbsolutePath()
                 .resolve("masl-cli/build/install/masl/lib");
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
@@ -32,13 +42,14 @@ final class ColdTranslation {
         }
         // The command's class path first (the archive holds classes from it, in its order), then the bench's own.
         command.addAll(List.of("-cp", installedClassPath(lib) + File.pathSeparator + System.getProperty("java.class.path"),
-                ColdTranslation.class.getName(), String.valueOf(lines)));
+                main.getName()));
+        command.addAll(List.of(args));
         Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
         String output = new String(process.getInputStream().readAllBytes()).strip();
         if (process.waitFor() != 0) {
-            throw new IllegalStateException("the cold translation failed: " + output);
+            throw new IllegalStateException(main.getSimpleName() + " failed in a fresh JVM: " + output);
         }
-        return Double.parseDouble(output.substring(output.lastIndexOf('\n') + 1));
+        return output;
     }
 
     /** The class path of the installed start script, in its order. */

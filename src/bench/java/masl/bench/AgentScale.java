@@ -1,0 +1,63 @@
+package masl.bench;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryMXBean;
+import java.time.Duration;
+import java.util.Locale;
+import masl.runtime.Mission;
+import masl.runtime.PoolScheduler;
+import masl.runtime.trace.TraceEvent;
+import masl.translator.MissionLoader;
+
+/**
+ * Goal 3 of issue 26: a mission of 100,000 agents in one synchronous block, in a fresh JVM with the
+ * default heap, started as the command starts its JVM ({@link ColdTranslation#runFresh}). {@link
+ * #main} is that JVM: it prints the time to start (the program's source to the end of its first step:
+ * translating, javac, creating the agents, the first wave), the steps per second after it, and the
+ * bytes per agent (heap in use after a collection at the end of the first step, less before, divided
+ * by N).
+ */
+final class AgentScale {
+
+    /** Start, steps per second and bytes per agent of one fresh JVM. */
+    record Figures(double startSeconds, double stepsPerSecond, double bytesPerAgent) { }
+
+    private AgentScale() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        int agents = Integer.parseInt(args[0]);
+        int steps = Integer.parseInt(args[1]);
+        MemoryMXBean memory = ManagementFactory.getMemoryMXBean();
+        String source = MaslLockStep.source(agents, steps);
+        System.gc();
+        long heapBefore = memory.getHeapMemoryUsage().getUsed();
+        long start = System.nanoTime();
+        long[] firstStep = new long[1];
+        long[] heapStarted = new long[1];
+        StepClock clock = new StepClock();
+        MissionLoader program = MaslLockStep.compile(source);
+        Mission mission = program.newMission().scheduler(new PoolScheduler()).journal(new StringBuilder())
+                .trace(event -> {
+                    if (event instanceof TraceEvent.BarrierTripped) {
+                        clock.stepEnded();
+                        if (firstStep[0] == 0) {
+                            firstStep[0] = System.nanoTime();
+                            // Started: every agent exists and has run its first step. Delays the second step
+                            // by a collection, a small part of the steps the rate is taken over.
+                            System.gc();
+                            heapStarted[0] = memory.getHeapMemoryUsage().getUsed();
+                        }
+                    }
+                }).build();
+        mission.run(Duration.ofMinutes(30)).requireCompleted();
+        System.out.printf(Locale.ROOT, "%f %f %f%n", (firstStep[0] - start) / 1e9, clock.stepsPerSecond(),
+                (double) (heapStarted[0] - heapBefore) / agents);
+    }
+
+    static Figures measure(int agents, int steps) throws Exception {
+        String output = ColdTranslation.runFresh(AgentScale.class, String.valueOf(agents), String.valueOf(steps));
+        String[] figures = output.substring(output.lastIndexOf('\n') + 1).split(" ");
+        return new Figures(Double.parseDouble(figures[0]), Double.parseDouble(figures[1]), Double.parseDouble(figures[2]));
+    }
+}
