@@ -5,7 +5,7 @@ import java.lang.management.MemoryMXBean;
 import java.time.Duration;
 import java.util.Locale;
 import masl.runtime.Mission;
-import masl.runtime.PoolScheduler;
+import masl.runtime.scheduling.PoolScheduler;
 import masl.runtime.trace.TraceEvent;
 import masl.translator.MissionLoader;
 
