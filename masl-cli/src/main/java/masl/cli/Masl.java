@@ -104,7 +104,7 @@ public final class Masl {
             err.println("masl: internal error: the Java generated for this program does not compile; please report it"
                     + " with the program" + savedReport(bug));
             return INTERNAL_ERROR;
-        } catch (RuntimeException | StackOverflowError | OutOfMemoryError bug) {
+        } catch (RuntimeException | StackOverflowError | OutOfMemoryError | LinkageError bug) {
             err.println("masl: internal error, please report it with the program that caused it: " + bug);
             return INTERNAL_ERROR;
         }
