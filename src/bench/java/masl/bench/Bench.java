@@ -49,6 +49,9 @@ public final class Bench {
         if (options.runs("simulation")) {
             simulation();
         }
+        if (options.runs("lsp")) {
+            lsp();
+        }
         // A JADE platform that failed to shut down (closeQuietly) leaves threads that are not daemons:
         // they must not keep the benchmark, and `gradle bench` with it, from ending.
         System.exit(0);
@@ -135,6 +138,21 @@ public final class Bench {
                 masl, bare, ratio(masl, bare), maslCpu, bareCpu, ratio(maslCpu, bareCpu));
         System.out.println("   (goal: MASL/bare >= 0.8x)");
         System.out.println();
+    }
+
+    /** Item 7 (issue 27): the editor's wait for diagnostics after a change, {@link LspLatency}. */
+    private static void lsp() throws Exception {
+        System.out.println("7. Editor: masl lsp's diagnostics after a one-line change to a generated " + String.format(Locale.ROOT,
+                "%,d", LspLatency.LINES) + "-line program, from didChange sent to publishDiagnostics received");
+        LspLatency.Figures figures = LspLatency.measure();
+        double[] sorted = figures.changes().clone();
+        java.util.Arrays.sort(sorted);
+        System.out.println("   elapsed per change, and process CPU time per change (what other jobs on the machine do not change)");
+        System.out.printf(Locale.ROOT, "%8s | %10s | %10s | %10s | %14s | %15s | %10s%n", "changes", "median", "p90", "max",
+                "CPU per change", "first, on open", "goal");
+        System.out.printf(Locale.ROOT, "%8d | %7.1f ms | %7.1f ms | %7.1f ms | %11.1f ms | %12.1f ms | %10s%n%n",
+                sorted.length, median(sorted), sorted[(int) Math.ceil(sorted.length * 0.9) - 1], sorted[sorted.length - 1],
+                figures.cpuPerChange(), figures.open(), "<= 200 ms");
     }
 
     /** JADE 4.3 sometimes fails to shut its platform down: the figures are printed by then, and the other benchmarks still run. */

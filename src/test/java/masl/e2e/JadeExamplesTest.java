@@ -15,7 +15,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
  * JADE, as a user runs them: {@code masl run FILE --platform jade}, joining a main container this
  * class starts once (JADE keeps a platform at least 3 s; and JADE's runtime, one per JVM, does not
  * shut a second main container down cleanly). The command's own platform, its default, is tested in
- * masl-translator ({@code JadeRunTest}). Each journal is the one examples.md states; standard error
+ * masl-cli ({@code JadeRunTest}). Each journal is the one examples.md states; standard error
  * stays empty.
  */
 @Timeout(120)

@@ -1,11 +1,14 @@
 package masl.e2e;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.regex.Pattern;
 import masl.cli.Main;
@@ -20,7 +23,8 @@ import org.junit.jupiter.api.Timeout;
  * second JVM (started here with this class path and the {@code java} of {@code java.home}), and
  * {@code masl run --platform jade --port P --place …} in this one, which starts the main container,
  * runs every program and the coordinator, and has the bodies placed on {@code c2} run their
- * primitives there. Journals as examples.md states them; the second JVM ends by itself when the
+ * primitives there; the two share the mission's secret through a file ({@code --secret-file}), which
+ * {@code masl run} deletes at the end. Journals as examples.md states them; the second JVM ends by itself when the
  * mission ends (and is ended in any case); no JADE thread is left in this JVM after each mission.
  */
 @Timeout(120)
@@ -67,14 +71,21 @@ class TwoJvmJadeExamplesTest {
 
     private static Run split(String example, String placement) throws Exception {
         int port = freePort();
+        Path secretFile = Files.createTempDirectory("masl-mission").resolve("secret");
         try (SecondJvm container = SecondJvm.start(Main.class, "container", "--main-host", "127.0.0.1",
-                "--main-port", String.valueOf(port), "--name", "c2", "--timeout", "60")) {
+                "--main-port", String.valueOf(port), "--name", "c2", "--timeout", "60",
+                "--secret-file", secretFile.toString())) {
             MaslCommand run = MaslCommand.run("run", "src/test/resources/examples/" + example, "--platform", "jade",
-                    "--port", String.valueOf(port), "--place", placement, "--timeout", "60");
+                    "--port", String.valueOf(port), "--place", placement, "--timeout", "60",
+                    "--secret-file", secretFile.toString());
             assertEquals("", run.err(), container.output());
             assertEquals(0, run.status(), container.output());
             assertEquals(List.of(), JadeThreads.live(), "JADE threads left in this JVM after the mission");
+            assertFalse(Files.exists(secretFile), "the mission's secret outlived it");
             return new Run(run.out(), container.assertEndsByItself());
+        } finally {
+            Files.deleteIfExists(secretFile);
+            Files.delete(secretFile.getParent());
         }
     }
 

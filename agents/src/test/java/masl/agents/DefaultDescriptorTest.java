@@ -1,6 +1,7 @@
 package masl.agents;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -33,14 +34,32 @@ class DefaultDescriptorTest {
         assertEquals("long", root.findPrimitive("sleep").orElseThrow().parameters().get(0).type());
     }
 
+    /** {@code default} allows everything but others calling {@code sleep}: an outsider must not pause an agent. */
     @Test
-    void rootStatesAreNothingAndDefaultWhichAllowsEverything() {
+    void rootStatesAreNothingAndDefaultWhichAllowsEverythingButOthersSleeping() {
         AgentType root = loader.loadByClassName(DescriptorLoader.ROOT_TYPE);
         assertEquals(List.of("nothing", "default"), root.states().stream().map(PermeabilityState::name).toList());
         assertEquals("default", root.initialState().orElseThrow().name());
+        PermeabilityState defaultState = root.findState("default").orElseThrow();
         for (Primitive primitive : root.primitives()) {
-            assertEquals(0777, root.findState("default").orElseThrow().rights(primitive.memberId()));
+            assertEquals(primitive.name().equals("sleep") ? 0110 : 0777, defaultState.rights(primitive.memberId()),
+                    primitive.name());
             assertEquals(0, root.findState("nothing").orElseThrow().rights(primitive.memberId()));
+        }
+        String sleep = root.findPrimitive("sleep").orElseThrow().memberId();
+        assertTrue(defaultState.allows(sleep, PermeabilityState.Requester.SELF, PermeabilityState.INVOKE));
+        assertTrue(defaultState.allows(sleep, PermeabilityState.Requester.GROUP, PermeabilityState.INVOKE));
+        assertFalse(defaultState.allows(sleep, PermeabilityState.Requester.OTHER, PermeabilityState.INVOKE));
+    }
+
+    /** A subtype that declares no state of its own: its members all allowed in {@code default}, {@code sleep} not to others. */
+    @Test
+    void subtypesKeepEverythingButOthersSleeping() {
+        AgentType robot = loader.loadByClassName("masl.agents.WheeledRobot");
+        PermeabilityState defaultState = robot.findState("default").orElseThrow();
+        for (Primitive primitive : robot.primitives()) {
+            assertEquals(primitive.name().equals("sleep") ? 0110 : 0777, defaultState.rights(primitive.memberId()),
+                    primitive.name());
         }
     }
 }

@@ -16,15 +16,18 @@ final class CommandLine {
             "check", Set.of("--agent-path"),
             "compile", Set.of("--agent-path", "-d"),
             "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--platform", "--main-host",
-                    "--main-port", "--sim", "--out", "--place", "--port"),
-            "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout"),
-            "timeline", Set.of("-o"));
+                    "--main-port", "--sim", "--out", "--place", "--port", "--secret-file"),
+            "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout", "--secret-file"),
+            "timeline", Set.of("-o"),
+            "lsp", Set.of("--agent-path"));
     private static final Set<String> FLAGS = Set.of("--threads");
     /**
      * The longest {@code --timeout}: ten years, within the nanosecond arithmetic of deadlines
      * ({@code Long.MAX_VALUE} ns is 292 years), and longer than any mission.
      */
     static final long MAX_TIMEOUT_SECONDS = 3650L * 24 * 60 * 60;
+    /** Where {@code masl run --place} writes the mission's secret and {@code masl container} reads it, by default. */
+    static final String DEFAULT_SECRET_FILE = ".masl-mission-secret";
 
     final String command;
     final List<String> operands = new ArrayList<>();
@@ -43,6 +46,7 @@ final class CommandLine {
     String place;
     Integer port;
     String containerName;
+    String secretFile;
 
     private CommandLine(String command) {
         this.command = command;
@@ -101,6 +105,7 @@ final class CommandLine {
             case "--port" -> port = port(option, value);
             case "--place" -> place = value;
             case "--name" -> containerName = value;
+            case "--secret-file" -> secretFile = value;
             default -> throw new UsageException("unknown option " + option);
         }
     }

@@ -2,10 +2,12 @@ package masl.cli;
 
 import java.io.OutputStream;
 import java.io.PrintStream;
+import java.nio.file.Path;
 import java.time.Duration;
 import masl.jade.JadeException;
 import masl.jade.JadeOptions;
 import masl.jade.MaslContainer;
+import masl.jade.MissionSecret;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.descriptor.DescriptorLoader;
 
@@ -18,6 +20,9 @@ import masl.runtime.descriptor.DescriptorLoader;
  * sends ({@code masl-event {"event": …}}) and, at the end, the bodies hosted
  * ({@code masl-ended hosted b,d}); exit 0 once the mission ended, 2 if {@code --timeout} elapsed first, the
  * platform cannot be joined, or the coordinator or the main container disappeared (noticed within a second).
+ * It obeys only the platform's coordinator, and only messages signed with the secret {@code masl run}
+ * wrote to {@code --secret-file} (read when the coordinator first writes); each message refused is one
+ * line on standard error.
  */
 final class ContainerCommand {
 
@@ -81,7 +86,9 @@ final class ContainerCommand {
             try {
                 return MaslContainer.start(JadeOptions.join(line.mainHost, line.mainPort), line.containerName,
                         descriptors::loadByClassName, descriptors.implementationClasses(),
-                        event -> out.println("masl-event " + event.getContent()));
+                        event -> out.println("masl-event " + event.getContent()), MissionSecret.Source.file(Path.of(
+                                line.secretFile == null ? CommandLine.DEFAULT_SECRET_FILE : line.secretFile)),
+                        refusal -> err.println("masl: container " + line.containerName + ": " + refusal));
             } catch (JadeException notYet) {
                 if (System.nanoTime() - deadline > 0) {
                     throw notYet;

@@ -1,5 +1,7 @@
 package masl.cli;
 
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -9,6 +11,7 @@ import java.util.Optional;
 import masl.jade.JadeException;
 import masl.jade.JadeLauncher;
 import masl.jade.JadeOptions;
+import masl.jade.MissionSecret;
 import masl.jade.Placement;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
@@ -33,6 +36,8 @@ final class JadeRun {
     private final JadeOptions options;
     private final Map<String, String> placement;
     private final JournalOutput journal;
+    private final Path secretFile;
+    private final Duration callTimeout;
 
     /**
      * @throws UsageException if the command line asks for something JADE runs cannot do: a scheduler
@@ -57,6 +62,12 @@ final class JadeRun {
                 : line.port != null ? JadeOptions.mainContainer().withPort(line.port) : JadeOptions.mainContainer();
         this.placement = line.place == null ? Map.of() : placement(line.place, loaded);
         this.journal = journal;
+        if (line.secretFile != null && placement.isEmpty()) {
+            throw new UsageException("--secret-file is where the containers of --place find the mission's secret:"
+                    + " give it with --place");
+        }
+        this.secretFile = Path.of(line.secretFile == null ? CommandLine.DEFAULT_SECRET_FILE : line.secretFile);
+        this.callTimeout = line.callTimeoutMillis == null ? null : Duration.ofMillis(line.callTimeoutMillis);
     }
 
     /** {@code --place}: pairs or a file, naming agents the program declares. */
@@ -105,12 +116,45 @@ final class JadeRun {
                     }
                 });
         try {
+            if (callTimeout != null) {
+                launcher.callTimeout(callTimeout);
+            }
+            if (!placement.isEmpty()) {
+                launcher.secret(shareSecret());
+            }
             return launcher.run(options, timeout);
+        } catch (IOException unwritable) {
+            return failed(new JadeException("cannot write the mission's secret for its containers to " + secretFile
+                    + ": " + unwritable.getMessage()), MissionOutcome.Status.FAILED);
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
             return failed(interrupted, MissionOutcome.Status.STOPPED);
         } catch (JadeException | IllegalStateException cannotRun) {
             return failed(cannotRun, MissionOutcome.Status.FAILED);
+        } finally {
+            forgetSecret();
+        }
+    }
+
+    /**
+     * A fresh secret for this mission, written to {@code --secret-file} (owner-only) for the
+     * containers of {@code --place} to read when its coordinator first writes to them.
+     */
+    private MissionSecret shareSecret() throws IOException {
+        MissionSecret secret = MissionSecret.generate();
+        secret.writeTo(secretFile);
+        return secret;
+    }
+
+    /** The secret served this mission only: its file goes with it. */
+    private void forgetSecret() {
+        if (placement.isEmpty()) {
+            return;
+        }
+        try {
+            Files.deleteIfExists(secretFile);
+        } catch (IOException kept) {
+            // Harmless: the next mission writes a secret of its own over it.
         }
     }
 

@@ -1,24 +1,21 @@
 package masl.cli;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.Map;
 import masl.runtime.descriptor.AgentPath;
-import masl.translator.Frontend;
-import masl.translator.Translation;
-import masl.translator.Translator;
 import masl.translator.compile.GeneratedCodeException;
-import masl.translator.diagnostics.DiagnosticPrinter;
-import masl.translator.diagnostics.Diagnostics;
 import masl.translator.source.SourceFile;
 
 /**
  * The {@code masl} command. Exit statuses (components.md): 0 success, 1 errors in the program or its
- * descriptors, 2 the mission failed (deadlock, crash, timeout), 64 bad usage, 70 an internal error (a
- * bug of masl, reported as one, never as a stack trace).
+ * descriptors, 2 the mission failed (deadlock, crash, timeout, lost journal), 64 bad usage, 70 an
+ * internal error (a bug of masl, reported as one, never as a stack trace); a run Ctrl-C or SIGTERM
+ * stops ends with the JVM's 130 or 143 ({@link StopOnSignal}).
  */
 public final class Masl {
 
@@ -32,13 +29,14 @@ public final class Masl {
             usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE]
                            [--call-timeout MS] [--platform inproc|jade]
                            [--main-host HOST --main-port PORT | --port PORT]
-                           [--place AGENT=CONTAINER,... | --place FILE]
+                           [--place AGENT=CONTAINER,... | --place FILE] [--secret-file FILE]
                    masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
-                           [--timeout SECONDS]
+                           [--timeout SECONDS] [--secret-file FILE]
                    masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH]
                    masl compile FILE -d DIR [--agent-path PATH]
                    masl check FILE [--agent-path PATH]
                    masl timeline TRACE -o FILE.html
+                   masl lsp [--agent-path PATH]
               run       translate a MASL program, compile it in memory and run its mission in this process;
                         the journal (and only the journal) goes to standard output
                         with --sim, the mission the scenario names runs on its simulated robots; trajectories,
@@ -46,9 +44,12 @@ public final class Masl {
               container join a JADE platform as container CONTAINER and host the bodies (the primitives) of the
                         agents a run --place puts there; their programs run in the run's JVM; ends with the mission
               compile   translate a MASL program into Java sources under DIR (one folder per package)
-              check     report every error of a MASL program and of the descriptors it imports
+              check     report every error of a MASL program and of the descriptors it imports: all that
+                        compile and run would report, as they translate and compile it, without running it
               timeline  draw a trace written by run --trace as a self-contained HTML page: one lane per
                         agent over time, coloured by block, with barrier trips, waves, events and invocations
+              lsp       serve the Language Server Protocol on standard input and output for an editor: the
+                        diagnostics of check on every change, completion, hover, go to definition, outline
             options:
               --agent-path PATH   folders and jars holding agent descriptors and their classes, ':'-separated;
                                   searched after the program's folder, before the descriptors masl ships
@@ -56,7 +57,9 @@ public final class Masl {
               --seed N            run on one thread, every scheduling choice drawn from seed N (replayable)
               --timeout SECONDS   stop the mission after SECONDS (default: no limit)
               --call-timeout MS   a primitive running longer than MS milliseconds gives its caller its default
-                                  value and the event timeout; the mission goes on (default: no limit)
+                                  value and the event timeout; the mission goes on (default: no limit); with
+                                  --platform jade it also bounds each FIPA agent's call from outside the mission
+                                  (default for those: 10000)
               --trace FILE        write the trace (one JSON object per line) to FILE
               --platform P        inproc (default): run in this process; jade: run inside a JADE platform,
                                   one JADE agent per MASL agent, registered with the DF, answering FIPA requests
@@ -67,22 +70,49 @@ public final class Masl {
               --place AGENT=CONTAINER,... or FILE (lines AGENT=CONTAINER)
                                   with --platform jade: run these agents' bodies in the containers named (started
                                   with masl container), their programs in this JVM; other agents stay here
+              --secret-file FILE  with --place (and for masl container): where run writes a fresh secret for the
+                                  mission (owner-only, deleted at its end) and its containers read it; they obey
+                                  only messages signed with it (default: .masl-mission-secret in this folder)
             exit status: 0 success, 1 errors in the program or its descriptors, 2 the mission failed,
-                         deadlocked or timed out, 64 bad usage, 70 internal error
+                         deadlocked or timed out, or its journal could not be written, 64 bad usage,
+                         70 internal error, 130 or 143 stopped by Ctrl-C or SIGTERM
             """;
 
+    private final InputStream in;
     private final PrintStream out;
     private final PrintStream err;
 
     public Masl(PrintStream out, PrintStream err) {
+        this(System.in, out, err);
+    }
+
+    /** @param in what {@code masl lsp} reads its client's messages from */
+    public Masl(InputStream in, PrintStream out, PrintStream err) {
+        this.in = in;
         this.out = out;
         this.err = err;
+    }
+
+    /**
+     * {@code masl --help}, {@code masl help [COMMAND]}, or {@code --help}/{@code -h} among a
+     * command's words, whatever else they hold: the usage, on standard output, status 0.
+     */
+    private static boolean asksForHelp(String... args) {
+        if (args.length > 0 && args[0].equals("help")) {
+            return true;
+        }
+        for (String arg : args) {
+            if (arg.equals("--help") || arg.equals("-h")) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Runs one invocation and returns its exit status; never throws. */
     public int run(String... args) {
         try {
-            if (args.length == 1 && (args[0].equals("--help") || args[0].equals("-h") || args[0].equals("help"))) {
+            if (asksForHelp(args)) {
                 out.print(USAGE_TEXT);
                 return OK;
             }
@@ -94,6 +124,7 @@ public final class Masl {
                         : new RunCommand(out, err).run(line, readProgram(line.singleFile()));
                 case "timeline" -> new TimelineCommand(err).run(line);
                 case "container" -> new ContainerCommand(out, err).run(line);
+                case "lsp" -> new LspCommand(in, out, err).run(line);
                 default -> throw new UsageException("unknown command '" + line.command + "'");
             };
         } catch (UsageException usage) {
@@ -123,9 +154,7 @@ public final class Masl {
 
     private int check(CommandLine line) throws UsageException {
         SourceFile source = readProgram(line.singleFile());
-        Frontend.Result result = new Frontend(AgentPath.parse(line.agentPath)).analyse(source);
-        printDiagnostics(source, result.diagnostics());
-        return result.succeeded() ? OK : PROGRAM_ERRORS;
+        return Pipeline.load(source, AgentPath.parse(line.agentPath), err) == null ? PROGRAM_ERRORS : OK;
     }
 
     private int compile(CommandLine line) throws UsageException {
@@ -133,13 +162,12 @@ public final class Masl {
         if (line.outputFolder == null) {
             throw new UsageException("masl compile needs -d DIR, the folder to write the Java sources into");
         }
-        Translation translation = new Translator(AgentPath.parse(line.agentPath)).translate(source);
-        printDiagnostics(source, translation.diagnostics());
-        if (!translation.succeeded()) {
+        Pipeline.Loaded loaded = Pipeline.load(source, AgentPath.parse(line.agentPath), err);
+        if (loaded == null) {
             return PROGRAM_ERRORS;
         }
         Path folder = Path.of(line.outputFolder);
-        for (Map.Entry<String, String> unit : translation.javaSources().entrySet()) {
+        for (Map.Entry<String, String> unit : loaded.translation().javaSources().entrySet()) {
             Path file = folder.resolve(unit.getKey().replace('.', '/') + ".java");
             try {
                 Files.createDirectories(file.getParent());
@@ -150,10 +178,6 @@ public final class Masl {
             }
         }
         return OK;
-    }
-
-    void printDiagnostics(SourceFile source, Diagnostics diagnostics) {
-        new DiagnosticPrinter(Map.of(source.name(), source.text())).print(diagnostics.sorted(), err);
     }
 
     private static SourceFile readProgram(String name) throws UsageException {

@@ -16,9 +16,6 @@ import masl.runtime.ThreadPerAgentScheduler;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.trace.JsonLinesTrace;
 import masl.translator.MissionLoader;
-import masl.translator.Translation;
-import masl.translator.Translator;
-import masl.translator.diagnostics.DiagnosticPrinter;
 import masl.translator.source.SourceFile;
 
 /**
@@ -49,11 +46,9 @@ final class RunCommand {
         if (!line.platform.equals("jade") && (line.mainHost != null || line.mainPort != null)) {
             throw new UsageException("--main-host and --main-port join a JADE platform: give them with --platform jade");
         }
-        if (line.callTimeoutMillis != null && line.platform.equals("jade")) {
-            throw new UsageException("--call-timeout bounds calls in-process: not with --platform jade yet");
-        }
-        if (!line.platform.equals("jade") && (line.place != null || line.port != null)) {
-            throw new UsageException("--place and --port are for a JADE platform: give them with --platform jade");
+        if (!line.platform.equals("jade") && (line.place != null || line.port != null || line.secretFile != null)) {
+            throw new UsageException("--place, --port and --secret-file are for a JADE platform: give them with"
+                    + " --platform jade");
         }
         try (StopOnSignal signals = new StopOnSignal(err)) {
             return translateAndRun(line, source, signals);
@@ -62,13 +57,11 @@ final class RunCommand {
 
     private int translateAndRun(CommandLine line, SourceFile source, StopOnSignal signals) throws UsageException {
         AgentPath agentPath = AgentPath.parse(line.agentPath);
-        Translation translation = new Translator(agentPath).translate(source);
-        new DiagnosticPrinter(java.util.Map.of(source.name(), source.text()))
-                .print(translation.diagnostics().sorted(), err);
-        if (!translation.succeeded()) {
+        Pipeline.Loaded compiled = Pipeline.load(source, agentPath, err);
+        if (compiled == null) {
             return Masl.PROGRAM_ERRORS;
         }
-        MissionLoader loaded = MissionLoader.load(translation, agentPath);
+        MissionLoader loaded = compiled.loader();
         Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
         JournalOutput journal = new JournalOutput(out);
         if (line.platform.equals("jade")) {

@@ -7,7 +7,6 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.LinkedHashSet;
-import java.util.Map;
 import java.util.Set;
 import masl.runtime.MissionOutcome;
 import masl.runtime.descriptor.AgentPath;
@@ -17,10 +16,6 @@ import masl.sim.scenario.ScenarioException;
 import masl.sim.scenario.ScenarioLoader;
 import masl.sim.scenario.ScenarioRunner;
 import masl.sim.scenario.SimulationResult;
-import masl.translator.MissionLoader;
-import masl.translator.Translation;
-import masl.translator.Translator;
-import masl.translator.diagnostics.DiagnosticPrinter;
 import masl.translator.source.SourceFile;
 
 /**
@@ -71,9 +66,8 @@ final class SimRun {
             return Masl.PROGRAM_ERRORS;
         }
         AgentPath agentPath = AgentPath.parse(agentPathWithDescriptors(scenario, line.agentPath));
-        Translation translation = new Translator(agentPath).translate(source);
-        new DiagnosticPrinter(Map.of(source.name(), source.text())).print(translation.diagnostics().sorted(), err);
-        if (!translation.succeeded()) {
+        Pipeline.Loaded loaded = Pipeline.load(source, agentPath, err);
+        if (loaded == null) {
             return Masl.PROGRAM_ERRORS;
         }
         Path output = outputFolder(line.outputFolder, scenarioFile);
@@ -82,7 +76,6 @@ final class SimRun {
             err.println("masl: cannot write the simulation's output to " + output + ": " + unwritable);
             return Masl.USAGE;
         }
-        MissionLoader loaded = MissionLoader.load(translation, agentPath);
         JournalOutput journal = new JournalOutput(out);
         try (StopOnSignal signals = new StopOnSignal(err)) {
             RunOptions options = RunOptions.defaults()
@@ -95,7 +88,7 @@ final class SimRun {
                             mission.stop(StopOnSignal.REASON);
                         }
                     });
-            SimulationResult result = new ScenarioRunner(seeded(scenario, line.seed)).run(loaded.program(), options);
+            SimulationResult result = new ScenarioRunner(seeded(scenario, line.seed)).run(loaded.loader().program(), options);
             return report(result, scenario, output, signals, journal);
         } catch (ScenarioException doesNotFit) {
             doesNotFit.errors().forEach(err::println);

@@ -10,8 +10,11 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /** {@code masl check} as a user meets it: exit statuses, the rendering of errors, usage mistakes. */
 class CheckCommandTest {
@@ -79,6 +82,20 @@ class CheckCommandTest {
         assertEquals(64, Run.of("check", "--fast", program.toString()).status());
         assertEquals(64, Run.of("check", program.toString(), program.toString()).status());
         assertEquals(64, Run.of("check", program.toString(), "--agent-path").status());
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"run", "check", "compile", "container", "timeline"})
+    void everyCommandAnswersHelpWithItsUsageAndStatusZero(String command) {
+        for (String help : List.of("--help", "-h")) {
+            Run run = Run.of(command, help);
+            assertEquals(0, run.status(), run::toString);
+            assertTrue(run.out().startsWith("usage: masl ") && run.out().contains("masl " + command), run.out());
+            assertEquals("", run.err());
+        }
+        Run asked = Run.of("help", command);
+        assertEquals(0, asked.status());
+        assertTrue(asked.out().startsWith("usage: masl "), asked.out());
     }
 
     @Test

@@ -91,6 +91,11 @@ class JadeRunTest {
         assertEquals(64, Run.of("run", program, "--place", "a=c2").status(), "--place needs --platform jade");
         assertEquals(64, Run.of("run", program, "--platform", "jade", "--port", "1099", "--main-host", "h",
                 "--main-port", "1099").status(), "--port starts a main container, --main-* join one");
+        Run secretAlone = Run.of("run", program, "--platform", "jade", "--secret-file", "s");
+        assertEquals(64, secretAlone.status());
+        assertTrue(secretAlone.err().startsWith("masl: --secret-file is where the containers of --place find the"
+                + " mission's secret: give it with --place\n"), secretAlone.err());
+        assertEquals(64, Run.of("run", program, "--secret-file", "s").status(), "--secret-file needs --platform jade");
     }
 
     @Test

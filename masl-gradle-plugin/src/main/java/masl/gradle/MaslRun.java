@@ -1,30 +1,35 @@
 package masl.gradle;
 
-import java.io.ByteArrayOutputStream;
 import java.io.File;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
 import java.util.stream.Collectors;
-import masl.cli.Masl;
-import org.gradle.api.DefaultTask;
 import org.gradle.api.GradleException;
 import org.gradle.api.file.ConfigurableFileCollection;
 import org.gradle.api.file.FileCollection;
+import org.gradle.api.provider.Property;
 import org.gradle.api.tasks.Internal;
+import org.gradle.api.tasks.JavaExec;
 import org.gradle.api.tasks.TaskAction;
+import org.gradle.util.GradleVersion;
 
 /**
- * Runs one mission of {@code src/main/masl} as {@code masl run} does, in the build's JVM: the journal
- * goes to the build's output as it is written, and an error in the program, or a mission that
- * fails, fails the task with the command's diagnostics. Never up to date: running is the point.
+ * Runs one mission of {@code src/main/masl} with the {@code masl} command ({@code masl run}) in a JVM
+ * of its own, started in the project's folder: the journal, and only the journal, on standard
+ * output, as it is written; progress and diagnostics on standard error. The class path is the
+ * configuration {@code maslTool} (masl-cli, masl-jade-bridge only for {@code platform=jade}) with the
+ * project's runtime class path and compiled classes, so agent classes of the project run as they do
+ * in its tests. A program error or a mission that does not complete fails the task. Never up to date:
+ * running is the point.
  */
-public class MaslRun extends DefaultTask {
+public class MaslRun extends JavaExec {
+
+    static final String MAIN_CLASS = "masl.cli.Main";
 
     private final ConfigurableFileCollection programs = getProject().files();
     private final ConfigurableFileCollection agentPath = getProject().files();
+    private final File projectDir = getProject().getProjectDir();
     private String mission;
     private String platform;
     private String seed;
@@ -32,7 +37,26 @@ public class MaslRun extends DefaultTask {
     private String callTimeoutMillis;
 
     public MaslRun() {
-        getOutputs().upToDateWhen(task -> false);
+        setMainClassName(this, MAIN_CLASS);
+        // Program names in diagnostics are relative to it, as maslCompile's are.
+        setWorkingDir(projectDir);
+    }
+
+    /**
+     * JavaExec's main class is {@code main} up to Gradle 6.3 (removed in 8) and the property
+     * {@code mainClass} from 6.4, which the Gradle API of 4.4 this plug-in compiles against lacks.
+     */
+    @SuppressWarnings("unchecked")
+    static void setMainClassName(JavaExec task, String name) {
+        if (GradleVersion.current().compareTo(GradleVersion.version("6.4")) < 0) {
+            task.setMain(name);
+            return;
+        }
+        try {
+            ((Property<String>) JavaExec.class.getMethod("getMainClass").invoke(task)).set(name);
+        } catch (ReflectiveOperationException absent) {
+            throw new IllegalStateException("JavaExec.getMainClass() is missing from Gradle " + GradleVersion.current().getVersion(), absent);
+        }
     }
 
     @Internal
@@ -73,6 +97,10 @@ public class MaslRun extends DefaultTask {
         this.platform = platform;
     }
 
+    boolean inJade() {
+        return "jade".equals(platform);
+    }
+
     @Internal
     public String getSeed() {
         return seed;
@@ -100,41 +128,31 @@ public class MaslRun extends DefaultTask {
         this.callTimeoutMillis = callTimeoutMillis;
     }
 
+    /** JavaExec's action, with the arguments of the mission chosen and masl's failure named as such. */
+    @Override
     @TaskAction
-    public void runMission() {
+    public void exec() {
         File program = chosenProgram();
-        ByteArrayOutputStream diagnostics = new ByteArrayOutputStream();
-        PrintStream journal = new PrintStream(new LineLogger(getLogger()), true, StandardCharsets.UTF_8);
-        Thread thread = Thread.currentThread();
-        ClassLoader previous = thread.getContextClassLoader();
-        thread.setContextClassLoader(MaslRun.class.getClassLoader());
-        int status;
+        setArgs(arguments(program));
         try {
-            status = new Masl(journal, new PrintStream(diagnostics, true, StandardCharsets.UTF_8)).run(arguments(program));
-        } finally {
-            thread.setContextClassLoader(previous);
-            journal.close();
-        }
-        String report = diagnostics.toString(StandardCharsets.UTF_8);
-        if (status != 0) {
-            throw new GradleException("mission " + program.getName() + " failed (masl exit status " + status + ")"
-                    + (report.isEmpty() ? "" : ":\n" + report));
-        }
-        if (!report.isEmpty()) {
-            getLogger().warn(report);
+            super.exec();
+        } catch (RuntimeException failed) {
+            throw new GradleException("mission " + missionName(program) + " failed, masl's report is above ("
+                    + failed.getMessage() + "; exit status 1: errors in the program or its descriptors, 2: the mission"
+                    + " failed, deadlocked or timed out)", failed);
         }
     }
 
-    private String[] arguments(File program) {
-        // Absolute: the build's JVM does not run in the project's folder. Diagnostics with the
-        // project-relative name come from maslCompile, which runs first.
-        List<String> arguments = new ArrayList<>(List.of("run", program.getAbsolutePath()));
+    private List<String> arguments(File program) {
+        List<String> arguments = new ArrayList<>(List.of("run", ProjectModel.relative(projectDir, program)));
         String path = agentPath.getFiles().stream().map(File::getPath).collect(Collectors.joining(File.pathSeparator));
         if (!path.isEmpty()) {
             arguments.addAll(List.of("--agent-path", path));
         }
-        if (platform != null && !platform.equals("inproc")) {
+        if (inJade()) {
             arguments.addAll(List.of("--platform", platform));
+        } else if (platform != null && !platform.equals("inproc")) {
+            throw new GradleException("unknown platform '" + platform + "': inproc (the default) or jade");
         }
         if (seed != null) {
             arguments.addAll(List.of("--seed", seed));
@@ -145,7 +163,7 @@ public class MaslRun extends DefaultTask {
         if (callTimeoutMillis != null) {
             arguments.addAll(List.of("--call-timeout", callTimeoutMillis));
         }
-        return arguments.toArray(String[]::new);
+        return arguments;
     }
 
     private File chosenProgram() {

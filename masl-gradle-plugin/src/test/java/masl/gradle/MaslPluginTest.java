@@ -1,28 +1,21 @@
 package masl.gradle;
 
+import static masl.gradle.UserBuild.gradle;
+import static masl.gradle.UserBuild.write;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.File;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Arrays;
-import java.util.List;
-import java.util.stream.Collectors;
 import org.gradle.testkit.runner.BuildResult;
-import org.gradle.testkit.runner.GradleRunner;
 import org.gradle.testkit.runner.TaskOutcome;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/**
- * Builds small stand-alone projects that apply the plug-in from this build's output, with the
- * installed Gradle distribution (system property {@code masl.gradleHome}) and the plug-in's class
- * path ({@code masl.pluginClasspath}), both set by this module's build script.
- */
+/** Small stand-alone builds applying the published plug-in by its id and version. */
 class MaslPluginTest {
 
     private static final String E1 = """
@@ -39,26 +32,23 @@ class MaslPluginTest {
 
     @BeforeEach
     void writeProject() throws IOException {
-        Files.writeString(project.resolve("settings.gradle"), "rootProject.name = 'team'\n");
-        Files.writeString(project.resolve("build.gradle"), "plugins { id 'masl' }\n");
-        Files.createDirectories(project.resolve("src/main/masl"));
-        Files.writeString(project.resolve("src/main/masl/team.masl"), E1);
+        write(project.resolve("settings.gradle"), UserBuild.SETTINGS + "rootProject.name = 'team'\n");
+        write(project.resolve("build.gradle"), UserBuild.BUILD);
+        write(project.resolve("src/main/masl/team.masl"), E1);
     }
 
     @Test
     void translatesAndCompilesThenIsUpToDateThenRebuildsAnEditedProgram() throws IOException {
-        BuildResult first = gradle("classes").build();
+        BuildResult first = gradle(project, "classes").build();
         assertEquals(TaskOutcome.SUCCESS, first.task(":maslCompile").getOutcome());
-        assertEquals(TaskOutcome.SUCCESS, first.task(":compileJava").getOutcome());
         assertTrue(Files.isRegularFile(project.resolve("build/generated/masl/main/masl/generated/team/TeamMission.java")));
-        assertTrue(Files.isRegularFile(project.resolve("build/classes/java/main/masl/generated/team/TeamMission.class")));
+        assertTrue(Files.isRegularFile(project.resolve("build/classes/masl/main/masl/generated/team/TeamMission.class")));
 
-        BuildResult second = gradle("classes").build();
+        BuildResult second = gradle(project, "classes").build();
         assertEquals(TaskOutcome.UP_TO_DATE, second.task(":maslCompile").getOutcome());
-        assertEquals(TaskOutcome.UP_TO_DATE, second.task(":compileJava").getOutcome());
 
         Files.writeString(project.resolve("src/main/masl/team.masl"), E1.replace("team", "crew"));
-        BuildResult third = gradle("classes").build();
+        BuildResult third = gradle(project, "classes").build();
         assertEquals(TaskOutcome.SUCCESS, third.task(":maslCompile").getOutcome());
         assertTrue(generatedSources().contains("\"crew\""), "the edited program was translated again");
         assertFalse(generatedSources().contains("\"team\""), "nothing stale is left");
@@ -68,7 +58,7 @@ class MaslPluginTest {
     void anErrorInTheProgramFailsTheBuildWithItsPosition() throws IOException {
         Files.writeString(project.resolve("src/main/masl/team.masl"), E1.replace(".logln(\"team\");", ".logln(\"team\";"));
 
-        BuildResult result = gradle("classes").buildAndFail();
+        BuildResult result = gradle(project, "classes").buildAndFail();
 
         assertEquals(TaskOutcome.FAILED, result.task(":maslCompile").getOutcome());
         assertTrue(result.getOutput().contains("src/main/masl/team.masl:5:16: error: expected ')'"), result.getOutput());
@@ -76,16 +66,66 @@ class MaslPluginTest {
 
     @Test
     void maslRunPrintsTheJournalOfExampleE1() {
-        BuildResult result = gradle("-q", "maslRun", "-Pmission=team").build();
+        BuildResult result = gradle(project, "-q", "maslRun", "-Pmission=team").build();
 
         assertEquals("Hi team\n", result.getOutput());
     }
 
     @Test
     void maslRunInsideJadePrintsTheSameJournal() {
-        BuildResult result = gradle("-q", "maslRun", "-Pmission=team", "-Pplatform=jade").build();
+        BuildResult result = gradle(project, "-q", "maslRun", "-Pmission=team", "-Pplatform=jade").build();
 
         assertEquals("Hi team\n", result.getOutput());
+    }
+
+    @Test
+    void aMissionThatFailsFailsMaslRunWithMaslsReport() throws IOException {
+        write(project.resolve("src/main/masl/team.masl"), E1.replace(".logln(\"team\");", ".logln(\"team\" + (1 / 0));"));
+
+        BuildResult result = gradle(project, "maslRun").buildAndFail();
+
+        assertTrue(result.getOutput().contains("masl: the mission failed"), result.getOutput());
+        assertTrue(result.getOutput().contains("mission team failed, masl's report is above"), result.getOutput());
+    }
+
+    /**
+     * Agent types of another subproject, its descriptor among the jar's resources: the jar on the
+     * agent path is where the translator finds the descriptor, and the generated code the class.
+     */
+    @Test
+    void agentTypesOfAnotherSubprojectsJarOnTheAgentPath() throws IOException {
+        write(project.resolve("settings.gradle"), UserBuild.SETTINGS + "rootProject.name = 'crew'\ninclude 'robots', 'app'\n");
+        Files.delete(project.resolve("build.gradle"));
+        write(project.resolve("robots/build.gradle"), """
+                apply plugin: 'java'
+                repositories { mavenLocal(); mavenCentral() }
+                dependencies { implementation 'org.masl:agents:%s' }
+                """.formatted(UserBuild.VERSION));
+        write(project.resolve("robots/src/main/java/robots/Greeter.java"), """
+                package robots;
+                public class Greeter extends masl.agents.Default {
+                    public String greeting() { return "Hi from robots"; }
+                }
+                """);
+        write(project.resolve("robots/src/main/resources/Greeter.xml"), """
+                <Agent short_class_name="Greeter" full_class_name="robots.Greeter" target_language="java">
+                  <Primitive function_name="greeting" member_id="G1" synchronous_call="true" return_type_name="java.lang.String">
+                    <Modifier modifier_name="public"/>
+                  </Primitive>
+                </Agent>
+                """);
+        write(project.resolve("app/build.gradle"), UserBuild.BUILD + """
+                masl { agentPath { project(':robots').jar } }
+                """);
+        write(project.resolve("app/src/main/masl/greet.masl"), """
+                import Greeter.xml as Greeter;
+                Greeter g = newAgent(Greeter);
+                scalar entry main (true) { .logln(.greeting()); }
+                """);
+
+        BuildResult result = gradle(project, "-q", ":app:maslRun").build();
+
+        assertEquals("Hi from robots\n", result.getOutput());
     }
 
     private String generatedSources() throws IOException {
@@ -96,16 +136,5 @@ class MaslPluginTest {
             }
             return all.toString();
         }
-    }
-
-    private GradleRunner gradle(String... arguments) {
-        List<File> pluginClasspath = Arrays.stream(System.getProperty("masl.pluginClasspath").split(File.pathSeparator))
-                .map(File::new)
-                .collect(Collectors.toList());
-        return GradleRunner.create()
-                .withGradleInstallation(new File(System.getProperty("masl.gradleHome")))
-                .withProjectDir(project.toFile())
-                .withPluginClasspath(pluginClasspath)
-                .withArguments(arguments);
     }
 }

@@ -8,7 +8,6 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
-import java.util.concurrent.atomic.AtomicLong;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.JsonContent;
 import masl.jade.acl.Reply;
@@ -20,11 +19,12 @@ import masl.runtime.AgentImplementation;
  * object whose primitives run here. The agent's program runs in the coordinator's JVM.
  *
  * <ul>
- * <li>A request from the coordinator runs its primitive on a thread of the container's pool (so
- * a primitive that blocks holds no JADE thread) and is answered with the result, or the exception,
- * and the journal text it wrote ({@link BodyJournal}).
- * <li>A request from any other FIPA agent is read here ({@code NOT_UNDERSTOOD} at once if
- * malformed), then relayed to the coordinator ({@value CoordinatorAgent#RELAY}), which filters it
+ * <li>A request from the coordinator, signed with the mission's secret ({@link MissionSecret}), runs
+ * its primitive on a thread of the container's pool (so a primitive that blocks holds no JADE
+ * thread) and is answered with the result, or the exception, and the journal text it wrote
+ * ({@link BodyJournal}).
+ * <li>A request from any other FIPA agent (or one merely claiming to be the coordinator) is read
+ * here ({@code NOT_UNDERSTOOD} at once if malformed), then relayed to the coordinator ({@value CoordinatorAgent#RELAY}), which filters it
  * by the agent's permeability state as an <em>other</em> when the agent serves it, as in-process,
  * and has it run here; its answer goes back to the requester with the requester's
  * {@code in-reply-to}.
@@ -36,16 +36,18 @@ final class BodyAgent extends RegisteredMaslAgent {
     private final transient AgentImplementation implementation;
     private final transient BodyJournal journal;
     private final transient AID coordinator;
+    private final transient MissionSecret secret;
+    private final transient ReplayWindow taken = new ReplayWindow();
     private final transient ExecutorService primitiveThreads;
     private final transient Map<String, ACLMessage> relayed = new ConcurrentHashMap<>();
-    private final transient AtomicLong relays = new AtomicLong();
 
     BodyAgent(AgentImplementation implementation, BodyJournal journal, PrimitiveTable primitives, AID coordinator,
-            ExecutorService primitiveThreads, CountDownLatch ready) {
+            MissionSecret secret, ExecutorService primitiveThreads, CountDownLatch ready) {
         super(primitives, ready);
         this.implementation = implementation;
         this.journal = journal;
         this.coordinator = coordinator;
+        this.secret = secret;
         this.primitiveThreads = primitiveThreads;
     }
 
@@ -55,7 +57,8 @@ final class BodyAgent extends RegisteredMaslAgent {
     }
 
     private void take(ACLMessage message) {
-        ACLMessage requester = message.getInReplyTo() == null ? null : relayed.remove(message.getInReplyTo());
+        ACLMessage requester = message.getInReplyTo() == null || !coordinator.equals(message.getSender()) ? null
+                : relayed.remove(message.getInReplyTo());
         if (requester != null) {
             answer(forwarded(requester, message));
             return;
@@ -64,7 +67,8 @@ final class BodyAgent extends RegisteredMaslAgent {
         if (call == null) {
             return;
         }
-        if (coordinator.equals(message.getSender())) {
+        if (coordinator.equals(message.getSender()) && secret.signed(message, getLocalName())
+                && taken.take(message.getUserDefinedParameter(MissionSecret.SEQUENCE))) {
             serve(message, call);
         } else {
             relay(message);
@@ -88,7 +92,7 @@ final class BodyAgent extends RegisteredMaslAgent {
         relay.setLanguage(AclInvocations.LANGUAGE);
         relay.setOntology(AclInvocations.ONTOLOGY);
         relay.setContent(request.getContent());
-        String replyWith = getLocalName() + "-relay-" + relays.incrementAndGet();
+        String replyWith = UnguessableIds.next(getLocalName() + "-relay");
         relay.setReplyWith(replyWith);
         relayed.put(replyWith, request);
         send(relay);

@@ -8,6 +8,7 @@ import jade.domain.FIPAException;
 import jade.lang.acl.ACLMessage;
 import jade.wrapper.AgentController;
 import jade.wrapper.StaleProxyException;
+import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -28,7 +29,9 @@ import masl.runtime.descriptor.AgentType;
 /**
  * The agent of a container that hosts bodies ({@link MaslContainer}), named
  * {@code masl-container-NAME} and registered with the DF as {@value DfEntries#CONTAINER_SERVICE}
- * {@code NAME}. It answers the coordinator: {@value CoordinatorAgent#PLACE} creates the bodies of
+ * {@code NAME}. It obeys the platform's {@value CoordinatorAgent#NAME} only, and only control
+ * messages signed with the mission's secret ({@link MissionSecret}); any other is refused, said in
+ * one line, and changes nothing. {@value CoordinatorAgent#PLACE} (once) creates the bodies of
  * the agents placed here ({@link BodyAgent}; {@code INFORM} once they exist and are registered,
  * {@code FAILURE} with the reason otherwise), {@value CoordinatorAgent#END} deletes them, answers,
  * and ends the container's mission. Shared events ({@code INFORM} {@value CoordinatorAgent#EVENT})
@@ -49,21 +52,35 @@ final class ContainerHost extends Agent {
     private final transient Function<String, AgentType> types;
     private final transient ClassLoader classes;
     private final transient Consumer<ACLMessage> events;
+    private final transient MissionSecret.Source secretSource;
+    private final transient Consumer<String> refusals;
     private final transient CountDownLatch ready = new CountDownLatch(1);
     private final transient CountDownLatch ended = new CountDownLatch(1);
     private final transient List<AgentController> controllers = new ArrayList<>();
     private final transient List<BodyAgent> bodies = new ArrayList<>();
     private transient ExecutorService primitiveThreads;
     private final transient List<String> hosted = new CopyOnWriteArrayList<>();
-    private transient volatile AID coordinator;
+    /** The one agent whose control messages this container obeys: the platform's {@value CoordinatorAgent#NAME}. */
+    private transient AID coordinator;
+    /** The mission's secret, once a control message bore its signature; read from the source until then. */
+    private transient MissionSecret secret;
+    private final transient ReplayWindow taken = new ReplayWindow();
+    private transient volatile boolean placed;
     private transient volatile String lost;
 
+    /**
+     * @param secretSource the mission's secret, asked for until a control message bears its signature
+     * @param refusals     told one line for each control message refused (not from the coordinator with
+     *                     the mission's secret), on this agent's thread
+     */
     ContainerHost(String containerName, Function<String, AgentType> types, ClassLoader classes,
-            Consumer<ACLMessage> events) {
+            Consumer<ACLMessage> events, MissionSecret.Source secretSource, Consumer<String> refusals) {
         this.containerName = containerName;
         this.types = types;
         this.classes = classes;
         this.events = events;
+        this.secretSource = secretSource;
+        this.refusals = refusals;
     }
 
     static String agentName(String containerName) {
@@ -72,6 +89,7 @@ final class ContainerHost extends Agent {
 
     @Override
     protected void setup() {
+        coordinator = new AID(CoordinatorAgent.NAME, AID.ISLOCALNAME);
         try {
             DFService.register(this, DfEntries.service(getAID(), DfEntries.CONTAINER_SERVICE, containerName));
         } catch (FIPAException e) {
@@ -94,7 +112,7 @@ final class ContainerHost extends Agent {
     private ACLMessage aliveCheck() {
         ACLMessage check = new ACLMessage(ACLMessage.INFORM);
         check.setConversationId(ALIVE);
-        check.addReceiver(coordinator == null ? getAMS() : coordinator);
+        check.addReceiver(placed ? coordinator : getAMS());
         return check;
     }
 
@@ -127,28 +145,88 @@ final class ContainerHost extends Agent {
     }
 
     private void take(ACLMessage message) {
-        if (message.getPerformative() == ACLMessage.REQUEST && CoordinatorAgent.PLACE.equals(message.getConversationId())) {
-            coordinator = message.getSender();
-            send(place(message));
-        } else if (message.getPerformative() == ACLMessage.FAILURE && message.getSender().equals(getAMS())
+        if (message.getPerformative() == ACLMessage.FAILURE && message.getSender().equals(getAMS())
                 && ALIVE.equals(message.getConversationId())) {
             if (ended.getCount() > 0) {
-                lost = coordinator == null ? "the platform's main container is gone"
-                        : "the mission's coordinator is gone (its JVM died or it left the platform)";
+                lost = placed ? "the mission's coordinator is gone (its JVM died or it left the platform)"
+                        : "the platform's main container is gone";
                 deleteBodies();
                 ended.countDown();
             }
-        } else if (message.getPerformative() == ACLMessage.REQUEST
-                && CoordinatorAgent.END.equals(message.getConversationId())) {
-            deleteBodies();
-            send(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)));
-            ended.countDown();
-        } else if (message.getPerformative() == ACLMessage.INFORM
-                && CoordinatorAgent.EVENT.equals(message.getConversationId())) {
-            events.accept(message);
+        } else if (isControl(message)) {
+            String refusal = refusal(message);
+            if (refusal != null) {
+                refuse(message, refusal);
+            } else {
+                obey(message);
+            }
         } else if (message.getPerformative() != ACLMessage.NOT_UNDERSTOOD) {
             send(AclInvocations.notUnderstood(message, new ContentException(
                     "a MASL container answers its mission's coordinator only")));
+        }
+    }
+
+    private static boolean isControl(ACLMessage message) {
+        String conversation = message.getConversationId();
+        return message.getPerformative() == ACLMessage.REQUEST
+                && (CoordinatorAgent.PLACE.equals(conversation) || CoordinatorAgent.END.equals(conversation))
+                || message.getPerformative() == ACLMessage.INFORM && CoordinatorAgent.EVENT.equals(conversation);
+    }
+
+    /** A control message that passed {@link #refusal}: placement (once), end, or an event. */
+    private void obey(ACLMessage message) {
+        switch (message.getConversationId()) {
+            case CoordinatorAgent.PLACE -> {
+                if (placed) {
+                    refuse(message, "this container already hosts its mission's bodies");
+                } else {
+                    placed = true;
+                    send(place(message));
+                }
+            }
+            case CoordinatorAgent.END -> {
+                deleteBodies();
+                send(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)));
+                ended.countDown();
+            }
+            default -> events.accept(message);
+        }
+    }
+
+    /**
+     * Why a control message is not obeyed: not from the coordinator, not signed with the mission's
+     * secret (JADE lets any agent write any sender; the signature no one without the secret can make),
+     * or a copy of one already taken (an agent of the platform can see messages and send them again);
+     * null if it is to be obeyed.
+     */
+    private String refusal(ACLMessage message) {
+        if (!coordinator.equals(message.getSender())) {
+            return "only " + CoordinatorAgent.NAME + " controls a MASL container";
+        }
+        MissionSecret candidate = secret;
+        if (candidate == null) {
+            try {
+                candidate = secretSource.get();
+            } catch (IOException unreadable) {
+                return "cannot read the mission's secret: " + unreadable.getMessage();
+            }
+        }
+        if (!candidate.signed(message, getLocalName())) {
+            return "not signed with the mission's secret";
+        }
+        secret = candidate;
+        return taken.take(message.getUserDefinedParameter(MissionSecret.SEQUENCE)) ? null
+                : "a copy of a control message already taken";
+    }
+
+    /** Answers a control message that is not obeyed ({@code REFUSE}, or {@code NOT_UNDERSTOOD} for an event), said in one line. */
+    private void refuse(ACLMessage message, String reason) {
+        refusals.accept("refused " + message.getConversationId() + " from "
+                + (message.getSender() == null ? "no sender" : message.getSender().getName()) + ": " + reason);
+        if (message.getPerformative() == ACLMessage.REQUEST) {
+            send(AclInvocations.reply(message, Reply.Kind.REFUSED, JsonContent.refusal(reason)));
+        } else {
+            send(AclInvocations.notUnderstood(message, new ContentException(reason)));
         }
     }
 
@@ -196,7 +274,7 @@ final class ContainerHost extends Agent {
         BodyJournal journal = new BodyJournal(body.proxyId());
         implementation.bind(journal);
         return new BodyAgent(implementation, journal, new PrimitiveTable(type, implementation.getClass()),
-                request.getSender(), primitiveThreads, registered);
+                coordinator, secret, primitiveThreads, registered);
     }
 
     /** Deletes the bodies and waits, bounded, until their threads have ended; stops their primitives' threads. */

@@ -22,9 +22,9 @@ import masl.jade.acl.ContentException;
  * to its bodies and their containers. The mission's runtime (every agent's program, entries,
  * barriers, shared variables and labels, events, the watchdog) runs in this JVM; the programs of
  * agents placed elsewhere run in threaded behaviours of this agent, and their primitives are
- * {@code REQUEST}s it sends ({@link RemoteBody}). It matches answers to requests by
- * {@code in-reply-to}, and hands over the requests that bodies relay from FIPA agents
- * ({@value #RELAY}). Registered with the DF as {@value DfEntries#COORDINATOR_SERVICE}.
+ * {@code REQUEST}s it sends ({@link RemoteBody}). It takes an answer only from the agent it asked,
+ * with the request's unguessable {@code in-reply-to} ({@link PendingAnswers}), and hands over the
+ * requests that bodies relay from FIPA agents ({@value #RELAY}). Registered with the DF as {@value DfEntries#COORDINATOR_SERVICE}.
  */
 final class CoordinatorAgent extends Agent {
     private static final long serialVersionUID = 1L;
@@ -41,10 +41,12 @@ final class CoordinatorAgent extends Agent {
     /** A shared event emitted in the mission, sent to the containers hosting bodies. */
     static final String EVENT = "masl-event";
 
-    private final transient Map<String, Pending> pending = new ConcurrentHashMap<>();
+    private final transient PendingAnswers answers = new PendingAnswers(NAME);
+    private final transient MissionSecret secret;
+    /** The number of the last control message to each receiver, by local name. */
+    private final transient Map<String, AtomicLong> sequences = new ConcurrentHashMap<>();
     /** Why each agent that can no longer answer (its container is gone) cannot, by local name. */
     private final transient Map<String, String> gone = new ConcurrentHashMap<>();
-    private final transient AtomicLong requests = new AtomicLong();
     private final transient CountDownLatch ready;
     private final transient Consumer<ACLMessage> relays;
     private final transient Consumer<String> containerRemoved;
@@ -52,18 +54,17 @@ final class CoordinatorAgent extends Agent {
     private transient volatile Thread thread;
     private transient ContainerRemovals removals;
 
-    private record Pending(String receiver, CompletableFuture<ACLMessage> answer) {
-    }
-
     /**
+     * @param secret           signs the requests and events this agent sends ({@link MissionSecret})
      * @param relays           serves a request a body relays (conversation {@value #RELAY}), on this agent's thread
      * @param containerRemoved told the name of each container the AMS reports removed (its JVM ended or
      *                         died), on this agent's thread
      * @param unreachable      told the local name of an agent a request could not be delivered to (the
      *                         AMS answered {@code FAILURE}), on this agent's thread; it may {@link #abandon} it
      */
-    CoordinatorAgent(CountDownLatch ready, Consumer<ACLMessage> relays, Consumer<String> containerRemoved,
-            Consumer<String> unreachable) {
+    CoordinatorAgent(MissionSecret secret, CountDownLatch ready, Consumer<ACLMessage> relays,
+            Consumer<String> containerRemoved, Consumer<String> unreachable) {
+        this.secret = secret;
         this.ready = ready;
         this.relays = relays;
         this.containerRemoved = containerRemoved;
@@ -92,8 +93,7 @@ final class CoordinatorAgent extends Agent {
         } catch (FIPAException e) {
             // The platform is going away with its DF.
         }
-        pending.values().forEach(waiting -> waiting.answer().completeExceptionally(
-                new IllegalStateException("the mission's coordinator has ended")));
+        answers.failEvery(new IllegalStateException("the mission's coordinator has ended"));
     }
 
     Thread thread() {
@@ -101,20 +101,18 @@ final class CoordinatorAgent extends Agent {
     }
 
     /**
-     * Sends {@code request} with a fresh {@code reply-with}; the future completes with its answer.
-     * May be called from any thread.
+     * Sends {@code request} (one receiver) with a fresh, unguessable {@code reply-with}, signed with the
+     * mission's secret; the future completes with its answer, which only its receiver can give. May be
+     * called from any thread.
      */
     CompletableFuture<ACLMessage> ask(ACLMessage request) {
-        String replyWith = NAME + "-" + requests.incrementAndGet();
-        request.setReplyWith(replyWith);
-        CompletableFuture<ACLMessage> answer = new CompletableFuture<>();
+        CompletableFuture<ACLMessage> answer = answers.register(request);
         String receiver = ((AID) request.getAllReceiver().next()).getLocalName();
-        pending.put(replyWith, new Pending(receiver, answer));
+        sign(request, receiver);
         String reason = gone.get(receiver);
         if (reason != null) {
             // Checked after registering so that a removal reported meanwhile cannot miss this call.
-            pending.remove(replyWith);
-            answer.completeExceptionally(new ContainerGoneException(reason));
+            answers.fail(request.getReplyWith(), new ContainerGoneException(reason));
         } else {
             send(request);
         }
@@ -127,12 +125,7 @@ final class CoordinatorAgent extends Agent {
      */
     void abandon(Map<String, String> reasonByReceiver) {
         gone.putAll(reasonByReceiver);
-        pending.forEach((replyWith, waiting) -> {
-            String reason = reasonByReceiver.get(waiting.receiver());
-            if (reason != null && pending.remove(replyWith, waiting)) {
-                waiting.answer().completeExceptionally(new ContainerGoneException(reason));
-            }
-        });
+        answers.failAll(reasonByReceiver, ContainerGoneException::new);
     }
 
     /** Sends a message from any thread. */
@@ -140,18 +133,31 @@ final class CoordinatorAgent extends Agent {
         send(message);
     }
 
+    /** Sends {@code message} to its one receiver, signed with the mission's secret, from any thread. */
+    void postSigned(ACLMessage message) {
+        sign(message, ((AID) message.getAllReceiver().next()).getLocalName());
+        send(message);
+    }
+
+    private void sign(ACLMessage message, String receiver) {
+        secret.sign(message, receiver, sequences.computeIfAbsent(receiver, r -> new AtomicLong()).incrementAndGet());
+    }
+
     private void take(ACLMessage message) {
-        String inReplyTo = message.getInReplyTo();
-        Pending waiting = inReplyTo == null ? null : pending.get(inReplyTo);
-        if (waiting != null && message.getPerformative() == ACLMessage.FAILURE && message.getSender().equals(getAMS())) {
-            // Undeliverable: its container is gone, which the AMS's removal event may not have said yet.
-            unreachable.accept(waiting.receiver());
-            if (pending.remove(inReplyTo, waiting)) {
-                waiting.answer().complete(message);
+        switch (answers.classify(message, getAMS())) {
+            case ANSWER -> answers.complete(message);
+            case UNDELIVERABLE -> {
+                // Its container is gone, which the AMS's removal event may not have said yet.
+                unreachable.accept(answers.receiverOf(message).getLocalName());
+                answers.complete(message);
             }
-        } else if (waiting != null && pending.remove(inReplyTo, waiting)) {
-            waiting.answer().complete(message);
-        } else if (message.getPerformative() == ACLMessage.REQUEST && RELAY.equals(message.getConversationId())) {
+            case NONE -> takeOther(message);
+        }
+    }
+
+    /** A message that answers none of this agent's requests: a relayed request, or not understood. */
+    private void takeOther(ACLMessage message) {
+        if (message.getPerformative() == ACLMessage.REQUEST && RELAY.equals(message.getConversationId())) {
             relays.accept(message);
         } else if (message.getPerformative() != ACLMessage.NOT_UNDERSTOOD
                 && !ContainerHost.ALIVE.equals(message.getConversationId())) {

@@ -57,9 +57,9 @@ final class Distribution {
     private record Remote(String name, String container, String className, RemoteBody body) {
     }
 
-    /** What a relayed request needs: the mission, and each agent's name, primitives and implementation. */
+    /** What a relayed request needs: the mission, each agent's name, primitives and implementation, the time limit. */
     private record Served(Mission mission, List<String> names, List<PrimitiveTable> tables,
-            List<AgentImplementation> implementations) {
+            List<AgentImplementation> implementations, OutsideCalls outside) {
     }
 
     /**
@@ -67,12 +67,12 @@ final class Distribution {
      *
      * @throws JadeException if it cannot start (another mission spanning containers runs on the platform)
      */
-    Distribution(JadePlatform platform, Map<String, String> containerOfAgent, Duration agentsTimeout)
-            throws InterruptedException {
+    Distribution(JadePlatform platform, Map<String, String> containerOfAgent, MissionSecret secret,
+            Duration agentsTimeout) throws InterruptedException {
         this.containerOfAgent = Map.copyOf(containerOfAgent);
         this.agentsTimeout = agentsTimeout;
         CountDownLatch ready = new CountDownLatch(1);
-        coordinator = new CoordinatorAgent(ready, this::serveRelayed, this::containerRemoved, this::unreachable);
+        coordinator = new CoordinatorAgent(secret, ready, this::serveRelayed, this::containerRemoved, this::unreachable);
         try {
             controller = platform.container().acceptNewAgent(CoordinatorAgent.NAME, coordinator);
             controller.start();
@@ -101,8 +101,7 @@ final class Distribution {
     AgentImplementation stub(int proxyId, String name, String container, AgentType type,
             Class<? extends AgentImplementation> implementation) {
         List<Method> methods = new PrimitiveTable(type, implementation).methods();
-        RemoteBody body = new RemoteBody(name, new AID(name, AID.ISLOCALNAME), methods, coordinator,
-                implementation.getClassLoader());
+        RemoteBody body = new RemoteBody(name, new AID(name, AID.ISLOCALNAME), methods, coordinator);
         remotes.put(proxyId, new Remote(name, container, implementation.getName(), body));
         return stubs.instantiate(implementation, methods, body);
     }
@@ -115,9 +114,9 @@ final class Distribution {
      * @throws JadeException if a container does not join in time or cannot host its bodies
      */
     void place(Mission mission, List<String> names, List<PrimitiveTable> tables,
-            List<AgentImplementation> implementations) throws InterruptedException {
+            List<AgentImplementation> implementations, OutsideCalls outside) throws InterruptedException {
         remotes.values().forEach(remote -> remote.body().journal(mission.journal()));
-        served = new Served(mission, names, tables, implementations);
+        served = new Served(mission, names, tables, implementations, outside);
         Map<String, List<PlacementContent.Body>> byContainer = new LinkedHashMap<>();
         remotes.forEach((id, remote) -> byContainer.computeIfAbsent(remote.container(), c -> new ArrayList<>())
                 .add(new PlacementContent.Body(remote.name(), id, remote.className())));
@@ -136,21 +135,24 @@ final class Distribution {
 
     /**
      * The mission's trace, plus shared events sent as {@code INFORM}s (conversation
-     * {@value CoordinatorAgent#EVENT}) to every container hosting bodies, for its observers:
-     * {@code {"event": "go", "block": "main", "emitter": "leader", "message": "now"}}.
+     * {@value CoordinatorAgent#EVENT}, one signed message for each) to every container hosting bodies,
+     * for its observers: {@code {"event": "go", "block": "main", "emitter": "leader", "message": "now"}}.
      */
     Trace sendingEvents(Trace trace, List<String> names) {
         return event -> {
             trace.record(event);
             if (event instanceof TraceEvent.EventEmitted emitted && emitted.block() != null && !containers.isEmpty()) {
-                ACLMessage inform = new ACLMessage(ACLMessage.INFORM);
-                inform.setConversationId(CoordinatorAgent.EVENT);
-                inform.setLanguage(AclInvocations.LANGUAGE);
-                inform.setOntology(AclInvocations.ONTOLOGY);
-                inform.setContent(JsonContent.event(emitted.event(), emitted.block(), names.get(emitted.agent()),
-                        emitted.message()));
-                containers.values().forEach(inform::addReceiver);
-                coordinator.post(inform);
+                String content = JsonContent.event(emitted.event(), emitted.block(), names.get(emitted.agent()),
+                        emitted.message());
+                for (AID container : containers.values()) {
+                    ACLMessage inform = new ACLMessage(ACLMessage.INFORM);
+                    inform.setConversationId(CoordinatorAgent.EVENT);
+                    inform.setLanguage(AclInvocations.LANGUAGE);
+                    inform.setOntology(AclInvocations.ONTOLOGY);
+                    inform.setContent(content);
+                    inform.addReceiver(container);
+                    coordinator.postSigned(inform);
+                }
             }
         };
     }
@@ -257,8 +259,10 @@ final class Distribution {
 
     /**
      * A FIPA agent's request that a body relayed: filtered by the agent's state as an "other" when the
-     * agent serves it, then run through its stub (so on its body); the answer goes back to the body,
-     * which forwards it. On the coordinator's JADE thread; never blocks.
+     * agent serves it, then run through its stub (so on its body) within the limit of calls from
+     * outside the mission (past it, the call's wait ends; the primitive runs on in the body's JVM until
+     * it returns); the answer goes back to the body, which forwards it. On the coordinator's JADE
+     * thread; never blocks.
      */
     private void serveRelayed(ACLMessage relay) {
         Served mission = served;
@@ -279,7 +283,7 @@ final class Distribution {
         String primitive = call.primitive().name();
         // Queued, never served inline: the primitive is a request to the body, whose answer this thread takes.
         mission.mission().submitInvocation(id, primitive,
-                () -> coordinator.post(Answers.run(relay, call, mission.implementations().get(id), null)),
+                () -> coordinator.post(mission.outside().answer(relay, call, mission.implementations().get(id), name)),
                 () -> coordinator.post(Answers.refusal(relay, name, primitive)));
     }
 }

@@ -51,6 +51,8 @@ public final class JadeLauncher {
     private Trace trace = Trace.NONE;
     private Consumer<Mission> whenReady = mission -> { };
     private Map<String, String> placement = Map.of();
+    private MissionSecret secret;
+    private Duration callTimeout;
 
     private JadeLauncher(MissionProgram program) {
         this.program = Objects.requireNonNull(program, "program");
@@ -96,6 +98,30 @@ public final class JadeLauncher {
     }
 
     /**
+     * Bounds every primitive call of the mission as {@link Mission.Builder#callTimeout} does, and every
+     * call a FIPA agent from outside the mission makes. Without it, the mission's calls are not bounded
+     * and outsiders' calls are bounded by {@link OutsideCalls#DEFAULT_LIMIT} (10 s): an agent serves them
+     * on its behalf, and its program waits meanwhile.
+     */
+    public JadeLauncher callTimeout(Duration timeout) {
+        if (timeout.isNegative() || timeout.isZero()) {
+            throw new IllegalArgumentException("a call timeout must be positive: " + timeout);
+        }
+        this.callTimeout = timeout;
+        return this;
+    }
+
+    /**
+     * The secret the containers of {@link #place} know too (out of band: {@link MissionSecret#writeTo}):
+     * the coordinator signs its control messages with it, and they obey only those. Required with a
+     * placement.
+     */
+    public JadeLauncher secret(MissionSecret missionSecret) {
+        this.secret = Objects.requireNonNull(missionSecret, "missionSecret");
+        return this;
+    }
+
+    /**
      * Called on the launching thread once every JADE agent of a mission exists and is registered with
      * the DF, with the mission about to run: from then on FIPA agents can find and invoke them, and
      * the caller may {@link Mission#stop()} it (on Ctrl-C, say).
@@ -137,12 +163,17 @@ public final class JadeLauncher {
                         + " that name (it declares " + String.join(", ", names) + ")");
             }
         }
+        if (!placement.isEmpty() && secret == null) {
+            throw new IllegalStateException("a mission placing bodies in other containers needs their secret:"
+                    + " call secret(…) first");
+        }
         Distribution distribution = placement.isEmpty() ? null
-                : new Distribution(platform, placement, AGENTS_TIMEOUT);
+                : new Distribution(platform, placement, secret, AGENTS_TIMEOUT);
         List<AgentController> controllers = new ArrayList<>();
         List<MaslJadeAgent> locals = new ArrayList<>();
+        OutsideCalls outside = new OutsideCalls(callTimeout == null ? OutsideCalls.DEFAULT_LIMIT : callTimeout);
         try {
-            return run(platform, timeout, specs, names, distribution, controllers, locals);
+            return run(platform, timeout, specs, names, distribution, outside, controllers, locals);
         } catch (StaleProxyException e) {
             throw new JadeException("the JADE container ended before the mission", e);
         } finally {
@@ -151,13 +182,15 @@ public final class JadeLauncher {
                     distribution.end();
                 }
             } finally {
+                outside.close();
                 delete(controllers, locals);
             }
         }
     }
 
     private MissionOutcome run(JadePlatform platform, Duration timeout, List<AgentSpec> specs, List<String> names,
-            Distribution distribution, List<AgentController> controllers, List<MaslJadeAgent> locals)
+            Distribution distribution, OutsideCalls outside, List<AgentController> controllers,
+            List<MaslJadeAgent> locals)
             throws InterruptedException, StaleProxyException {
         List<AgentImplementation> created = new ArrayList<>();
         ThreadedBehaviourScheduler scheduler = new ThreadedBehaviourScheduler();
@@ -166,6 +199,9 @@ public final class JadeLauncher {
                 .trace(distribution == null ? trace : distribution.sendingEvents(trace, names));
         if (journal != null) {
             builder.journal(journal);
+        }
+        if (callTimeout != null) {
+            builder.callTimeout(callTimeout);
         }
         program.configure(builder, spec -> {
             AgentImplementation implementation = implementations.create(spec);
@@ -194,7 +230,7 @@ public final class JadeLauncher {
                 hosts.add(distribution.coordinator()); // runs the program; the body is elsewhere
                 continue;
             }
-            MaslJadeAgent host = new MaslJadeAgent(id, created.get(id), tables.get(id), mission, ready);
+            MaslJadeAgent host = new MaslJadeAgent(id, created.get(id), tables.get(id), mission, outside, ready);
             controllers.add(create(platform, names.get(id), host));
             locals.add(host);
             hosts.add(host);
@@ -214,7 +250,7 @@ public final class JadeLauncher {
             }
         }
         if (distribution != null) {
-            distribution.place(mission, names, tables, created);
+            distribution.place(mission, names, tables, created, outside);
         }
         scheduler.attach(hosts);
         whenReady.accept(mission);

@@ -19,7 +19,8 @@ import masl.runtime.descriptor.AgentType;
  *
  * <pre>{@code
  * try (MaslContainer container = MaslContainer.start(JadeOptions.join(host, port), "c2",
- *         loader::loadByClassName, loader.implementationClasses())) {
+ *         loader::loadByClassName, loader.implementationClasses(), event -> { },
+ *         MissionSecret.Source.file(secretFile))) {
  *     container.awaitMissionEnd(Duration.ofMinutes(5));
  * }
  * }</pre>
@@ -37,20 +38,32 @@ public final class MaslContainer implements AutoCloseable {
     }
 
     /**
-     * Joins the platform as container {@code name} and waits for a coordinator.
+     * Joins the platform as container {@code name} and waits for a coordinator. Control messages not
+     * from the platform's coordinator signed with the mission's secret are refused, each said in one
+     * line on standard error.
      *
      * @param types     the agent type of an implementation class name (its descriptor)
      * @param classes   where the implementation classes are loaded from
      * @param events    receives the shared events the coordinator sends this container ({@code INFORM},
      *                  conversation {@value CoordinatorAgent#EVENT}), on the container agent's JADE thread
+     * @param secret    the mission's secret, which the coordinator's {@link JadeLauncher#secret} has too;
+     *                  asked for at each control message until one bears its signature
      * @throws JadeException if the container cannot join or its agent cannot start
      */
     public static MaslContainer start(JadeOptions joining, String name, Function<String, AgentType> types,
-            ClassLoader classes, Consumer<ACLMessage> events) {
+            ClassLoader classes, Consumer<ACLMessage> events, MissionSecret.Source secret) {
+        return start(joining, name, types, classes, events, secret,
+                refusal -> System.err.println("masl: container " + name + ": " + refusal));
+    }
+
+    /** As {@code start} above, each refusal said in one line to {@code refusals} (on the container agent's thread). */
+    public static MaslContainer start(JadeOptions joining, String name, Function<String, AgentType> types,
+            ClassLoader classes, Consumer<ACLMessage> events, MissionSecret.Source secret, Consumer<String> refusals) {
         Objects.requireNonNull(name, "name");
+        Objects.requireNonNull(secret, "secret");
         JadePlatform platform = JadePlatform.start(joining.withContainerName(name));
         try {
-            ContainerHost host = new ContainerHost(name, types, classes, events);
+            ContainerHost host = new ContainerHost(name, types, classes, events, secret, refusals);
             platform.container().acceptNewAgent(ContainerHost.agentName(name), host).start();
             if (!host.ready().await(START_TIMEOUT.toMillis(), TimeUnit.MILLISECONDS)) {
                 throw new JadeException("container " + name + " did not register within " + START_TIMEOUT);

@@ -18,8 +18,9 @@ import masl.runtime.Mission;
  * served as MASL §5 says ({@link Mission#serveOrQueueInvocation}): if the MASL agent is blocked or
  * has finished, at once on this JADE thread, as a plain JADE agent answers; if its program is
  * running, at its next step boundary, on the program's thread. Then it is {@code REFUSE} if the
- * agent's permeability state denies it to an <em>other</em>, else the primitive runs and the answer
- * is {@code INFORM} with its result or {@code FAILURE} with what it threw.
+ * agent's permeability state denies it to an <em>other</em>, else the primitive runs, within the
+ * limit of calls from outside the mission ({@link OutsideCalls}), and the answer is {@code INFORM}
+ * with its result or {@code FAILURE} with what it threw (or that it ran past the limit).
  */
 final class MaslJadeAgent extends RegisteredMaslAgent {
     private static final long serialVersionUID = 1L;
@@ -27,13 +28,15 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
     private final transient int proxyId;
     private final transient AgentImplementation implementation;
     private final transient Mission mission;
+    private final transient OutsideCalls outside;
 
     MaslJadeAgent(int proxyId, AgentImplementation implementation, PrimitiveTable primitives, Mission mission,
-            CountDownLatch ready) {
+            OutsideCalls outside, CountDownLatch ready) {
         super(primitives, ready);
         this.proxyId = proxyId;
         this.implementation = implementation;
         this.mission = mission;
+        this.outside = outside;
     }
 
     @Override
@@ -49,7 +52,8 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
         String primitive = call.primitive().name();
         // A FIPA agent is an "other" (MASL §11): the runtime filters the request by the agent's state
         // when the agent serves it, and runs either the primitive or the refusal.
-        mission.serveOrQueueInvocation(proxyId, primitive, () -> answer(Answers.run(message, call, implementation, null)),
+        mission.serveOrQueueInvocation(proxyId, primitive,
+                () -> answer(outside.answer(message, call, implementation, getLocalName())),
                 () -> answer(Answers.refusal(message, getLocalName(), primitive)));
     }
 

@@ -22,8 +22,8 @@ import masl.runtime.Journal;
  * agent's stub becomes a {@code REQUEST} (conversation {@value CoordinatorAgent#BODY}, the same
  * JSON content as any FIPA agent's) to the body's JADE agent, and the calling thread waits for the
  * answer: {@code INFORM} gives the result, after the journal text the primitive wrote is appended
- * to the mission's journal; {@code FAILURE} throws the body's exception again (the caller perceives
- * {@code uncaught_exception}); {@code REFUSE} throws {@link InvocationRefusedException} (the caller
+ * to the mission's journal; {@code FAILURE} throws a {@link masl.runtime.RemotePrimitiveException}
+ * naming the body's exception (the caller perceives {@code uncaught_exception} named after it); {@code REFUSE} throws {@link InvocationRefusedException} (the caller
  * perceives {@code timeout}). Once the body's container is gone, every call throws
  * {@link ContainerGoneException} (the caller perceives {@code uncaught_exception}).
  */
@@ -33,15 +33,13 @@ final class RemoteBody implements BodyStub {
     private final AID body;
     private final List<Method> methods;
     private final CoordinatorAgent coordinator;
-    private final ClassLoader classes;
     private volatile Journal journal;
 
-    RemoteBody(String agent, AID body, List<Method> methods, CoordinatorAgent coordinator, ClassLoader classes) {
+    RemoteBody(String agent, AID body, List<Method> methods, CoordinatorAgent coordinator) {
         this.agent = agent;
         this.body = body;
         this.methods = List.copyOf(methods);
         this.coordinator = coordinator;
-        this.classes = classes;
     }
 
     /** The mission's journal, once the mission is built: before any primitive is called. */
@@ -70,7 +68,7 @@ final class RemoteBody implements BodyStub {
             return method.getReturnType() == void.class ? null : value(result.value(), method);
         }
         if (reply instanceof Reply.Failed failed) {
-            throw RemoteFailures.sneaky(RemoteFailures.rebuild(failed, classes));
+            throw RemoteFailures.rebuild(failed);
         }
         if (reply instanceof Reply.Refused refused) {
             throw new InvocationRefusedException(method.getName(), refused.reason());

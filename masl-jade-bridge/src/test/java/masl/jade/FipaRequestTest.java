@@ -92,6 +92,35 @@ class FipaRequestTest {
     }
 
     /**
+     * An outsider invokes a primitive that would never return: past the mission's call timeout it is
+     * interrupted and answered {@code FAILURE} {@code TimeoutException}, and the agent, whose program
+     * waited while the call was served on its behalf, goes on (serves the next request, completes).
+     */
+    @Test
+    void anOutsidersCallRunsWithinTheCallTimeoutAndTheAgentGoesOn() throws Exception {
+        ServiceAgent.Gate gate = new ServiceAgent.Gate();
+        ServiceAgent.gate = gate;
+        MissionProgram program = TestPrograms.of(null,
+                List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
+                TestPrograms.UntilReleased::new);
+        CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
+                JadeLauncher.of(program).types(TestPrograms::type).callTimeout(Duration.ofMillis(500)),
+                JADE.platform(), TIMEOUT);
+        awaitRegistered();
+        try {
+            ACLMessage late = invoke("gated", List.of());
+            assertEquals(ACLMessage.FAILURE, late.getPerformative(), late.getContent());
+            assertEquals(new Reply.Failed("java.util.concurrent.TimeoutException", "gated ran past 500 ms, the limit"
+                    + " of a call from outside the mission, and was interrupted"), AclInvocations.readReply(late));
+            assertTrue(gate.entered().isDone(), "it ran");
+            assertEquals(new Reply.Result(new IntNode(5)), AclInvocations.readReply(invoke("add", List.of(2, 3))));
+        } finally {
+            invoke("release", List.of());
+        }
+        assertTrue(mission.get().completed());
+    }
+
+    /**
      * The issue's check: {@code log} answers {@code INFORM}; once the agent's program has set a state
      * denying others, the same request answers {@code REFUSE} and does not run; invalid JSON answers
      * {@code NOT_UNDERSTOOD} whatever the state.
@@ -132,7 +161,7 @@ class FipaRequestTest {
                     + "was expecting double-quote to start field name",
                     raw(ACLMessage.REQUEST, "{\"primitive\":\"log\",}"));
             assertNotUnderstood("content:1:14: error: unknown primitive \"fly\": ServiceAgent has getProxyID, nop, "
-                    + "log, logln, add, divide, unwritable, release, hang", raw(ACLMessage.REQUEST, "{\"primitive\":\"fly\"}"));
+                    + "log, logln, add, divide, unwritable, release, hang, gated", raw(ACLMessage.REQUEST, "{\"primitive\":\"fly\"}"));
             assertNotUnderstood("content:1:14: error: int add(int, int) takes 2 arguments, got 1",
                     raw(ACLMessage.REQUEST, "{\"primitive\":\"add\",\"args\":[1]}"));
             assertNotUnderstood("content:1:30: error: argument 2 of add: expected an int, got \"two\"",

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.StringWriter;
 import java.time.Duration;
 import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import masl.jade.testing.JadePlatformExtension;
 import masl.jade.testing.ThreadSnapshot;
 import masl.runtime.AgentContext;
@@ -49,6 +50,20 @@ class JadeLauncherTest {
         assertEquals(List.of("agent 0", "agent 1"), outcome.journal().lines().sorted().toList());
         assertEquals(outcome.journal(), journal.toString(), "the journal is written through to the sink");
         assertEquals(List.of(), before.startedSince());
+    }
+
+    /** {@code --call-timeout} inside JADE bounds the mission's own calls as in-process: default value, the mission goes on. */
+    @Test
+    void aCallTimeoutBoundsTheMissionsOwnCalls() throws Exception {
+        ServiceAgent.gate = new ServiceAgent.Gate();
+        List<Integer> results = new CopyOnWriteArrayList<>();
+        MissionProgram program = TestPrograms.of(ForgedMessagesTest.CallsGated.MAIN,
+                List.of(new MissionProgram.AgentSpec("g", ServiceAgent.class.getName())),
+                self -> new ForgedMessagesTest.CallsGated(self, results));
+        MissionOutcome outcome = JadeLauncher.of(program).types(TestPrograms::type).callTimeout(Duration.ofMillis(300))
+                .run(jade.platform(), Duration.ofSeconds(60));
+        outcome.requireCompleted();
+        assertEquals(List.of(-1), results, "the default value of the call that ran past the timeout");
     }
 
     @Test

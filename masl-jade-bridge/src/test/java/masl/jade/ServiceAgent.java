@@ -1,11 +1,21 @@
 package masl.jade;
 
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.locks.LockSupport;
 import masl.runtime.testing.TestAgent;
 
 /** An agent type with primitives for FIPA agents to invoke: results, exceptions, and a release. */
 public class ServiceAgent extends TestAgent {
+
+    /** The one call of {@link #gated()} a test holds open; a test sets a fresh one before its mission. */
+    public record Gate(CompletableFuture<Void> entered, CompletableFuture<Integer> result) {
+        public Gate() {
+            this(new CompletableFuture<>(), new CompletableFuture<>());
+        }
+    }
+
+    static volatile Gate gate = new Gate();
 
     private final CompletableFuture<Void> released = new CompletableFuture<>();
 
@@ -32,6 +42,16 @@ public class ServiceAgent extends TestAgent {
         while (true) {
             LockSupport.park(this);
         }
+    }
+
+    /**
+     * Tells the test it has started ({@link Gate#entered}) and returns what the test gives
+     * ({@link Gate#result}): a call the test holds open. Its body must be in the test's JVM.
+     */
+    public int gated() throws InterruptedException, ExecutionException {
+        Gate current = gate;
+        current.entered().complete(null);
+        return current.result().get();
     }
 
     /** Lets the agent's program ({@link TestPrograms.UntilReleased}) finish. */

@@ -43,7 +43,9 @@ class TwoJvmDeadContainerTest {
                 self -> new CallsHangTwice(self, calling, results));
         try (SecondJvm container = BodyContainerMain.start(JADE.platform(), "c2")) {
             CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
-                    JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2")), JADE.platform(),
+                    JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2"))
+                            .secret(BodyContainerMain.SECRET),
+                    JADE.platform(),
                     MISSION_TIMEOUT);
             calling.get(60, TimeUnit.SECONDS);
             container.kill();

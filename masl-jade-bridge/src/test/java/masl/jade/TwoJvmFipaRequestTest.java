@@ -52,7 +52,9 @@ class TwoJvmFipaRequestTest {
                 self -> new TestPrograms.ClosesWhenAsked(self, signals));
         try (SecondJvm container = BodyContainerMain.start(JADE.platform(), "c2")) {
             CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
-                    JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2")), JADE.platform(),
+                    JadeLauncher.of(program).types(TestPrograms::type).place(Map.of("b", "c2"))
+                            .secret(BodyContainerMain.SECRET),
+                    JADE.platform(),
                     TIMEOUT);
             try {
                 DFAgentDescription[] found = DFService.searchUntilFound(probe, probe.getDefaultDF(),

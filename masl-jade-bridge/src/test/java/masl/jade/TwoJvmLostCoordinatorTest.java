@@ -35,7 +35,7 @@ class TwoJvmLostCoordinatorTest {
             int port = Integer.parseInt(first.substring("port ".length()));
             try (MaslContainer container = MaslContainer.start(JadeOptions.join("127.0.0.1", port), "c2",
                     className -> TestPrograms.type(new MissionProgram.AgentSpec("", className)),
-                    getClass().getClassLoader(), event -> { })) {
+                    getClass().getClassLoader(), event -> { }, MissionSecret.Source.of(MissionSecret.generate()))) {
                 main.destroyForcibly();
                 assertTrue(main.waitFor(30, TimeUnit.SECONDS));
                 assertTrue(container.awaitMissionEnd(Duration.ofSeconds(30)), "the container noticed within 30 s");

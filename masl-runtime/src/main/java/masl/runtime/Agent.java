@@ -608,7 +608,7 @@ final class Agent implements AgentContext, AgentTask {
     @Override
     public void uncaughtException(Throwable thrown) {
         atCurrentCase();
-        emit(Event.UNCAUGHT_EXCEPTION, thrown.getClass().getName());
+        emit(Event.UNCAUGHT_EXCEPTION, RemotePrimitiveException.classNameOf(thrown));
     }
 
     @Override
@@ -828,7 +828,7 @@ final class Agent implements AgentContext, AgentTask {
             requester.raise(Event.TIMEOUT, refused.primitive());
             return defaultValue;
         } catch (Exception thrown) {
-            requester.raise(Event.UNCAUGHT_EXCEPTION, thrown.getClass().getName());
+            requester.raise(Event.UNCAUGHT_EXCEPTION, RemotePrimitiveException.classNameOf(thrown));
             return defaultValue;
         }
     }

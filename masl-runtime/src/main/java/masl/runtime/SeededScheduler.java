@@ -1,10 +1,7 @@
 package masl.runtime;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.PriorityQueue;
-import java.util.Random;
-import java.util.SplittableRandom;
 import java.util.concurrent.Executor;
 
 /**
@@ -26,9 +23,8 @@ public final class SeededScheduler implements Scheduler {
 
     private record Timed(long at, long sequence, Runnable action) { }
 
-    private final Random random;
-    /** Runnable agents' slices and primitives' turns; drawn by index, removed by swapping with the last one. */
-    private final List<Runnable> runnable = new ArrayList<>();
+    /** Runnable agents' slices and primitives' turns. */
+    private final SeededDraw runnable;
     private final PriorityQueue<Timed> timers = new PriorityQueue<>((a, b) -> a.at() != b.at()
             ? Long.compare(a.at(), b.at()) : Long.compare(a.sequence(), b.sequence()));
     /** Virtual milliseconds; volatile so that {@link #nanoTime()} reads it without the lock. */
@@ -37,8 +33,7 @@ public final class SeededScheduler implements Scheduler {
     private Thread worker;
 
     public SeededScheduler(long seed) {
-        // Random's first draws for nearby seeds are alike; SplittableRandom spreads the seeds.
-        random = new Random(new SplittableRandom(seed).nextLong());
+        runnable = new SeededDraw(seed);
     }
 
     @Override
@@ -71,11 +66,7 @@ public final class SeededScheduler implements Scheduler {
                 timed.action().run();
             }
         }
-        int index = random.nextInt(runnable.size());
-        Runnable drawn = runnable.get(index);
-        runnable.set(index, runnable.get(runnable.size() - 1));
-        runnable.remove(runnable.size() - 1);
-        return drawn;
+        return runnable.draw();
     }
 
     @Override

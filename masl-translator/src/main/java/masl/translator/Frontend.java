@@ -9,9 +9,9 @@ import masl.translator.parse.ProgramParser;
 import masl.translator.source.SourceFile;
 
 /**
- * The front half of the pipeline, shared by {@code masl check}, {@code compile}, {@code run} and the
- * Gradle plug-in: parse, then analyse against the descriptors. Syntax errors stop it before the
- * analysis, whose messages on a tree ANTLR had to repair would mostly be echoes of them.
+ * The front half of the {@link Translator}'s pipeline: parse, then analyse against the descriptors.
+ * Syntax errors stop it before the analysis, whose messages on a tree ANTLR had to repair would
+ * mostly be echoes of them.
  */
 public final class Frontend {
 

@@ -12,6 +12,7 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Pattern;
+import masl.runtime.RemotePrimitiveException;
 
 /**
  * The JSON content of invocation messages (components.md, "JADE bridge"), never Java
@@ -182,7 +183,7 @@ public final class JsonContent {
 
     /** The content of a {@code FAILURE}: the exception the primitive threw. */
     public static String failure(Throwable thrown) {
-        return NODES.objectNode().put(EXCEPTION, thrown.getClass().getName())
+        return NODES.objectNode().put(EXCEPTION, RemotePrimitiveException.classNameOf(thrown))
                 .put(MESSAGE, thrown.getMessage()).toString();
     }
 

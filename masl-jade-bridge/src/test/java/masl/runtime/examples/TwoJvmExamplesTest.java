@@ -73,7 +73,8 @@ class TwoJvmExamplesTest {
             Map<String, String> placement) throws Exception {
         try (SecondJvm container = BodyContainerMain.start(JADE.platform(), "c2")) {
             MissionOutcome outcome = JadeLauncher.of(TestPrograms.of(main, agents, program))
-                    .types(TestPrograms::type).place(placement).run(JADE.platform(), TIMEOUT);
+                    .types(TestPrograms::type).place(placement).secret(BodyContainerMain.SECRET)
+                    .run(JADE.platform(), TIMEOUT);
             assertTrue(outcome.completed(), outcome + "\n" + container.output());
             return new Split(outcome.journal(), container.assertEndsByItself());
         }

@@ -9,12 +9,15 @@ import java.net.URISyntaxException;
 import java.net.URL;
 import java.net.URLClassLoader;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Enumeration;
 import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.jar.JarEntry;
 import java.util.jar.JarFile;
 import java.util.stream.Stream;
@@ -74,6 +77,82 @@ public final class AgentPath {
      */
     public Optional<DescriptorSource> find(String fileName, Path programDir) {
         return findAll(fileName, programDir).stream().findFirst();
+    }
+
+    /**
+     * Where {@link #find} looks, in its order, for a message: {@code "the program's folder robots,
+     * the agent path (lib, arm.jar) and the descriptors shipped with masl"}.
+     */
+    public String describeLookup(Path programDir) {
+        List<String> places = new ArrayList<>();
+        if (programDir != null) {
+            places.add("the program's folder " + programDir);
+        }
+        if (!entries.isEmpty()) {
+            places.add("the agent path (" + String.join(", ", entries.stream().map(Path::toString).toList()) + ")");
+        }
+        places.add("the descriptors shipped with masl");
+        return places.size() == 1 ? places.get(0)
+                : String.join(", ", places.subList(0, places.size() - 1)) + " and " + places.get(places.size() - 1);
+    }
+
+    /**
+     * The descriptors {@link #find} could have found instead of {@code fileName}: those in the same
+     * folder as it would be (its folder part, {@code robots/} in {@code robots/Kepera.xml}) in the
+     * program's folder, the path's folders and jars, and the folder or jar that holds the shipped
+     * {@code Default.xml}, each named as it would be written. For hints; a place that cannot be read
+     * adds nothing.
+     */
+    public Set<String> descriptorNames(String fileName, Path programDir) {
+        int slash = fileName.replace(File.separatorChar, '/').lastIndexOf('/');
+        String folder = slash < 0 ? "" : fileName.substring(0, slash + 1);
+        Set<String> names = new TreeSet<>();
+        List<Path> places = new ArrayList<>();
+        if (programDir != null) {
+            places.add(programDir);
+        }
+        places.addAll(entries);
+        shippedPlace().ifPresent(places::add);
+        for (Path place : places) {
+            try {
+                if (Files.isDirectory(place.resolve(folder))) {
+                    xmlFilesIn(place.resolve(folder)).forEach(source -> names.add(folder + nameOf(source.uri())));
+                } else if (Files.isRegularFile(place)) {
+                    xmlEntriesOf(place).stream().map(source -> source.uri().toString())
+                            .map(uri -> uri.substring(uri.indexOf("!/") + 2))
+                            .filter(entry -> entry.startsWith(folder) && entry.indexOf('/', folder.length()) < 0)
+                            .forEach(names::add);
+                }
+            } catch (UncheckedIOException | InvalidPathException unreadable) {
+                // a hint is a courtesy: a place that cannot be read only gives fewer candidates
+            }
+        }
+        return names;
+    }
+
+    /** The folder or jar the shipped {@code Default.xml} comes from, if it is a file or a jar. */
+    private Optional<Path> shippedPlace() {
+        URL shipped = resources.getResource("Default.xml");
+        if (shipped == null) {
+            return Optional.empty();
+        }
+        String text = shipped.toString();
+        try {
+            if (text.startsWith("jar:file:")) {
+                return Optional.of(Path.of(URI.create(text.substring("jar:".length(), text.indexOf("!/")))));
+            }
+            if (text.startsWith("file:")) {
+                return Optional.of(Path.of(shipped.toURI()).getParent());
+            }
+        } catch (URISyntaxException | IllegalArgumentException unusual) {
+            return Optional.empty();
+        }
+        return Optional.empty();
+    }
+
+    private static String nameOf(URI location) {
+        String text = location.toString();
+        return text.substring(text.lastIndexOf('/') + 1);
     }
 
     /**

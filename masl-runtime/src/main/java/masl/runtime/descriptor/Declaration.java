@@ -30,9 +30,11 @@ record Declaration(String shortName, String fullClassName, String superFullClass
     /**
      * A {@code <Permeability>}.
      *
-     * @param members rights (parsed from octal) by member id, in order; empty means "every member, all rights"
+     * @param members        rights (parsed from octal) by member id, in order; empty means "every member,
+     *                       all rights" unless {@code unlistedRights} says otherwise
+     * @param unlistedRights the rights of the members not listed ({@code unlisted_rights}), or null if not given
      */
     record StateDeclaration(String name, int umask, Map<String, Integer> members, List<XmlElement> memberElements,
-            XmlElement element) {
+            Integer unlistedRights, XmlElement element) {
     }
 }

@@ -145,7 +145,10 @@ final class DeclarationReader {
                 memberElements.add(member);
             }
         }
-        return new Declaration.StateDeclaration(name, umask, members, memberElements, element);
+        String unlisted = element.attribute("unlisted_rights");
+        Integer unlistedRights = unlisted != null && OCTAL_RIGHTS.matcher(unlisted).matches()
+                ? Integer.valueOf(unlisted, 8) : null;
+        return new Declaration.StateDeclaration(name, umask, members, memberElements, unlistedRights, element);
     }
 
     private static List<String> modifiers(XmlElement member) {

@@ -141,17 +141,20 @@ final class TypeAssembler {
             PermeabilityState inherited = states.get(declared.name());
             Map<String, Integer> granted = new HashMap<>();
             int grantedToUnlisted;
+            Integer unlisted = declared.unlistedRights();
             if (declared.members().isEmpty()) {
-                idByName.values().forEach(id -> granted.put(id, PermeabilityState.ALL_RIGHTS));
-                grantedToUnlisted = PermeabilityState.ALL_RIGHTS;
+                int rights = unlisted != null ? unlisted : PermeabilityState.ALL_RIGHTS;
+                idByName.values().forEach(id -> granted.put(id, rights));
+                grantedToUnlisted = rights;
             } else {
-                idByName.values().forEach(id -> granted.put(id, inherited == null ? 0 : inherited.granted(id)));
+                idByName.values().forEach(id -> granted.put(id, unlisted != null ? unlisted
+                        : inherited == null ? 0 : inherited.granted(id)));
                 declared.members().forEach((id, rights) -> {
                     if (idByName.containsValue(id)) {
                         granted.put(id, rights);
                     }
                 });
-                grantedToUnlisted = inherited == null ? 0 : inherited.grantedToUnlisted();
+                grantedToUnlisted = unlisted != null ? unlisted : inherited == null ? 0 : inherited.grantedToUnlisted();
             }
             states.put(declared.name(), new PermeabilityState(declared.name(), declared.umask(), granted,
                     grantedToUnlisted, declared.element().line()));

@@ -86,6 +86,47 @@ class PermeabilityTest {
         assertEquals(0777, open.findState("busy").orElseThrow().rights("R1"));
     }
 
+    /** {@code unlisted_rights}: "everything but" a state can say without listing every member of every subtype. */
+    @Test
+    void unlistedRightsGoToEveryMemberAStateDoesNotList(@TempDir Path folder) {
+        Path robot = write(folder, "Robot.xml", """
+                <Agent short_class_name="Robot" full_class_name="masl.runtime.descriptor.fixtures.Robot">
+                  <Attribute attribute_name="name" member_id="R3" attribute_class="java.lang.String"/>
+                  <Primitive function_name="move" member_id="R1" synchronous_call="false" return_type_name="void"
+                             countermeasure="halt">
+                    <Parameter parameter_name="distance" parameter_type="double.class"/>
+                  </Primitive>
+                  <Primitive function_name="halt" member_id="R2" synchronous_call="false" return_type_name="void"/>
+                  <Permeability permeability_name="busy" umask="000" unlisted_rights="775">
+                    <Member member_id="R1" rights="110"/>
+                  </Permeability>
+                </Agent>
+                """);
+        Path sub = write(folder, "Sub.xml", """
+                <Agent short_class_name="Sub" full_class_name="masl.runtime.descriptor.fixtures.Khepera"
+                       super_full_class_name="masl.runtime.descriptor.fixtures.Robot">
+                  <Primitive function_name="getProximity" member_id="P1" synchronous_call="true"
+                             return_type_name="int.class" accessor="true">
+                    <Parameter parameter_name="sensor" parameter_type="int.class"/>
+                  </Primitive>
+                  <Permeability permeability_name="busy" umask="000">
+                    <Member member_id="R2" rights="700"/>
+                  </Permeability>
+                </Agent>
+                """);
+        DescriptorLoader loader = TestDescriptors.loader(folder);
+        AgentType allButMove = loader.load(robot);
+        PermeabilityState busy = allButMove.findState("busy").orElseThrow();
+        assertEquals(0110, busy.rights("R1"), "listed");
+        assertEquals(0775, busy.rights("R2"), "not listed");
+        assertEquals(0775, busy.rights("D1"), "not listed, inherited");
+        assertEquals(0, allButMove.findState("nothing").orElseThrow().rights("D1"), "other states as they were");
+        PermeabilityState subBusy = loader.load(sub).findState("busy").orElseThrow();
+        assertEquals(0110, subBusy.rights("R1"), "listed higher up");
+        assertEquals(0700, subBusy.rights("R2"), "listed here");
+        assertEquals(0775, subBusy.rights("P1"), "new in the subtype: the unlisted rights of the state it redeclares");
+    }
+
     @Test
     void aRootWithoutStatesHasNoInitialStateSoEverythingIsAllowed(@TempDir Path folder) {
         Path file = write(folder, "Bare.xml", agent("masl.runtime.descriptor.fixtures.Vector2d", ""));

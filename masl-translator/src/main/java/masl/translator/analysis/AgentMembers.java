@@ -2,8 +2,10 @@ package masl.translator.analysis;
 
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 import masl.runtime.descriptor.Attribute;
 import masl.runtime.descriptor.Primitive;
 
@@ -40,6 +42,20 @@ final class AgentMembers {
             type.descriptor().findAttribute(name).ifPresent(attribute -> found.add(new Declared<>(type, attribute)));
         }
         return found;
+    }
+
+    /** The names of every primitive of the loaded types, for hints. */
+    Set<String> primitiveNames() {
+        Set<String> names = new LinkedHashSet<>();
+        ordered(null).forEach(type -> type.descriptor().primitives().forEach(primitive -> names.add(primitive.name())));
+        return names;
+    }
+
+    /** The names of every attribute of the loaded types, for hints. */
+    Set<String> attributeNames() {
+        Set<String> names = new LinkedHashSet<>();
+        ordered(null).forEach(type -> type.descriptor().attributes().forEach(attribute -> names.add(attribute.name())));
+        return names;
     }
 
     /** Whether some imported type could not be loaded: then any member might be one of its, unknown. */

@@ -25,6 +25,11 @@ final class EntryNames {
         this.errors = errors;
     }
 
+    /** The names of the blocks, for hints. */
+    Set<String> names() {
+        return blocksByName.keySet();
+    }
+
     /**
      * The entry a name denotes as a receiver, or empty when no block has that name. A block that is not
      * declared with {@code Entry} is reported, and still returned so that its members raise no more errors.

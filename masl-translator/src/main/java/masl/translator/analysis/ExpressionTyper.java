@@ -7,6 +7,7 @@ import java.util.Optional;
 import masl.grammar.MASLBaseVisitor;
 import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.ExpressionContext;
+import masl.translator.diagnostics.Suggestions;
 import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.Token;
 
@@ -20,6 +21,11 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
 
     private final Bindings bindings;
     private final Errors errors;
+    /** The MASL words written like a call, for the hint when one is misspelt (MASL §2). */
+    private static final List<String> CALL_KEYWORDS = List.of("emit", "emitWithMessage", "getMessageFromEvent",
+            "clearEvents", "setAcceptState", "getAcceptState", "wait", "isFinished", "newAgent", "break", "reelect",
+            "exit");
+
     private final TypeNames typeNames;
     private final MemberTyper members;
     private final NameResolver names;
@@ -150,7 +156,9 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
             return MaslType.BOOLEAN;
         }
         types(arguments);
-        errors.at(call.identifier(), "cannot find symbol " + name + ": a primitive is invoked as ." + name + "(…)");
+        Optional<String> keyword = Suggestions.closest(name, CALL_KEYWORDS);
+        errors.at(call.identifier(), "cannot find symbol " + name + keyword.map(k -> "; did you mean `" + k + "`?")
+                .orElse(": a primitive is invoked as ." + name + "(…)"));
         return MaslType.ERROR;
     }
 
@@ -240,7 +248,7 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
         }
         Optional<MaslType> type = typeNames.resolve(name.qualifiedName().getText());
         if (type.isEmpty()) {
-            errors.at(name, "cannot find type " + name.qualifiedName().getText());
+            errors.at(name, "cannot find type " + name.qualifiedName().getText() + typeNames.hint(name.qualifiedName().getText()));
             return MaslType.ERROR;
         }
         return type.get();

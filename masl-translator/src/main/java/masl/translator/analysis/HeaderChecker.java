@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import masl.grammar.MASLParser;
 import masl.runtime.descriptor.AgentType;
 import masl.runtime.descriptor.DescriptorException;
@@ -15,6 +16,8 @@ import masl.runtime.descriptor.DescriptorLoader;
 import masl.runtime.descriptor.DescriptorProblem;
 import masl.runtime.descriptor.DescriptorSource;
 import masl.translator.diagnostics.Diagnostic;
+import masl.translator.diagnostics.Suggestions;
+import masl.translator.parse.Literals;
 import org.antlr.v4.runtime.CommonTokenStream;
 import org.antlr.v4.runtime.Token;
 
@@ -162,7 +165,8 @@ final class HeaderChecker {
     private ImportedType agentType(MASLParser.IdentifierContext name) {
         ImportedType type = types.get(name.getText());
         if (type == null) {
-            errors.at(name, "cannot find agent type " + name.getText() + ": import its descriptor first");
+            String hint = Suggestions.hint(name.getText(), types.keySet());
+            errors.at(name, "cannot find agent type " + name.getText() + (hint.isEmpty() ? ": import its descriptor first" : hint));
             type = new ImportedType(name.getText(), "", null, false);
             types.put(type.name(), type);
         }
@@ -183,8 +187,11 @@ final class HeaderChecker {
      */
     private Optional<String> filePath(MASLParser.FilePathContext path) {
         if (path.StringLiteral() != null) {
-            String quoted = path.StringLiteral().getText();
-            return Optional.of(quoted.substring(1, quoted.length() - 1).replace("\\\"", "\"").replace("\\\\", "\\"));
+            try {
+                return Optional.of(Literals.string(path.StringLiteral().getText()));
+            } catch (Literals.Problem checkedByTheParser) {
+                throw new IllegalStateException(checkedByTheParser);
+            }
         }
         StringBuilder visible = new StringBuilder();
         for (MASLParser.PathElementContext element : path.pathElement()) {
@@ -203,7 +210,9 @@ final class HeaderChecker {
         try {
             Optional<DescriptorSource> source = descriptors.agentPath().find(file, programFolder);
             if (source.isEmpty()) {
-                errors.at(where, "cannot find descriptor " + file);
+                errors.at(where, "cannot find descriptor " + file + ": looked in "
+                        + descriptors.agentPath().describeLookup(programFolder)
+                        + descriptorHint(file, descriptors.agentPath().descriptorNames(file, programFolder)));
                 return null;
             }
             return descriptors.load(source.get());
@@ -221,6 +230,14 @@ final class HeaderChecker {
             errors.at(where, "cannot read descriptor " + file + ": " + unreadable.getCause().getMessage());
             return null;
         }
+    }
+
+    /** The hint compares file names without their folder and {@code .xml}, which all candidates share. */
+    private static String descriptorHint(String file, Set<String> candidates) {
+        Map<String, String> byStem = new LinkedHashMap<>();
+        candidates.forEach(candidate -> byStem.putIfAbsent(fileStem(candidate), candidate));
+        return Suggestions.closest(fileStem(file), byStem.keySet())
+                .map(stem -> "; did you mean `" + byStem.get(stem) + "`?").orElse("");
     }
 
     private static String fileStem(String file) {

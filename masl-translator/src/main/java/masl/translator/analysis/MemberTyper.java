@@ -5,10 +5,12 @@ import java.lang.reflect.Modifier;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.stream.Collectors;
 import masl.runtime.descriptor.Attribute;
 import masl.runtime.descriptor.Parameter;
 import masl.runtime.descriptor.Primitive;
+import masl.translator.diagnostics.Suggestions;
 import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.Token;
 
@@ -98,8 +100,9 @@ final class MemberTyper {
     MaslType entryMember(EntryRef entry, Token name, List<MaslType> arguments, ParserRuleContext access) {
         EntryMember member = ENTRY_MEMBERS.get(name.getText());
         if (member == null) {
-            errors.at(name, "entry " + entry.name() + " has no member " + name.getText() + "; entry members are "
-                    + ENTRY_MEMBER_LIST);
+            String hint = Suggestions.hint(name.getText(), ENTRY_MEMBERS.keySet());
+            errors.at(name, "entry " + entry.name() + " has no member " + name.getText()
+                    + (hint.isEmpty() ? "; entry members are " + ENTRY_MEMBER_LIST : hint));
             return MaslType.ERROR;
         }
         bindings.bind(access, new Member(Member.Kind.ENTRY_MEMBER, name.getText(), List.of(), null));
@@ -191,7 +194,9 @@ final class MemberTyper {
      */
     private void reportMissingAgentMember(String kind, Token name) {
         if (!agentMembers.someTypeUnknown()) {
-            errors.at(name, "cannot find " + kind + " " + name.getText() + " in any imported agent type");
+            Set<String> known = kind.equals("primitive") ? agentMembers.primitiveNames() : agentMembers.attributeNames();
+            errors.at(name, "cannot find " + kind + " " + name.getText() + " in any imported agent type"
+                    + Suggestions.hint(name.getText(), known));
         }
     }
 

@@ -1,11 +1,13 @@
 package masl.translator.analysis;
 
 import java.util.HashSet;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
 import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.ExpressionContext;
+import masl.translator.diagnostics.Suggestions;
 import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.Token;
 
@@ -48,7 +50,7 @@ final class NameResolver {
         Optional<Symbol> symbol = scope.resolve(name.getText());
         if (symbol.isEmpty()) {
             if (unresolvedNames.add(name.getText())) {
-                errors.at(name, "cannot find event " + name.getText());
+                errors.at(name, "cannot find event " + name.getText() + Suggestions.hint(name.getText(), eventNames()));
             }
             return Optional.empty();
         }
@@ -215,7 +217,21 @@ final class NameResolver {
     /** An unknown name is one mistake however often it is used: reported at its first use only (events included). */
     void reportUnresolved(Token name) {
         if (unresolvedNames.add(name.getText())) {
-            errors.at(name, "cannot find symbol " + name.getText());
+            Set<String> known = new LinkedHashSet<>(scope.visibleNames());
+            known.addAll(entryNames.names());
+            known.addAll(typeNames.agentTypeNames());
+            errors.at(name, "cannot find symbol " + name.getText() + Suggestions.hint(name.getText(), known));
         }
+    }
+
+    /** The events in scope, for hints. */
+    private Set<String> eventNames() {
+        Set<String> events = new LinkedHashSet<>();
+        for (String visible : scope.visibleNames()) {
+            if (scope.resolve(visible).orElse(null) instanceof EventDecl) {
+                events.add(visible);
+            }
+        }
+        return events;
     }
 }

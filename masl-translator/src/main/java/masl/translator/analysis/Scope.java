@@ -1,8 +1,10 @@
 package masl.translator.analysis;
 
 import java.util.HashMap;
+import java.util.LinkedHashSet;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * The names a block declares, chained to the enclosing block's scope (MASL §3: names are resolved from
@@ -25,6 +27,15 @@ final class Scope {
             }
         }
         return Optional.empty();
+    }
+
+    /** Every name visible here, innermost first: the candidates of a hint for a name not found. */
+    Set<String> visibleNames() {
+        Set<String> visible = new LinkedHashSet<>();
+        for (Scope scope = this; scope != null; scope = scope.enclosing) {
+            visible.addAll(scope.names.keySet());
+        }
+        return visible;
     }
 
     /** Declares {@code name} here; false (and nothing changes) when it is already visible. */

@@ -1,9 +1,12 @@
 package masl.translator.analysis;
 
 import java.util.HashMap;
+import java.util.LinkedHashSet;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import masl.grammar.MASLParser;
+import masl.translator.diagnostics.Suggestions;
 
 /**
  * Resolves type names (MASL §4): Java primitives, the program's agent types, the utility classes of
@@ -32,6 +35,11 @@ final class TypeNames {
                 }
             }
         }
+    }
+
+    /** The names the program gives its agent types, for hints. */
+    Set<String> agentTypeNames() {
+        return agentTypes.keySet();
     }
 
     /** The agent type the program calls {@code name}. */
@@ -84,13 +92,22 @@ final class TypeNames {
             String name = javaType.qualifiedName().getText();
             element = resolve(name).orElse(null);
             if (element == null) {
-                errors.at(javaType.qualifiedName(), "cannot find type " + name);
+                errors.at(javaType.qualifiedName(), "cannot find type " + name + hint(name));
                 return MaslType.ERROR;
             }
             checkTypeArguments(javaType.typeArguments(), errors);
         }
         int dimensions = javaType.dims() == null ? 0 : javaType.dims().LBRACK().size();
         return arrayOf(element, dimensions);
+    }
+
+    /** A hint among the agent types, the primitive types and the utility classes' simple names. */
+    String hint(String name) {
+        Set<String> known = new LinkedHashSet<>(agentTypes.keySet());
+        known.addAll(PRIMITIVES.keySet());
+        known.addAll(utilityClassesBySimpleName.keySet());
+        known.addAll(JavaLibraryNames.simpleNames());
+        return Suggestions.hint(name, known);
     }
 
     /** Type arguments are erased (§3 types at run time what Java would type by its generics), but must exist. */

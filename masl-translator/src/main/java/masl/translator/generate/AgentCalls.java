@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import masl.runtime.descriptor.Attribute;
 import masl.runtime.descriptor.Parameter;
 import masl.runtime.descriptor.Primitive;
@@ -32,6 +33,19 @@ final class AgentCalls {
         }
     }
 
+    /** Who registers a call with a label (§10): the call site, or the helper, with or without a store. */
+    private enum Registration {
+        /** The helper gives the invocation's future; a label's invocation is registered at the call site. */
+        NONE,
+        /** The helper registers the invocation with the label it is given. */
+        LABEL,
+        /** The same, with the consumer that stores the result. */
+        LABEL_STORING
+    }
+
+    /** The names a helper gives its own parameters and locals: a primitive's parameter of one is renamed. */
+    private static final Set<String> HELPER_NAMES = Set.of("ctx", "callee", "self", "receiver", "label", "store");
+
     /** Helper name to its lines; a name is taken once per member, kind and receiver class. */
     private final Map<String, List<String>> helpers = new LinkedHashMap<>();
     private final Map<String, String> names = new LinkedHashMap<>();
@@ -57,13 +71,34 @@ final class AgentCalls {
      */
     String call(Kind kind, Primitive primitive, Primitive countermeasure, String calleeClass, String receiverClass,
             String callee, List<String> arguments) {
-        String helper = helper(kind, primitive, countermeasure, calleeClass, receiverClass);
+        String helper = helper(kind, primitive, countermeasure, calleeClass, receiverClass, Registration.NONE);
         List<String> all = new ArrayList<>();
         all.add("ctx");
         if (kind != Kind.INVOKE_SELF) {
             all.add(callee);
         }
         all.addAll(arguments);
+        return helper + "(" + String.join(", ", all) + ")";
+    }
+
+    /**
+     * A label's invocation (§10) of another agent's primitive, {@code label} and {@code store} (null
+     * for none) Java, on a receiver of static class {@code receiverClass} that may not be a
+     * {@code calleeClass} (§4): the helper registers it, and registers the {@code nop()} of an agent
+     * without the primitive as done at once, storing nothing.
+     */
+    String registered(Kind kind, Primitive primitive, Primitive countermeasure, String calleeClass,
+            String receiverClass, String label, String callee, List<String> arguments, String store) {
+        String helper = helper(kind, primitive, countermeasure, calleeClass, receiverClass,
+                store == null ? Registration.LABEL : Registration.LABEL_STORING);
+        List<String> all = new ArrayList<>();
+        all.add("ctx");
+        all.add(label);
+        all.add(callee);
+        all.addAll(arguments);
+        if (store != null) {
+            all.add(store);
+        }
         return helper + "(" + String.join(", ", all) + ")";
     }
 
@@ -80,51 +115,82 @@ final class AgentCalls {
     }
 
     private String helper(Kind kind, Primitive primitive, Primitive countermeasure, String calleeClass,
-            String receiverClass) {
-        String key = kind + " " + primitive.name() + " " + calleeClass + " " + receiverClass;
-        boolean dispatches = !calleeClass.equals(receiverClass);
+            String receiverClass, Registration registration) {
+        String key = kind + " " + primitive.name() + " " + calleeClass + " " + receiverClass + " " + registration;
         String existing = names.get(key);
         if (existing != null) {
             return existing;
         }
-        String name = unique(kind.prefix + "$" + primitive.name());
+        boolean labelled = registration != Registration.NONE;
+        String prefix = labelled ? "label" + Character.toUpperCase(kind.prefix.charAt(0)) + kind.prefix.substring(1)
+                : kind.prefix;
+        String name = unique(prefix + "$" + primitive.name());
         names.put(key, name);
         boolean self = kind == Kind.INVOKE_SELF;
-        String receiver = self ? "self" : "callee";
-        List<String> parameters = new ArrayList<>();
-        parameters.add("AgentContext ctx");
-        if (!self) {
-            parameters.add("final " + (dispatches ? receiverClass + " receiver" : calleeClass + " callee"));
+        boolean dispatches = !calleeClass.equals(receiverClass);
+        String runtimeCall = runtimeCall(kind, primitive, countermeasure);
+        String nop = "CompletableFuture.completedFuture(" + defaultValue(primitive.returnType()) + ")";
+        if (labelled) {
+            runtimeCall = "label.register(" + runtimeCall
+                    + (registration == Registration.LABEL_STORING ? ", store)" : ")");
+            nop = "label.register(" + nop + ")";
         }
-        List<String> argumentNames = new ArrayList<>();
-        int i = 0;
-        for (Parameter parameter : primitive.parameters()) {
-            parameters.add("final " + simple(parameter.type()) + " " + argumentName(parameter, i));
-            argumentNames.add(argumentName(parameter, i));
-            i++;
+        String type = self ? simple(primitive.returnType()) : futureType(primitive);
+        List<String> lines = new ArrayList<>();
+        lines.add("    /** " + describe(kind, primitive, countermeasure)
+                + (labelled ? " Registered with a label (MASL 10); a nop() is done at once and stores nothing." : "")
+                + " */");
+        lines.add("    private " + (self ? "" : "static ") + type + " " + name + "("
+                + String.join(", ", parameters(kind, primitive, calleeClass, receiverClass, registration)) + ") {");
+        if (dispatches) {
+            lines.addAll(dispatch(calleeClass, "callee", "return " + nop + ";", primitive.name()));
         }
         boolean isVoid = primitive.returnType().equals("void");
-        String type = self ? simple(primitive.returnType()) : futureType(primitive);
-        String run = callable(receiver + "." + primitive.name() + "(" + String.join(", ", argumentNames) + ")", isVoid);
-        String runtimeCall = "ctx." + kind.prefix + "(" + (self ? "" : "callee, ") + JavaText.quote(primitive.name())
-                + ", " + defaultValue(primitive.returnType()) + ", " + run;
-        if (kind == Kind.LAUNCH && countermeasure != null) {
-            runtimeCall += ", " + JavaText.quote(countermeasure.name()) + ", "
-                    + callable("callee." + countermeasure.name() + "()", countermeasure.returnType().equals("void"));
-        }
-        runtimeCall += ")";
-        List<String> lines = new ArrayList<>();
-        lines.add("    /** " + describe(kind, primitive, countermeasure) + " */");
-        lines.add("    private " + (self ? "" : "static ") + type + " " + name + "(" + String.join(", ", parameters)
-                + ") {");
-        if (dispatches) {
-            lines.addAll(dispatch(calleeClass, "callee", "return CompletableFuture.completedFuture("
-                    + defaultValue(primitive.returnType()) + ");", primitive.name()));
-        }
         lines.add("        " + (self && isVoid ? "" : "return ") + runtimeCall + ";");
         lines.add("    }");
         helpers.put(name, lines);
         return name;
+    }
+
+    /** A helper's parameters: the context, the label, the receiver, the primitive's arguments, the store. */
+    private static List<String> parameters(Kind kind, Primitive primitive, String calleeClass, String receiverClass,
+            Registration registration) {
+        List<String> parameters = new ArrayList<>();
+        parameters.add("AgentContext ctx");
+        if (registration != Registration.NONE) {
+            parameters.add("final Label label");
+        }
+        if (kind != Kind.INVOKE_SELF) {
+            parameters.add("final " + (calleeClass.equals(receiverClass) ? calleeClass + " callee"
+                    : receiverClass + " receiver"));
+        }
+        int i = 0;
+        for (Parameter parameter : primitive.parameters()) {
+            parameters.add("final " + simple(parameter.type()) + " " + argumentName(parameter, i++));
+        }
+        if (registration == Registration.LABEL_STORING) {
+            parameters.add("final java.util.function.Consumer<? super " + simple(boxed(primitive.returnType()))
+                    + "> store");
+        }
+        return parameters;
+    }
+
+    /** The runtime's call of {@code primitive} (contract §8.1) on {@code self} or {@code callee}, with its countermeasure. */
+    private static String runtimeCall(Kind kind, Primitive primitive, Primitive countermeasure) {
+        boolean self = kind == Kind.INVOKE_SELF;
+        List<String> argumentNames = new ArrayList<>();
+        for (int i = 0; i < primitive.parameters().size(); i++) {
+            argumentNames.add(argumentName(primitive.parameters().get(i), i));
+        }
+        String run = callable((self ? "self" : "callee") + "." + primitive.name() + "("
+                + String.join(", ", argumentNames) + ")", primitive.returnType().equals("void"));
+        String call = "ctx." + kind.prefix + "(" + (self ? "" : "callee, ") + JavaText.quote(primitive.name())
+                + ", " + defaultValue(primitive.returnType()) + ", " + run;
+        if (kind == Kind.LAUNCH && countermeasure != null) {
+            call += ", " + JavaText.quote(countermeasure.name()) + ", "
+                    + callable("callee." + countermeasure.name() + "()", countermeasure.returnType().equals("void"));
+        }
+        return call + ")";
     }
 
     private static String describe(Kind kind, Primitive primitive, Primitive countermeasure) {
@@ -203,20 +269,29 @@ final class AgentCalls {
         return name + "(ctx, " + owner + ", " + value + ")";
     }
 
-    /** {@code store$x(owner)}: the consumer a label stores a result with into attribute {@code attribute} (§10). */
-    String store(Attribute attribute, String ownerClass, String owner) {
-        String key = "store " + attribute.name() + " " + ownerClass;
+    /**
+     * {@code store$x(owner)}: the consumer a label stores a result with into attribute
+     * {@code attribute} (§10), declared by {@code ownerClass}, of an agent whose static class is
+     * {@code receiverClass}; one that does nothing for an agent without the attribute (§4).
+     */
+    String store(Attribute attribute, String ownerClass, String receiverClass, String owner) {
+        String key = "store " + attribute.name() + " " + ownerClass + " " + receiverClass;
         String name = names.get(key);
         if (name == null) {
             name = unique("store$" + attribute.name());
             names.put(key, name);
+            boolean dispatches = !ownerClass.equals(receiverClass);
             String field = (attribute.isStatic() ? ownerClass : "owner") + "." + attribute.name();
-            helpers.put(name, List.of(
-                    "    /** Stores a label's result in attribute " + attribute.name() + " of owner (MASL 10). */",
-                    "    private static java.util.function.Consumer<" + simple(boxed(attribute.type())) + "> " + name
-                            + "(final " + ownerClass + " owner) {",
-                    "        return value -> " + field + " = value;",
-                    "    }"));
+            List<String> lines = new ArrayList<>();
+            lines.add("    /** Stores a label's result in attribute " + attribute.name() + " of owner (MASL 10). */");
+            lines.add("    private static java.util.function.Consumer<" + simple(boxed(attribute.type())) + "> " + name
+                    + "(final " + (dispatches ? receiverClass + " receiver" : ownerClass + " owner") + ") {");
+            if (dispatches) {
+                lines.addAll(dispatch(ownerClass, "owner", "return value -> { };", attribute.name()));
+            }
+            lines.add("        return value -> " + field + " = value;");
+            lines.add("    }");
+            helpers.put(name, lines);
         }
         return name + "(" + owner + ")";
     }
@@ -232,7 +307,7 @@ final class AgentCalls {
 
     private static String argumentName(Parameter parameter, int index) {
         String name = JavaNames.identifier(parameter.name());
-        return name.equals("ctx") || name.equals("callee") || name.equals("self") ? name + "_" + index : name;
+        return HELPER_NAMES.contains(name) ? name + "_" + index : name;
     }
 
     private static String callable(String call, boolean isVoid) {

@@ -103,7 +103,7 @@ final class CaseWriter {
 
     /** A comment line in the current case. */
     void comment(String text) {
-        line("// " + text);
+        line("// " + JavaText.comment(text));
     }
 
     void open(String code) {
@@ -218,7 +218,7 @@ final class CaseWriter {
         for (Case c : cases) {
             text.append(margin).append("case ").append(c.number).append(':');
             if (c.comment != null) {
-                text.append(" // ").append(c.comment);
+                text.append(" // ").append(JavaText.comment(c.comment));
             }
             text.append('\n');
             for (Object line : c.lines) {

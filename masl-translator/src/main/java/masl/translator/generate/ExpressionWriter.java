@@ -4,8 +4,10 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.Predicate;
 import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.ExpressionContext;
+import masl.runtime.descriptor.AgentType;
 import masl.runtime.descriptor.Attribute;
 import masl.runtime.descriptor.Parameter;
 import masl.runtime.descriptor.Primitive;
@@ -187,30 +189,36 @@ final class ExpressionWriter {
      * A launch registered with a label (§10, contract §8.3): {@code l.a.m(…)}, and the value of
      * {@code l.x = a.m(…)} with {@code store} the Java consumer of the result (null for none). An
      * asynchronous primitive is launched and the instruction ends at once; a synchronous one is
-     * invoked and awaited, registered as done.
+     * invoked and awaited, registered as done. An addressee that may lack the primitive (§4) goes
+     * through a helper that registers the call, or its {@code nop()}, itself.
      */
     String labelLaunch(Label label, ExpressionContext agent, String callee, String name,
             List<ExpressionContext> arguments, String store, ParserRuleContext where) {
-        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(agent);
-        Optional<Primitive> found = calleeType == null ? Optional.empty() : calleeType.findPrimitive(name);
-        if (found.isEmpty()) {
-            return unsupported.report(where, "a label invocation of a primitive that the addressee's declared type lacks");
+        AgentType calleeType = labelCallee(agent, name, where);
+        if (calleeType == null) {
+            return unsupported.report(where, "a label invocation of a primitive the agent's own type lacks, inside an"
+                    + " expression,");
         }
-        Primitive primitive = found.get();
+        AgentType receiverType = agent == null ? selfType.descriptor() : queries.descriptorOf(agent);
+        Primitive primitive = calleeType.findPrimitive(name).orElseThrow();
         List<String> java = arguments(primitive, arguments);
-        String register = labelValue(label) + ".register(";
-        String tail = store == null ? ")" : ", " + store + ")";
-        if (primitive.synchronous()) {
-            String future = assignments.temporary(AgentCalls.futureType(primitive));
-            String invoke = calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeType.fullClassName(), callee, java);
-            suspensions.add(new Suspension(future + " = " + register + invoke + tail + ";", future,
-                    "the result of " + JavaText.snippet(where)));
-            return future + ".join()";
-        }
-        Primitive countermeasure = primitive.countermeasure() == null ? null
+        AgentCalls.Kind kind = primitive.synchronous() ? AgentCalls.Kind.INVOKE : AgentCalls.Kind.LAUNCH;
+        Primitive countermeasure = primitive.synchronous() || primitive.countermeasure() == null ? null
                 : calleeType.findPrimitive(primitive.countermeasure()).orElse(null);
-        return register + calls.call(AgentCalls.Kind.LAUNCH, primitive, countermeasure, calleeType.fullClassName(),
-                callee, java) + tail;
+        String calleeClass = calleeType.fullClassName();
+        String receiverClass = receiverClass(receiverType, calleeType);
+        String registered = calleeClass.equals(receiverClass)
+                ? labelValue(label) + ".register(" + calls.call(kind, primitive, countermeasure, calleeClass, callee, java)
+                        + (store == null ? ")" : ", " + store + ")")
+                : calls.registered(kind, primitive, countermeasure, calleeClass, receiverClass, labelValue(label), callee,
+                        java, store);
+        if (!primitive.synchronous()) {
+            return registered;
+        }
+        String future = assignments.temporary(AgentCalls.futureType(primitive));
+        suspensions.add(new Suspension(future + " = " + registered + ";", future,
+                "the result of " + JavaText.snippet(where)));
+        return future + ".join()";
     }
 
     /** Whether a statement is a label launch of an asynchronous primitive: zero duration (§5, §10). */
@@ -228,13 +236,24 @@ final class ExpressionWriter {
                 : call instanceof MASLParser.PrimaryExprContext primary
                         && primary.primary() instanceof MASLParser.SelfInvocationContext self
                         ? self.identifier().getText() : null;
+        if (name == null) {
+            return false;
+        }
         ExpressionContext agent = expression instanceof MASLParser.AssignExprContext
                 ? (call instanceof MASLParser.MethodCallContext method && !TreeQueries.isThis(method.expression())
                         ? method.expression() : null)
                 : labelForm(((MASLParser.MethodCallContext) call).expression()).agent();
-        var calleeType = agent == null ? selfType.descriptor() : queries.descriptorOf(agent);
-        Primitive primitive = calleeType == null || name == null ? null : calleeType.findPrimitive(name).orElse(null);
-        return primitive != null && !primitive.synchronous();
+        AgentType calleeType = labelCallee(agent, name, call);
+        return calleeType != null && !calleeType.findPrimitive(name).orElseThrow().synchronous();
+    }
+
+    /**
+     * The type whose primitive {@code name} a label's invocation {@code where} of {@code agent}
+     * (null for the current agent) calls, as {@link #declaringType} finds it.
+     */
+    private AgentType labelCallee(ExpressionContext agent, String name, ParserRuleContext where) {
+        var receiverType = agent == null ? selfType.descriptor() : queries.descriptorOf(agent);
+        return declaringType(receiverType, agent, where, type -> type.findPrimitive(name).isPresent());
     }
 
     /** The field of a local variable: {@code block$name}. */
@@ -447,7 +466,7 @@ final class ExpressionWriter {
         if (primary instanceof MASLParser.ParenExprContext paren) {
             return "(" + expr(paren.expression()) + ")";
         } else if (primary instanceof MASLParser.LiteralExprContext literal) {
-            return literal.getText();
+            return JavaText.literal(literal.literal());
         } else if (primary instanceof MASLParser.ThisExprContext) {
             return "self";
         } else if (primary instanceof MASLParser.SelfInvocationContext call) {
@@ -638,9 +657,13 @@ final class ExpressionWriter {
     private String primitiveCall(ExpressionContext receiver, String name, List<ExpressionContext> arguments,
             ParserRuleContext where) {
         boolean internal = receiver == null || TreeQueries.isThis(receiver);
+        if (!internal && queries.namedType(receiver) != null) {
+            // Permeability filters an invocation by its callee: a type is none (as for static attributes).
+            return unsupported.report(where, "an invocation of a primitive through its type");
+        }
         var receiverType = internal ? selfType.descriptor() : queries.descriptorOf(receiver);
         // Polymorphism (MASL 4): for another agent, a type the receiver may be of may declare it.
-        var calleeType = declaringType(receiverType, internal, where, type -> type.findPrimitive(name).isPresent());
+        var calleeType = declaringType(receiverType, receiver, where, type -> type.findPrimitive(name).isPresent());
         Optional<Primitive> found = calleeType == null ? Optional.empty() : calleeType.findPrimitive(name);
         if (found.isEmpty()) {
             return unsupported.report(where, internal
@@ -651,7 +674,7 @@ final class ExpressionWriter {
         String callee = internal ? "self" : expr(receiver);
         List<String> java = arguments(primitive, arguments);
         String calleeClass = calleeType.fullClassName();
-        String receiverClass = receiverType.fullClassName();
+        String receiverClass = receiverClass(receiverType, calleeType);
         if (primitive.synchronous() && internal) {
             return calls.call(AgentCalls.Kind.INVOKE_SELF, primitive, null, calleeClass, callee, java);
         }
@@ -692,7 +715,7 @@ final class ExpressionWriter {
     private String attributeRead(ExpressionContext owner, String name, ParserRuleContext where) {
         boolean own = owner == null || TreeQueries.isThis(owner);
         var receiverType = own ? selfType.descriptor() : queries.descriptorOf(owner);
-        var ownerType = declaringType(receiverType, own, where, type -> type.findAttribute(name).isPresent());
+        var ownerType = declaringType(receiverType, owner, where, type -> type.findAttribute(name).isPresent());
         if (ownerType == null) {
             return unsupported.report(where, "an attribute that the owner's declared type lacks");
         }
@@ -704,14 +727,15 @@ final class ExpressionWriter {
         if (!own && queries.namedType(owner) != null) {
             return unsupported.report(where, "a static attribute read through its type, unless a constant,");
         }
-        return calls.read(attribute, ownerType.fullClassName(), receiverType.fullClassName(), own ? "self" : expr(owner));
+        return calls.read(attribute, ownerType.fullClassName(), receiverClass(receiverType, ownerType),
+                own ? "self" : expr(owner));
     }
 
     /** A write of attribute {@code name} of {@code owner}'s agent, §8.4; {@code value} is Java. */
     String attributeWrite(ExpressionContext owner, String name, String value, ParserRuleContext where) {
         boolean own = owner == null || TreeQueries.isThis(owner);
         var receiverType = own ? selfType.descriptor() : queries.descriptorOf(owner);
-        var ownerType = declaringType(receiverType, own, where, type -> type.findAttribute(name).isPresent());
+        var ownerType = declaringType(receiverType, owner, where, type -> type.findAttribute(name).isPresent());
         if (ownerType == null) {
             return unsupported.report(where, "an attribute that the owner's declared type lacks");
         }
@@ -719,37 +743,60 @@ final class ExpressionWriter {
             return unsupported.report(where, "a write of a static attribute through its type");
         }
         return calls.write(ownerType.findAttribute(name).orElseThrow(), ownerType.fullClassName(),
-                receiverType.fullClassName(), own ? "self" : expr(owner), value);
+                receiverClass(receiverType, ownerType), own ? "self" : expr(owner), value);
     }
 
     /**
-     * The type whose member an access uses: the receiver's static type if it has it; for another
-     * agent, else a subtype some imported type declaring the member is (§4); null if none.
+     * The type whose member an access uses: the receiver's static type if it has it. For another
+     * agent ({@code receiver} neither null nor {@code this}), else a subtype some imported type
+     * declaring the member is (§4), else any type declaring it: no agent the receiver may be has the
+     * member, so the helper's class test makes the access a {@code nop()} for all. Null for the
+     * current agent's member its type lacks, and for a member read through a type that lacks it.
      */
-    private masl.runtime.descriptor.AgentType declaringType(masl.runtime.descriptor.AgentType receiverType,
-            boolean own, ParserRuleContext where, java.util.function.Predicate<masl.runtime.descriptor.AgentType> has) {
+    private AgentType declaringType(AgentType receiverType, ExpressionContext receiver, ParserRuleContext where,
+            Predicate<AgentType> has) {
         if (receiverType == null || has.test(receiverType)) {
             return receiverType;
         }
-        if (own) {
+        if (receiver == null || TreeQueries.isThis(receiver)) {
             return null;
         }
+        AgentType unrelated = null;
         for (ImportedType declaring : declaringTypes(where)) {
-            if (declaring.isLoaded() && declaring.descriptor().isSubtypeOf(receiverType) && has.test(declaring.descriptor())) {
-                return declaring.descriptor();
+            if (declaring.isLoaded() && has.test(declaring.descriptor())) {
+                if (declaring.descriptor().isSubtypeOf(receiverType)) {
+                    return declaring.descriptor();
+                }
+                unrelated = unrelated == null ? declaring.descriptor() : unrelated;
             }
         }
-        return null;
+        return queries.namedType(receiver) == null ? unrelated : null;
+    }
+
+    /**
+     * The class a member's helper takes its receiver as: the receiver's static type's, or, when the
+     * declaring type is no subtype of it, the root type's (the class test then always fails).
+     */
+    private static String receiverClass(AgentType receiverType, AgentType declaring) {
+        if (declaring.isSubtypeOf(receiverType)) {
+            return receiverType.fullClassName();
+        }
+        AgentType root = receiverType;
+        while (root.supertype() != null) {
+            root = root.supertype();
+        }
+        return root.fullClassName();
     }
 
     /** The consumer storing a label's result in attribute {@code name} of an agent (§10): no permeability filter. */
     String attributeStore(ExpressionContext owner, String ownerJava, String name, ParserRuleContext where) {
-        var ownerType = owner == null ? selfType.descriptor() : queries.descriptorOf(owner);
-        Optional<Attribute> attribute = ownerType == null ? Optional.empty() : ownerType.findAttribute(name);
-        if (attribute.isEmpty()) {
+        var receiverType = owner == null ? selfType.descriptor() : queries.descriptorOf(owner);
+        var ownerType = declaringType(receiverType, owner, where, type -> type.findAttribute(name).isPresent());
+        if (ownerType == null) {
             return unsupported.report(where, "an attribute that the owner's declared type lacks");
         }
-        return calls.store(attribute.get(), ownerType.fullClassName(), ownerJava);
+        return calls.store(ownerType.findAttribute(name).orElseThrow(), ownerType.fullClassName(),
+                receiverClass(receiverType, ownerType), ownerJava);
     }
 
     /** The value of a {@code final} attribute with a {@code value}: a Java constant (§9); null otherwise. */

@@ -49,8 +49,7 @@ final class InstructionWriter {
         cases.note(at(statement) + ": " + JavaText.snippet(statement));
         String constant = expressions.event(event);
         if (message != null && queries.usesAbsentMember(message)) {
-            cases.comment("a nop() for " + expressions.selfType().name()
-                    + ": its type lacks a member this statement uses (MASL 4)");
+            nop();
         } else if (message == null) {
             cases.line("ctx.emit(" + constant + ");");
         } else {
@@ -76,8 +75,7 @@ final class InstructionWriter {
         ExpressionContext expression = statement.expression();
         cases.note(at(statement) + ": " + JavaText.snippet(statement));
         if (queries.usesAbsentMember(expression)) {
-            cases.comment("a nop() for " + expressions.selfType().name()
-                    + ": its type lacks a member this statement uses (MASL 4)");
+            nop();
         } else if (isSleep(expression)) {
             ExpressionContext duration = ExpressionWriter.arguments(sleepArguments(expression)).get(0);
             cases.suspending("ctx.sleep(" + expressions.expr(duration) + ")", cases.point());
@@ -141,11 +139,21 @@ final class InstructionWriter {
         cases.note(at(statement) + ": " + wait.what());
     }
 
+    /** A statement using a member this agent's type lacks: a {@code nop()}, which takes its instruction (MASL 4). */
+    private void nop() {
+        cases.comment("a nop() for " + expressions.selfType().name()
+                + ": its type lacks a member this statement uses (MASL 4)");
+    }
+
     /** {@code setAcceptState(s);} (MASL 11): an instruction. */
     void setAcceptState(MASLParser.SetAcceptStateStmtContext statement) {
         cases.note(at(statement) + ": " + JavaText.snippet(statement));
-        writeGuarded(statement.expression(), "ctx.setAcceptState("
-                + expressions.converted(MaslType.STRING, statement.expression()) + ");");
+        if (queries.usesAbsentMember(statement)) {
+            nop();
+        } else {
+            writeGuarded(statement.expression(), "ctx.setAcceptState("
+                    + expressions.converted(MaslType.STRING, statement.expression()) + ");");
+        }
         stepBoundary();
     }
 
@@ -155,6 +163,11 @@ final class InstructionWriter {
      */
     void waitFor(MASLParser.WaitStmtContext statement) {
         cases.note(at(statement) + ": " + JavaText.snippet(statement));
+        if (queries.usesAbsentMember(statement)) {
+            nop();
+            stepBoundary();
+            return;
+        }
         String state = expressions.converted(MaslType.STRING, statement.state);
         String timeout = statement.timeout == null ? "" : ", " + expressions.expr(statement.timeout);
         for (ExpressionWriter.Suspension wait : expressions.takeSuspensions()) {

@@ -35,7 +35,7 @@ final class StaticStructure {
         if (root != null) {
             String name = names.take(JavaNames.constant(root.name()));
             blocks.put(root, name);
-            declarations.add("// " + sourceName + ":" + line(root) + ": " + root);
+            declarations.add("// " + JavaText.comment(sourceName + ":" + line(root) + ": " + root));
             declarations.add("static final EntryDefinition " + name + " = EntryDefinition.main("
                     + JavaText.quote(root.name()) + ", " + mode(root) + ");");
             declareContents(root);
@@ -128,8 +128,8 @@ final class StaticStructure {
                 String name = names.take(String.join("_", members.stream().map(b -> JavaNames.constant(b.name()))
                         .toList()) + "_SEQUENCE");
                 sequences.put(sequence, name);
-                declarations.add("// " + sourceName + ":" + line(members.get(0)) + ": the e-sequence "
-                        + members.stream().map(Block::name).toList());
+                declarations.add("// " + JavaText.comment(sourceName + ":" + line(members.get(0)) + ": the e-sequence "
+                        + members.stream().map(Block::name).toList()));
                 declarations.add("static final ESequence " + name + " = " + owner + ".newSequence();");
                 for (Block child : members) {
                     declareBlock(child, name + ".block(");
@@ -141,7 +141,7 @@ final class StaticStructure {
     private void declareBlock(Block child, String factory) {
         String name = names.take(JavaNames.constant(child.name()));
         blocks.put(child, name);
-        declarations.add("// " + sourceName + ":" + line(child) + ": " + child);
+        declarations.add("// " + JavaText.comment(sourceName + ":" + line(child) + ": " + child));
         declarations.add("static final EntryDefinition " + name + " = " + factory + JavaText.quote(child.name())
                 + ", " + mode(child) + ");");
         declareContents(child);

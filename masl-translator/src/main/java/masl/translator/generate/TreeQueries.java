@@ -12,6 +12,7 @@ import masl.grammar.MASLParser.ExpressionContext;
 import masl.translator.analysis.AgentDecl;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.ImportedType;
+import masl.translator.analysis.Label;
 import masl.translator.analysis.Member;
 import masl.translator.analysis.Variable;
 import org.antlr.v4.runtime.ParserRuleContext;
@@ -51,7 +52,8 @@ final class TreeQueries {
 
     /**
      * Whether {@code tree} uses a primitive or attribute of the current agent that this agent's type
-     * lacks: the statement is then a {@code nop()} for it, and a test or condition is false (§4).
+     * lacks, label forms on it included ({@code l.m()}, {@code l.this.m()}, {@code l.this.x = …}, §10):
+     * the statement is then a {@code nop()} for it, and a test or condition is false (§4).
      * Another agent's missing member is the call's business (a polymorphic receiver gives the default).
      */
     boolean usesAbsentMember(ParseTree tree) {
@@ -66,15 +68,17 @@ final class TreeQueries {
         };
     }
 
-    private static boolean isSelfAccess(ParserRuleContext node) {
+    private boolean isSelfAccess(ParserRuleContext node) {
         if (node instanceof MASLParser.PrimaryExprContext primary) {
             return primary.primary() instanceof MASLParser.SelfInvocationContext
                     || primary.primary() instanceof MASLParser.SelfAttributeContext;
         }
         if (node instanceof MASLParser.MethodCallContext call) {
-            return isThis(call.expression());
+            return isThis(call.expression()) || call.expression() instanceof MASLParser.LabelSelfContext
+                    || program.symbol(call.expression()) instanceof Label;
         }
-        return node instanceof MASLParser.FieldAccessContext access && isThis(access.expression());
+        return node instanceof MASLParser.FieldAccessContext access
+                && (isThis(access.expression()) || access.expression() instanceof MASLParser.LabelSelfContext);
     }
 
     static boolean isThis(ExpressionContext expression) {

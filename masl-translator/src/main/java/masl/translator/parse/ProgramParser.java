@@ -2,10 +2,12 @@ package masl.translator.parse;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import masl.grammar.MASLLexer;
 import masl.grammar.MASLParser;
 import masl.grammar.MaslRuleContext;
 import masl.translator.diagnostics.Diagnostics;
+import masl.translator.diagnostics.Suggestions;
 import masl.translator.source.SourceFile;
 import org.antlr.v4.runtime.BailErrorStrategy;
 import org.antlr.v4.runtime.BaseErrorListener;
@@ -19,6 +21,7 @@ import org.antlr.v4.runtime.RecognitionException;
 import org.antlr.v4.runtime.Recognizer;
 import org.antlr.v4.runtime.Token;
 import org.antlr.v4.runtime.Vocabulary;
+import org.antlr.v4.runtime.WritableToken;
 import org.antlr.v4.runtime.atn.PredictionMode;
 import org.antlr.v4.runtime.misc.IntervalSet;
 import org.antlr.v4.runtime.misc.ParseCancellationException;
@@ -41,6 +44,9 @@ public final class ProgramParser {
     public record Parsed(SourceFile source, MASLParser.ProgramContext tree, CommonTokenStream tokens, int nodes,
             boolean repaired) { }
 
+    private static final Map<String, Integer> MODES = Map.of("scalar", MASLLexer.SCALAR,
+            "synchronous", MASLLexer.SYNCHRONOUS, "asynchronous", MASLLexer.ASYNCHRONOUS);
+
     private ProgramParser() {
     }
 
@@ -57,15 +63,67 @@ public final class ProgramParser {
         parser.removeErrorListeners();
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
         parser.setErrorHandler(new BailErrorStrategy());
+        Parsed parsed;
         try {
-            return numbered(source, parser, tokens, false);
+            parsed = numbered(source, parser, tokens, false);
         } catch (ParseCancellationException notSll) {
             tokens.seek(0);
             parser.reset();
             parser.getInterpreter().setPredictionMode(PredictionMode.LL);
             parser.setErrorHandler(new DefaultErrorStrategy());
             parser.addErrorListener(new Reporter(source.name(), diagnostics));
-            return numbered(source, parser, tokens, true);
+            correctMisspeltModes(tokens, source.name(), diagnostics);
+            parsed = numbered(source, parser, tokens, true);
+        }
+        checkLiterals(source.name(), tokens, diagnostics);
+        return parsed;
+    }
+
+    /**
+     * Reports each string or character literal Java would not read as it shows ({@link Literals}), at
+     * the escape at fault: the generated Java holds the literals' values, and must hold exactly what
+     * the analysis saw.
+     */
+    private static void checkLiterals(String file, CommonTokenStream tokens, Diagnostics diagnostics) {
+        tokens.fill();
+        for (Token token : tokens.getTokens()) {
+            try {
+                if (token.getType() == MASLLexer.StringLiteral) {
+                    Literals.string(token.getText());
+                } else if (token.getType() == MASLLexer.CharacterLiteral) {
+                    Literals.character(token.getText());
+                }
+            } catch (Literals.Problem problem) {
+                String text = token.getText();
+                diagnostics.error(file, token.getLine(),
+                        token.getCharPositionInLine() + 1 + text.codePointCount(0, problem.offset()),
+                        problem.getMessage());
+            }
+        }
+    }
+
+    /**
+     * {@code synchronus entry main (…)}: a word before {@code entry} that is near a mode is that
+     * mode misspelt. It is reported once, at the word, with the mode meant, and read as that mode,
+     * so that the block parses and nothing after it reports an echo of the slip.
+     */
+    private static void correctMisspeltModes(CommonTokenStream tokens, String file, Diagnostics diagnostics) {
+        tokens.fill();
+        Token word = null;
+        for (Token token : tokens.getTokens()) {
+            if (token.getChannel() != Token.DEFAULT_CHANNEL) {
+                continue;
+            }
+            if (token.getType() == MASLLexer.ENTRY && word != null && word.getType() == MASLLexer.Identifier) {
+                Token misspelt = word;
+                Suggestions.closest(misspelt.getText(), MODES.keySet()).ifPresent(mode -> {
+                    diagnostics.error(file, misspelt.getLine(), misspelt.getCharPositionInLine() + 1,
+                            "unknown mode " + misspelt.getText() + "; did you mean `" + mode + "`?");
+                    ((WritableToken) misspelt).setType(MODES.get(mode));
+                    ((WritableToken) misspelt).setText(mode);
+                });
+            }
+            word = token;
         }
     }
 

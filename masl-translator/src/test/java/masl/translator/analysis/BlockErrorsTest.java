@@ -183,8 +183,8 @@ class BlockErrorsTest {
                   resume;
                 }
                 """);
-        assertEquals("""
-                test.masl:1:8: error: cannot find descriptor robots/Nope.xml
+        assertEquals("test.masl:1:8: error: cannot find descriptor robots/Nope.xml: looked in the program's folder "
+                + Analysis.FIXTURES + " and the descriptors shipped with masl\n" + """
                 test.masl:4:26: error: the test of entry main must be boolean or numeric, found String
                 test.masl:5:3: error: resume can only be used in a reaction""", result.rendered());
     }

@@ -16,7 +16,8 @@ class HeaderErrorsTest {
         analyze("""
                 import robots/Missing.xml;
                 Missing m = newAgent(Missing);
-                """).assertError(1, 8, "cannot find descriptor robots/Missing.xml");
+                """).assertError(1, 8, "cannot find descriptor robots/Missing.xml: looked in the program's folder "
+                        + Analysis.FIXTURES + " and the descriptors shipped with masl");
     }
 
     @Test

@@ -247,6 +247,25 @@ class ConstructsTest {
     }
 
     @Test
+    void aStateChangeOrAWaitUsingAnAbsentMemberIsANop() {
+        String program = """
+                import robots/Khepera.xml;
+                import robots/Explorer.xml;
+                Khepera k = newAgent(Khepera);
+                Khepera e = newAgent(Explorer);
+                synchronous entry main (true) {
+                  wait(.explore("default"), 1);
+                  setAcceptState(.explore("nothing"));
+                  asynchronous entry report (!(this instanceof Explorer)) {
+                    .logln(getAcceptState(k) + " " + getAcceptState(e));
+                  }
+                }
+                """;
+        // The explorer, in state nothing, may not even log: the khepera, which kept its state, reports.
+        assertJournal("default nothing\n", program);
+    }
+
+    @Test
     void aWriteToALimitedVariableByAnotherTypeIsIgnoredAndRaisesForbiddenAccess() {
         assertJournal("forbidden owned\nowned 1\n", """
                 import Default.xml;

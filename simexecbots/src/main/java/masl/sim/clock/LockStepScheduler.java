@@ -1,13 +1,11 @@
 package masl.sim.clock;
 
-import java.util.ArrayList;
 import java.util.List;
-import java.util.Random;
-import java.util.SplittableRandom;
 import java.util.concurrent.Executor;
 import masl.runtime.AgentTask;
 import masl.runtime.PrimitiveTurn;
 import masl.runtime.Scheduler;
+import masl.runtime.SeededDraw;
 import masl.sim.physics.PhysicsWorld;
 
 /**
@@ -30,10 +28,9 @@ public final class LockStepScheduler implements Scheduler {
 
     private final PhysicsWorld world;
     private final int slicesPerStep;
-    private final Random random;
     private final StepTimers timers;
-    /** Runnable agents' slices and primitives' turns; drawn by index, removed by swapping with the last one. */
-    private final List<Runnable> runnable = new ArrayList<>();
+    /** Runnable agents' slices and primitives' turns. */
+    private final SeededDraw runnable;
     private int slicesSinceStep;
     private Thread worker;
     private volatile boolean shutDown;
@@ -49,7 +46,7 @@ public final class LockStepScheduler implements Scheduler {
         }
         this.world = world;
         this.slicesPerStep = slicesPerStep;
-        this.random = new Random(new SplittableRandom(seed).nextLong());
+        this.runnable = new SeededDraw(seed);
         this.timers = new StepTimers(world.settings().stepSize());
     }
 
@@ -82,11 +79,7 @@ public final class LockStepScheduler implements Scheduler {
             }
             if (!runnable.isEmpty() && slicesSinceStep < slicesPerStep) {
                 slicesSinceStep++;
-                int index = random.nextInt(runnable.size());
-                Runnable drawn = runnable.get(index);
-                runnable.set(index, runnable.get(runnable.size() - 1));
-                runnable.remove(runnable.size() - 1);
-                return drawn;
+                return runnable.draw();
             }
             slicesSinceStep = 0;
         }

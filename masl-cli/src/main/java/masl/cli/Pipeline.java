@@ -1,0 +1,37 @@
+package masl.cli;
+
+import java.io.PrintStream;
+import java.util.Map;
+import masl.runtime.descriptor.AgentPath;
+import masl.translator.MissionLoader;
+import masl.translator.Translation;
+import masl.translator.Translator;
+import masl.translator.diagnostics.DiagnosticPrinter;
+import masl.translator.source.SourceFile;
+
+/**
+ * The one pipeline of {@code masl check}, {@code compile} and {@code run}, so that they report the
+ * same errors: translate (parse, analyse against the descriptors, generate, which refuses what it
+ * cannot translate yet), print every diagnostic, then compile the generated Java in memory. A
+ * program {@code check} accepts is one {@code run} translates and loads; Java that javac rejects is
+ * a bug of masl, a {@code GeneratedCodeException} that each command reports alike (exit status 70).
+ */
+final class Pipeline {
+
+    /** A program without errors: its translation, compiled and loaded. */
+    record Loaded(Translation translation, MissionLoader loader) {
+    }
+
+    private Pipeline() {
+    }
+
+    /** Runs the pipeline on {@code source}, its diagnostics to {@code err}; null when it has errors. */
+    static Loaded load(SourceFile source, AgentPath agentPath, PrintStream err) {
+        Translation translation = new Translator(agentPath).translate(source);
+        new DiagnosticPrinter(Map.of(source.name(), source.text())).print(translation.diagnostics().sorted(), err);
+        if (!translation.succeeded()) {
+            return null;
+        }
+        return new Loaded(translation, MissionLoader.load(translation, agentPath));
+    }
+}

@@ -1,0 +1,47 @@
+package masl.gradle;
+
+import java.util.Map;
+import org.gradle.api.Project;
+import org.gradle.api.artifacts.Configuration;
+import org.gradle.api.artifacts.ModuleDependency;
+import org.gradle.api.attributes.Attribute;
+import org.gradle.api.attributes.AttributeContainer;
+import org.gradle.api.plugins.JavaPlugin;
+
+/**
+ * The configuration {@code maslTool}: what {@code maslRun} runs, the {@code masl} command
+ * ({@code masl-cli}) with the project's runtime dependencies, resolved together so that no module
+ * appears twice. Only a run inside JADE brings {@code masl-jade-bridge} and JADE; the simulator
+ * ({@code simexecbots}, ode4j) never comes, maslRun running {@code .masl} programs only. Nothing is
+ * resolved unless maslRun runs.
+ */
+final class MaslTool {
+
+    static final String NAME = "maslTool";
+
+    private MaslTool() {
+    }
+
+    static Configuration create(Project project, MaslArtifacts artifacts, MaslRun run) {
+        Configuration runtime = project.getConfigurations().getByName(JavaPlugin.RUNTIME_CLASSPATH_CONFIGURATION_NAME);
+        Configuration tool = project.getConfigurations().create(NAME);
+        tool.setDescription("The masl command maslRun runs, with the project's runtime dependencies");
+        tool.setCanBeConsumed(false);
+        runtime.getExtendsFrom().forEach(tool::extendsFrom);
+        AttributeContainer attributes = runtime.getAttributes();
+        attributes.keySet().forEach(key -> copy(key, attributes, tool.getAttributes()));
+        tool.withDependencies(dependencies -> {
+            ModuleDependency cli = (ModuleDependency) project.getDependencies().create(artifacts.module("masl-cli"));
+            cli.exclude(Map.of("group", artifacts.group(), "module", "simexecbots"));
+            if (!run.inJade()) {
+                cli.exclude(Map.of("group", artifacts.group(), "module", "masl-jade-bridge"));
+            }
+            dependencies.add(cli);
+        });
+        return tool;
+    }
+
+    private static <T> void copy(Attribute<T> key, AttributeContainer from, AttributeContainer to) {
+        to.attribute(key, from.getAttribute(key));
+    }
+}

@@ -1,0 +1,241 @@
+package masl.jade;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jade.core.AID;
+import jade.lang.acl.ACLMessage;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import masl.jade.acl.AclInvocations;
+import masl.jade.testing.JadePlatformExtension;
+import masl.runtime.AgentContext;
+import masl.runtime.EntryDefinition;
+import masl.runtime.MissionOutcome;
+import masl.runtime.MissionProgram;
+import masl.runtime.Mode;
+import masl.runtime.testing.CompactProgram;
+import masl.runtime.testing.TestAgent;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
+
+/**
+ * Agents of the platform that are not part of a mission spanning containers forge the messages its
+ * coordinator and containers exchange, while agent {@code b}'s program waits for its body (in
+ * container {@code c2}, of this JVM) to answer a call the test holds open. The mission must go on as
+ * if they had sent nothing.
+ */
+@Timeout(180)
+class ForgedMessagesTest {
+
+    private static final Duration TIMEOUT = Duration.ofSeconds(60);
+    /** How many of the coordinator's former, sequential conversation ids a forger tries. */
+    private static final int GUESSES = 20;
+    private static final MissionSecret SECRET = MissionSecret.generate();
+
+    @RegisterExtension
+    static final JadePlatformExtension JADE = new JadePlatformExtension();
+
+    private static Probe forger;
+
+    @BeforeAll
+    static void startForger() throws Exception {
+        forger = new Probe();
+        JADE.platform().container().acceptNewAgent("forger", forger).start();
+    }
+
+    /**
+     * The forger answers the coordinator's guessable conversations with a result, a journal and a
+     * failure naming a class with a static initialiser: each is refused, the call gets the body's
+     * own result, the journal stays the mission's, and the class is never initialised.
+     */
+    @Test
+    void answersForgedByAnotherAgentAreRefusedAndNoClassTheyNameIsLoaded() throws Exception {
+        ServiceAgent.Gate gate = new ServiceAgent.Gate();
+        ServiceAgent.gate = gate;
+        List<Integer> results = new CopyOnWriteArrayList<>();
+        try (MaslContainer container = container("c2")) {
+            CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(
+                    JadeLauncher.of(callsGated(results)).types(TestPrograms::type).place(Map.of("b", "c2"))
+                            .secret(SECRET),
+                    JADE.platform(), TIMEOUT);
+            gate.entered().get(60, TimeUnit.SECONDS);
+            AID coordinator = new AID(CoordinatorAgent.NAME, AID.ISLOCALNAME);
+            for (int id = 1; id <= GUESSES; id++) {
+                forger.sendMessage(answer(coordinator, ACLMessage.INFORM, "masl-coordinator-" + id,
+                        "{\"result\":666,\"journal\":\"SPOOFED\\n\"}"));
+                forger.sendMessage(answer(coordinator, ACLMessage.FAILURE, "masl-coordinator-" + id,
+                        "{\"exception\":\"" + Detonator.class.getName() + "\",\"message\":\"boom\"}"));
+            }
+            for (int answered = 0; answered < 2 * GUESSES; answered++) {
+                ACLMessage reply = forger.next();
+                assertEquals(ACLMessage.NOT_UNDERSTOOD, reply.getPerformative(), reply.toString());
+            }
+            gate.result().complete(7);
+            MissionOutcome outcome = mission.get(60, TimeUnit.SECONDS);
+            outcome.requireCompleted();
+            assertEquals(List.of(7), results, "the body's own result");
+            assertEquals("", outcome.journal());
+            assertNull(System.getProperty(Detonator.MARK), "the class a forged FAILURE named was initialised");
+        }
+    }
+
+    /**
+     * The forger ends the container, places a body of its own over {@code b}, and sends it an event,
+     * with its own name and with the coordinator's: each is refused, said in one line, and changes
+     * nothing; the real coordinator's calls, event-free mission and end go through.
+     */
+    @Test
+    void controlMessagesForgedByAnotherAgentAreRefusedAndChangeNothing() throws Exception {
+        ServiceAgent.Gate gate = new ServiceAgent.Gate();
+        ServiceAgent.gate = gate;
+        List<Integer> results = new CopyOnWriteArrayList<>();
+        BlockingQueue<String> refusals = new LinkedBlockingQueue<>();
+        List<String> events = new CopyOnWriteArrayList<>();
+        try (MaslContainer container = container("c3", SECRET, refusals, events)) {
+            CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(JadeLauncher.of(callsGated(results))
+                    .types(TestPrograms::type).place(Map.of("b", "c3")).secret(SECRET), JADE.platform(), TIMEOUT);
+            gate.entered().get(60, TimeUnit.SECONDS);
+            AID host = new AID(ContainerHost.agentName("c3"), AID.ISLOCALNAME);
+            ACLMessage end = control(host, ACLMessage.REQUEST, CoordinatorAgent.END, "{}");
+            forger.sendMessage(end);
+            assertEquals(ACLMessage.REFUSE, forger.next().getPerformative(), "a forged masl-end");
+            forger.sendMessage(control(host, ACLMessage.REQUEST, CoordinatorAgent.PLACE,
+                    "{\"agents\":[{\"name\":\"b\",\"proxyId\":0,\"class\":\"" + ServiceAgent.class.getName()
+                            + "\"}]}"));
+            assertEquals(ACLMessage.REFUSE, forger.next().getPerformative(), "a forged masl-place");
+            forger.sendMessage(control(host, ACLMessage.INFORM, CoordinatorAgent.EVENT, "{\"event\":\"go\"}"));
+            assertEquals(ACLMessage.NOT_UNDERSTOOD, forger.next().getPerformative(), "a forged masl-event");
+            ACLMessage endAsTheCoordinator = control(host, ACLMessage.REQUEST, CoordinatorAgent.END, "{}");
+            endAsTheCoordinator.setSender(new AID(CoordinatorAgent.NAME, AID.ISLOCALNAME));
+            forger.sendMessage(endAsTheCoordinator);
+            assertEquals("refused masl-end from " + forger.getName() + ": only masl-coordinator controls a MASL"
+                    + " container", refusals.poll(20, TimeUnit.SECONDS));
+            assertEquals("refused masl-place from " + forger.getName() + ": only masl-coordinator controls a MASL"
+                    + " container", refusals.poll(20, TimeUnit.SECONDS));
+            assertEquals("refused masl-event from " + forger.getName() + ": only masl-coordinator controls a MASL"
+                    + " container", refusals.poll(20, TimeUnit.SECONDS));
+            String unsigned = refusals.poll(20, TimeUnit.SECONDS);
+            assertTrue(unsigned != null && unsigned.startsWith("refused masl-end from masl-coordinator@")
+                    && unsigned.endsWith(": not signed with the mission's secret"), unsigned);
+            gate.result().complete(7);
+            MissionOutcome outcome = mission.get(60, TimeUnit.SECONDS);
+            outcome.requireCompleted();
+            assertEquals(List.of(7), results, "the body's result: it was still there");
+            assertTrue(container.awaitMissionEnd(Duration.ofSeconds(30)), "the coordinator's own end");
+            assertEquals(Optional.empty(), container.lostPlatform());
+            assertEquals(List.of("b"), container.hostedAgents());
+            assertEquals(List.of(), events);
+            assertNull(refusals.poll(), "nothing else refused");
+        }
+    }
+
+    /** A container given another secret than its coordinator's obeys not even the coordinator. */
+    @Test
+    void aContainerWithoutTheMissionsSecretHostsNothing() throws Exception {
+        BlockingQueue<String> refusals = new LinkedBlockingQueue<>();
+        try (MaslContainer container = container("c4", MissionSecret.generate(), refusals, new CopyOnWriteArrayList<>())) {
+            JadeException refused = assertThrows(JadeException.class, () -> JadeLauncher.of(callsGated(new ArrayList<>()))
+                    .types(TestPrograms::type).place(Map.of("b", "c4")).secret(SECRET).run(JADE.platform(), TIMEOUT));
+            assertTrue(refused.getMessage().startsWith("container c4 cannot host [b]: ")
+                    && refused.getMessage().contains("not signed with the mission's secret"), refused.getMessage());
+            assertEquals(List.of(), container.hostedAgents());
+            String line = refusals.poll(20, TimeUnit.SECONDS);
+            assertTrue(line != null && line.startsWith("refused masl-place from masl-coordinator@"), line);
+        }
+    }
+
+    private static MaslContainer container(String name) {
+        return container(name, SECRET, refusal -> { }, new CopyOnWriteArrayList<>());
+    }
+
+    private static MaslContainer container(String name, MissionSecret secret, Collection<String> refusals,
+            List<String> events) {
+        return container(name, secret, (Consumer<String>) refusals::add, events);
+    }
+
+    private static MaslContainer container(String name, MissionSecret secret, Consumer<String> refusals,
+            List<String> events) {
+        return MaslContainer.start(JadeOptions.join(JADE.platform().host(), JADE.platform().port()), name,
+                className -> TestPrograms.type(new MissionProgram.AgentSpec("", className)),
+                ForgedMessagesTest.class.getClassLoader(), event -> events.add(event.getContent()),
+                MissionSecret.Source.of(secret), refusals);
+    }
+
+    private static ACLMessage control(AID receiver, int performative, String conversation, String content) {
+        ACLMessage message = new ACLMessage(performative);
+        message.addReceiver(receiver);
+        message.setLanguage(AclInvocations.LANGUAGE);
+        message.setOntology(AclInvocations.ONTOLOGY);
+        message.setConversationId(conversation);
+        message.setReplyWith("forged-" + conversation);
+        message.setContent(content);
+        return message;
+    }
+
+    private static MissionProgram callsGated(List<Integer> results) {
+        return TestPrograms.of(CallsGated.MAIN, List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
+                self -> new CallsGated(self, results));
+    }
+
+    private static ACLMessage answer(AID receiver, int performative, String inReplyTo, String content) {
+        ACLMessage answer = new ACLMessage(performative);
+        answer.addReceiver(receiver);
+        answer.setLanguage(AclInvocations.LANGUAGE);
+        answer.setOntology(AclInvocations.ONTOLOGY);
+        answer.setConversationId(CoordinatorAgent.BODY);
+        answer.setInReplyTo(inReplyTo);
+        answer.setContent(content);
+        return answer;
+    }
+
+    /** In a main block, calls {@code gated()} on its body once, keeping the result. */
+    static final class CallsGated extends CompactProgram {
+        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
+
+        private final List<Integer> results;
+
+        CallsGated(TestAgent self, List<Integer> results) {
+            super(self);
+            this.results = results;
+        }
+
+        @Override
+        protected void resume(AgentContext ctx) {
+            ServiceAgent body = (ServiceAgent) self;
+            while (true) {
+                switch (pc) {
+                    case 0:
+                        if (!arrive(ctx, MAIN, true, 1, 3)) return;
+                        continue;
+                    case 1:
+                        results.add(ctx.invokeSelf("gated", -1, body::gated));
+                        if (!step(ctx, 2)) return;
+                        continue;
+                    case 2:
+                        if (!leave(ctx, MAIN, 3)) return;
+                        continue;
+                    case 3:
+                        ctx.finish();
+                        return;
+                    default:
+                        throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,64 @@
+package masl.jade;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import jade.lang.acl.ACLMessage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** A control message obeyed only with the signature of the mission's secret, for its receiver, of what it says. */
+class MissionSecretTest {
+
+    private final MissionSecret secret = MissionSecret.generate();
+
+    @Test
+    void aSignatureHoldsForItsReceiverAndContentOnly() {
+        ACLMessage end = end("{}");
+        secret.sign(end, "masl-container-c2", 1);
+        assertTrue(secret.signed(end, "masl-container-c2"));
+        assertFalse(secret.signed(end, "masl-container-c3"), "replayed to another container");
+        assertFalse(MissionSecret.generate().signed(end, "masl-container-c2"), "another mission's secret");
+        end.setContent("{\"agents\":[]}");
+        assertFalse(secret.signed(end, "masl-container-c2"), "content changed");
+        ACLMessage unsigned = end("{}");
+        assertFalse(secret.signed(unsigned, "masl-container-c2"));
+        ACLMessage place = end("{}");
+        place.setConversationId(CoordinatorAgent.PLACE);
+        place.addUserDefinedParameter(MissionSecret.PARAMETER, end.getUserDefinedParameter(MissionSecret.PARAMETER));
+        assertFalse(secret.signed(place, "masl-container-c2"), "another conversation with the same signature");
+        ACLMessage renumbered = end("{}");
+        secret.sign(renumbered, "masl-container-c2", 1);
+        renumbered.addUserDefinedParameter(MissionSecret.SEQUENCE, "2");
+        assertFalse(secret.signed(renumbered, "masl-container-c2"), "a copy given another number");
+    }
+
+    @Test
+    void theFileOnlyItsOwnerCanRead(@TempDir Path folder) throws IOException {
+        Path file = folder.resolve("mission.secret");
+        Files.writeString(file, "an older secret");
+        secret.writeTo(file);
+        assertEquals("rw-------", PosixFilePermissions.toString(Files.getPosixFilePermissions(file)));
+        assertEquals(1, Files.list(folder).count(), "no file left beside it");
+        ACLMessage end = end("{}");
+        secret.sign(end, "b", 7);
+        assertTrue(MissionSecret.readFrom(file).signed(end, "b"));
+        Files.writeString(file, "not a secret\n");
+        IOException unreadable = assertThrows(IOException.class, () -> MissionSecret.readFrom(file));
+        assertEquals(file + " holds no mission secret (64 hexadecimal digits)", unreadable.getMessage());
+    }
+
+    private static ACLMessage end(String content) {
+        ACLMessage message = new ACLMessage(ACLMessage.REQUEST);
+        message.setConversationId(CoordinatorAgent.END);
+        message.setReplyWith("masl-coordinator-x");
+        message.setContent(content);
+        return message;
+    }
+}
