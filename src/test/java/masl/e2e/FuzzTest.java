@@ -8,16 +8,29 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collection;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Random;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import masl.runtime.descriptor.AgentPath;
+import masl.sim.xode.SecureXmlReader;
+import masl.sim.xode.SourceLocation;
+import masl.sim.xode.XodeException;
+import masl.sim.xode.XodeLoader;
+import masl.sim.xode.XodeProblem;
+import masl.sim.xode.XodeSource;
 import masl.translator.Frontend;
+import masl.translator.MaslClassPath;
 import masl.translator.Translation;
 import masl.translator.Translator;
+import masl.translator.compile.GeneratedCodeException;
+import masl.translator.compile.InMemoryCompiler;
 import masl.translator.diagnostics.Diagnostic;
 import masl.translator.diagnostics.DiagnosticPrinter;
 import masl.translator.source.SourceFile;
@@ -30,8 +43,11 @@ import org.junit.jupiter.api.io.TempDir;
  * each) and the shipped descriptors (250 each), mutated with a seeded {@link Random} (tokens and
  * lines deleted, duplicated and swapped, random bytes written over or inserted, the text cut short),
  * are translated (or, for a descriptor, analysed with a program importing it): nothing may throw,
- * and a mutant that fails has only positioned diagnostics ({@code file:line:col}). A failing case
- * is written to {@code build/fuzz/} to be replayed with {@code masl check}.
+ * and a mutant that fails has only positioned diagnostics ({@code file:line:col}). Generated programs
+ * at the edges of what Java holds (issue 22: names, escapes, numbers, sizes, depths) must also
+ * compile when they translate, and generated XODE nested up to and past the loader's limit must
+ * load or be refused with located problems. A failing case is written to {@code build/fuzz/} to be
+ * replayed with {@code masl check}.
  */
 @Timeout(120)
 class FuzzTest {
@@ -104,6 +120,146 @@ class FuzzTest {
         }
     }
 
+    /**
+     * Programs at the edges of what Java holds (issue 22): names, escapes, numbers, sizes, depths
+     * ({@link EdgePrograms}). Each translates to Java that javac compiles and whose mission class
+     * loads, or fails with positioned diagnostics only. The Java of all of them is compiled at once;
+     * if javac refuses it, each program is compiled alone to name the one at fault.
+     */
+    @Test
+    @Timeout(600)
+    void edgeProgramsCompileOrGiveOnlyPositionedDiagnostics() throws IOException {
+        EdgePrograms generator = new EdgePrograms(new Random(SEED + 2));
+        Translator translator = new Translator(AgentPath.parse(""));
+        Map<Translation, String> compilable = new LinkedHashMap<>();
+        int i = 0;
+        for (EdgePrograms.Edge edge : EdgePrograms.Edge.values()) {
+            for (int k = 0; k < casesOf(edge); k++, i++) {
+                String name = "edge" + i + "-" + edge.name().toLowerCase(Locale.ROOT) + ".masl";
+                String program = generator.program(edge);
+                Translation translation;
+                try {
+                    translation = translator.translate(SourceFile.of(name, program));
+                } catch (RuntimeException | Error crash) {
+                    throw new AssertionError(keepUtf8(name, program) + " crashed masl", crash);
+                }
+                if (translation.succeeded()) {
+                    compilable.put(translation, program);
+                } else {
+                    assertPositioned(translation.diagnostics().sorted(), name, i, program);
+                    assertPrintedWithPositions(translation.diagnostics().sorted(), name, i, program);
+                }
+            }
+        }
+        assertTrue(compilable.size() >= i / 3, "most edge programs are valid: " + compilable.size() + " of " + i);
+        try {
+            compileAndLoad(compilable.keySet());
+        } catch (GeneratedCodeException | LinkageError | ReflectiveOperationException together) {
+            for (Map.Entry<Translation, String> one : compilable.entrySet()) {
+                try {
+                    compileAndLoad(List.of(one.getKey()));
+                } catch (GeneratedCodeException | LinkageError | ReflectiveOperationException alone) {
+                    throw new AssertionError(keepUtf8(one.getKey().source().name(), one.getValue())
+                            + ": javac or the JVM refused its Java", alone);
+                }
+            }
+            throw new AssertionError("the edge programs' Java fails together, not alone", together);
+        }
+    }
+
+    private static int casesOf(EdgePrograms.Edge edge) {
+        return switch (edge) {
+            case NAMES, ESCAPES -> 10;
+            case NUMBERS -> 6;
+            case SIZES, DEPTHS -> 4;
+        };
+    }
+
+    /**
+     * Compiles the translations' Java in one run of javac and initialises each mission class, on a
+     * thread with a deep stack as {@code MissionLoader} does: javac recurses into nested code too.
+     */
+    private static void compileAndLoad(Collection<Translation> translations) throws ReflectiveOperationException {
+        List<InMemoryCompiler.Source> sources = new ArrayList<>();
+        for (Translation translation : translations) {
+            translation.javaSources().forEach((className, text) -> sources.add(new InMemoryCompiler.Source(className, text)));
+        }
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        Thread javac = new Thread(null, () -> {
+            try {
+                ClassLoader loaded = new InMemoryCompiler(MaslClassPath.runtimeAndShippedAgents())
+                        .compile(sources, FuzzTest.class.getClassLoader());
+                for (Translation translation : translations) {
+                    Class.forName(translation.missionClassName(), true, loaded);
+                }
+            } catch (Throwable e) {
+                failure.set(e);
+            }
+        }, "javac", 256L * 1024 * 1024);
+        javac.start();
+        try {
+            javac.join();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new AssertionError(e);
+        }
+        Throwable thrown = failure.get();
+        if (thrown instanceof ReflectiveOperationException reflective) {
+            throw reflective;
+        }
+        if (thrown instanceof RuntimeException runtime) {
+            throw runtime;
+        }
+        if (thrown instanceof Error error) {
+            throw error;
+        }
+    }
+
+    /**
+     * Random XODE documents nested up to and past the loader's limit, with attributes full of XML
+     * escapes: each loads or is refused with located problems, whatever the caller's stack.
+     */
+    @Test
+    @Timeout(300)
+    void generatedXodeGivesOnlyLocatedProblems() throws IOException {
+        Random random = new Random(SEED + 3);
+        List<String> elements = List.of("group", "body", "space", "geom", "mass", "jointgroup", "transform", "unknown");
+        List<String> values = List.of("1", "-0", "1e999", "NaN", "&#10;", "&#0;", "&lt;&amp;", "a&#x1F600;b", "\\u0022");
+        for (int i = 0; i < 30; i++) {
+            int depth = switch (i % 3) {
+                case 0 -> 1 + random.nextInt(50);
+                case 1 -> 1_990 + random.nextInt(20);
+                default -> SecureXmlReader.DEEPEST - 10 + random.nextInt(20);
+            };
+            StringBuilder xml = new StringBuilder("<xode version=\"1.0r23\" name=\"t\"><world><space name=\"s\">\n");
+            List<String> open = new ArrayList<>();
+            for (int d = 0; d < depth; d++) {
+                String element = elements.get(random.nextInt(elements.size()));
+                xml.append('<').append(element).append(" name=\"e").append(d).append("\" radius=\"")
+                        .append(values.get(random.nextInt(values.size()))).append("\">\n");
+                open.add(element);
+            }
+            for (int d = open.size() - 1; d >= 0; d--) {
+                xml.append("</").append(open.get(d)).append(">\n");
+            }
+            xml.append("</space></world></xode>\n");
+            String name = "generated" + i + ".xode";
+            try {
+                new XodeLoader().load(XodeSource.text(name, xml.toString()));
+            } catch (XodeException refused) {
+                for (XodeProblem problem : refused.problems()) {
+                    SourceLocation at = problem.location();
+                    if (!at.file().equals(name) || at.line() < 1 || at.column() < 1 || problem.message().isBlank()) {
+                        throw new AssertionError(keepUtf8(name, xml.toString()) + ": a problem without a location: "
+                                + problem);
+                    }
+                }
+            } catch (RuntimeException | Error crash) {
+                throw new AssertionError(keepUtf8(name, xml.toString()) + " crashed the XODE loader", crash);
+            }
+        }
+    }
+
     private static void assertPositioned(List<Diagnostic> diagnostics, String name, int i, String mutant) throws IOException {
         assertFalse(diagnostics.isEmpty(), () -> "case " + i + " of " + name + " failed without a diagnostic");
         for (Diagnostic diagnostic : diagnostics) {
@@ -130,6 +286,13 @@ class FuzzTest {
             throw new AssertionError(keep(name, i, mutant) + ": " + diagnostics.size() + " diagnostics but "
                     + headlines + " positioned headlines in\n" + report);
         }
+    }
+
+    /** Writes a failing generated case to build/fuzz/ in UTF-8 and names it. */
+    private static String keepUtf8(String name, String text) throws IOException {
+        Path kept = Files.createDirectories(Path.of("build/fuzz")).resolve(name);
+        Files.writeString(kept, text);
+        return name + " (kept in " + kept + ")";
     }
 
     /** Writes a failing case to build/fuzz/ and names it. */

@@ -5,6 +5,7 @@ import masl.runtime.descriptor.DescriptorLoader;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.Analyzer;
 import masl.translator.diagnostics.Diagnostics;
+import masl.translator.parse.Nesting;
 import masl.translator.parse.ProgramParser;
 import masl.translator.source.SourceFile;
 
@@ -28,7 +29,24 @@ public final class Frontend {
         this.agentPath = agentPath;
     }
 
+    /** Parses and analyses {@code source} on a thread with a deep stack ({@link DeepStack}). */
     public Result analyse(SourceFile source) {
+        try {
+            return DeepStack.call("masl check " + source.name(), () -> analyseHere(source));
+        } catch (DeepStack.TooDeep overflow) {
+            return new Result(source, null, tooDeep(source));
+        }
+    }
+
+    /** The diagnostics of a program that nests too deeply even for the deep stack. */
+    static Diagnostics tooDeep(SourceFile source) {
+        Diagnostics diagnostics = new Diagnostics();
+        Nesting.reportTooDeep(source, diagnostics);
+        return diagnostics;
+    }
+
+    /** {@link #analyse} on this thread, whose stack must be deep. */
+    Result analyseHere(SourceFile source) {
         Diagnostics diagnostics = new Diagnostics();
         ProgramParser.Parsed parsed = ProgramParser.parse(source, diagnostics);
         if (diagnostics.hasErrors()) {

@@ -53,7 +53,15 @@ public final class MissionLoader {
         for (Map.Entry<String, String> source : translation.javaSources().entrySet()) {
             sources.add(new InMemoryCompiler.Source(source.getKey(), source.getValue()));
         }
-        ClassLoader compiled = new InMemoryCompiler(classPath).compile(sources, agents);
+        ClassLoader compiled;
+        try {
+            // javac recurses into nested constructs as the translator does.
+            compiled = DeepStack.call("javac " + translation.source().name(),
+                    () -> new InMemoryCompiler(classPath).compile(sources, agents));
+        } catch (DeepStack.TooDeep overflow) {
+            throw new GeneratedCodeException("javac overflowed the stack of " + DeepStack.STACK_BYTES
+                    + " bytes on the generated code");
+        }
         try {
             return new MissionLoader(compiled,
                     Class.forName(translation.missionClassName(), true, compiled).asSubclass(MissionProgram.class));

@@ -18,9 +18,20 @@ public final class Translator {
         this.frontend = new Frontend(agentPath);
     }
 
-    /** Parse, analyse, generate; never throws for errors in the program or descriptors. */
+    /**
+     * Parse, analyse, generate, on a thread with a deep stack ({@link DeepStack}); never throws for
+     * errors in the program or descriptors.
+     */
     public Translation translate(SourceFile source) {
-        Frontend.Result analysed = frontend.analyse(source);
+        try {
+            return DeepStack.call("masl translate " + source.name(), () -> translateHere(source));
+        } catch (DeepStack.TooDeep overflow) {
+            return new Translation(source, Frontend.tooDeep(source), null, Map.of());
+        }
+    }
+
+    private Translation translateHere(SourceFile source) {
+        Frontend.Result analysed = frontend.analyseHere(source);
         if (!analysed.succeeded()) {
             return new Translation(source, analysed.diagnostics(), null, Map.of());
         }

@@ -29,6 +29,7 @@ public final class Analyzer {
             return new AnalyzedProgram(parsed, Map.of(), List.of(), new LinkedHashSet<>(), null, new Bindings(0));
         }
         Errors errors = new Errors(parsed.source().name(), diagnostics);
+        ConstantLimits.check(tree, errors);
         HeaderChecker headers = new HeaderChecker(descriptors, parsed.source().folder(), parsed.tokens(), errors);
         headers.check(tree.header());
 

@@ -2,8 +2,9 @@ package masl.translator.analysis;
 
 import java.util.Map;
 import java.util.Optional;
-import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.StatementContext;
+import masl.grammar.MASLParser;
+import masl.translator.parse.NumberLiterals;
 
 /**
  * Walks the blocks with their scopes: declares what each block declares (MASL §3, §7, §8, §10), checks
@@ -285,7 +286,7 @@ final class BlockChecker {
     }
 
     private void checkExit(MASLParser.ExitStmtContext exit) {
-        int levels = exit.levels == null ? 1 : count(exit.levels.getText());
+        int levels = exit.levels == null ? 1 : NumberLiterals.count(exit.levels.getText());
         if (loopDepth == 0) {
             errors.at(exit, "exit outside a loop");
         } else if (levels < 1) {
@@ -311,26 +312,13 @@ final class BlockChecker {
             }
             return;
         }
-        int levels = count(target.IntegerLiteral().getText());
+        int levels = NumberLiterals.count(target.IntegerLiteral().getText());
         int depth = current.depth();
         if (levels < 1) {
             errors.at(target, keyword + " needs a positive number of blocks");
         } else if (levels > depth) {
             errors.at(target, keyword + "(" + target.getText() + ") leaves " + target.getText() + " blocks but only "
                     + depth + (depth == 1 ? " encloses" : " enclose") + " it");
-        }
-    }
-
-    /** An integer literal's value (decimal, octal, hex or binary); one too large for an int exceeds any nesting. */
-    private static int count(String literal) {
-        String digits = literal.replace("_", "").replaceAll("[lL]$", "");
-        try {
-            if (digits.startsWith("0b") || digits.startsWith("0B")) {
-                return Integer.parseInt(digits.substring(2), 2);
-            }
-            return Integer.decode(digits);
-        } catch (NumberFormatException tooLarge) {
-            return Integer.MAX_VALUE;
         }
     }
 }

@@ -4,6 +4,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -44,6 +45,8 @@ final class HeaderChecker {
     private final Errors errors;
     private final Map<String, ImportedType> types = new LinkedHashMap<>();
     private final List<AgentDecl> agents = new ArrayList<>();
+    /** The agents' names, for the check of a name declared twice in time linear in the team's size. */
+    private final Set<String> agentNames = new HashSet<>();
     private final Map<String, Token> declaredEntries = new LinkedHashMap<>();
 
     HeaderChecker(DescriptorLoader descriptors, Path programFolder, CommonTokenStream tokens, Errors errors) {
@@ -150,7 +153,7 @@ final class HeaderChecker {
         }
         for (MASLParser.IdentifierContext agentName : agentsDecl.identifierList().identifier()) {
             String name = agentName.getText();
-            if (agents.stream().anyMatch(agent -> agent.name().equals(name))) {
+            if (!agentNames.add(name)) {
                 errors.at(agentName, "agent " + name + " is already declared");
             } else {
                 agents.add(new AgentDecl(name, declared, instantiated, agents.size()));

@@ -105,7 +105,7 @@ final class AssignmentWriter {
 
     /** A new temporary field of Java type {@code javaType}. */
     String temporary(String javaType) {
-        String temporary = "tmp$" + (temporaries.size() + 1);
+        String temporary = expressions.field("tmp$" + (temporaries.size() + 1));
         temporaries.put(temporary, javaType);
         return temporary;
     }

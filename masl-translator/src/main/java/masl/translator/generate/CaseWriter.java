@@ -4,12 +4,27 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Writes the body of a generated {@code resume} method: a {@code switch (pc)} of cases, one per
- * resumption point. Code refers to resumption points through {@link Point}s, created before their
- * place is known (a jump forward) and placed later; cases are numbered in the order they are placed,
- * so the numbers follow the program. Several points placed with no code between them share one case.
+ * Writes the cases of a generated state machine, one per resumption point ({@link StateMachineWriter}
+ * puts them in {@code resume}). Code refers to resumption points through {@link Point}s, created
+ * before their place is known (a jump forward) and placed later; cases are numbered in the order they
+ * are placed, so the numbers follow the program. Several points placed with no code between them
+ * share one case.
  */
 final class CaseWriter {
+
+    /**
+     * How many characters of Java a case may hold before the next statement starts a case of its own,
+     * so that a long run of statements with no resumption point in between (thousands of declarations)
+     * can still be split between methods (a Java method holds at most 64 KB of bytecode).
+     */
+    static final int LONGEST_CASE = 4_000;
+
+    /**
+     * The most characters of Java one statement may make: a case cannot be split inside a statement,
+     * and Java's bytecode takes at most one byte a character (about a third, mostly), so this much
+     * fits the 64 KB of a method with room for the machine around it.
+     */
+    static final int LARGEST_STATEMENT = 60_000;
 
     /** A resumption point: a case of the switch once placed. */
     static final class Point {
@@ -24,16 +39,43 @@ final class CaseWriter {
         }
     }
 
-    private static final class Case {
-        int number;
-        String comment;
+    /** A case of the switch: its number, its comment and its lines, once rendered. */
+    static final class Case {
+        private int number;
+        private String comment;
         /** The MASL statement written last in the case: the one whose runtime call ends it. */
-        String lastStatement;
-        final List<Object> lines = new ArrayList<>();
+        private String lastStatement;
+        private final List<Object> lines = new ArrayList<>();
+        /** Whether the case ends with a jump or a return: else it falls through into the next one. */
+        private boolean endsInJump;
+        /** The characters of its lines: a measure of its bytecode. */
+        private int size;
 
-        Case(String comment) {
+        private Case(String comment) {
             this.comment = comment;
             this.lastStatement = comment;
+        }
+
+        int number() {
+            return number;
+        }
+
+        /** The MASL line of the case, or null. */
+        String comment() {
+            return comment;
+        }
+
+        /** The MASL statement whose runtime call ends the case, if it is not the one of the comment; else null. */
+        String callSource() {
+            return lastStatement != null && !lastStatement.equals(comment) ? lastStatement : null;
+        }
+
+        boolean fallsThrough() {
+            return !endsInJump;
+        }
+
+        int size() {
+            return size;
         }
     }
 
@@ -41,11 +83,16 @@ final class CaseWriter {
     private record Jump(String indent, String before, Point point, String after) {
     }
 
+    /** A line that returns from the state machine: the agent suspended or finished. */
+    private record Return(String indent, String before, String after) {
+    }
+
     private static final String[] INDENTS = {"", "    ", "        ", "            ", "                "};
 
     private final List<Case> cases = new ArrayList<>();
     private Case current;
     private boolean terminated = true;
+    private boolean grewTooLarge;
     private int indent;
 
     Point point() {
@@ -61,8 +108,7 @@ final class CaseWriter {
             throw new IllegalStateException("a resumption point cannot stand inside a Java block");
         }
         if (current == null || !current.lines.isEmpty() || terminated) {
-            current = new Case(comment);
-            cases.add(current);
+            current = newCase(comment);
         } else if (current.comment == null) {
             current.comment = comment;
         }
@@ -78,10 +124,51 @@ final class CaseWriter {
         return terminated;
     }
 
+    /**
+     * Where a statement starts, outside any Java block: if the current case has grown past
+     * {@value #LONGEST_CASE} characters, the statement starts a case of its own, which the previous
+     * code falls into. Such a case is no resumption point, only a place to split the machine.
+     */
+    void statementStart() {
+        if (indent == 0 && !terminated && current != null && current.size > LONGEST_CASE) {
+            String continued = current.lastStatement;
+            place(point(), null);
+            current.lastStatement = continued;
+        }
+    }
+
+    /**
+     * Whether a case grew past {@value #LARGEST_STATEMENT} characters since this was last asked: the
+     * statement just written is too large for a Java method.
+     */
+    boolean tooLarge() {
+        boolean grown = grewTooLarge;
+        grewTooLarge = false;
+        return grown;
+    }
+
     /** A line of code in the current case, starting an (unreachable) case if the previous code jumped away. */
     void line(String code) {
-        startIfTerminated();
-        current.lines.add(indentation() + code);
+        add(indentation() + code);
+    }
+
+    /**
+     * A line holding the {@code return} that leaves the state machine, between {@code before} and
+     * {@code after}: {@code return;} in {@code resume}, {@code return false;} in a part of it.
+     */
+    void returning(String before, String after) {
+        add(new Return(indentation(), before, after));
+    }
+
+    /** {@code if (!call) return;}: the agent suspends unless {@code call} lets it go on. */
+    void returnUnless(String call) {
+        returning("if (!" + call + ") ", "");
+    }
+
+    /** A {@code return;} that ends the case: the agent finished. */
+    void endWithReturn() {
+        returning("", "");
+        terminate();
     }
 
     /** Names the code that follows: the comment of the current case if it has none and no code yet, else a line. */
@@ -118,8 +205,7 @@ final class CaseWriter {
 
     /** {@code pc = point;} */
     void setPc(Point point) {
-        startIfTerminated();
-        current.lines.add(new Jump(indentation(), "pc = ", point, ";"));
+        add(new Jump(indentation(), "pc = ", point, ";"));
     }
 
     /** {@code pc = point; continue;}: the rest of the case is never reached. */
@@ -127,20 +213,19 @@ final class CaseWriter {
         setPc(point);
         line("continue;");
         if (indent == 0) {
-            terminated = true;
+            terminate();
         }
     }
 
-    /** A line that ends the case ({@code return;}). */
+    /** A line that ends the case ({@code continue;}). */
     void end(String code) {
         line(code);
-        terminated = true;
+        terminate();
     }
 
     /** The text of a jump to {@code point} inside a line: {@code prefix + "pc = N; continue;" + suffix}. */
     void jumpLine(String prefix, Point point, String suffix) {
-        startIfTerminated();
-        current.lines.add(new Jump(indentation() + prefix, "pc = ", point, "; continue;" + suffix));
+        add(new Jump(indentation() + prefix, "pc = ", point, "; continue;" + suffix));
     }
 
     /**
@@ -149,7 +234,7 @@ final class CaseWriter {
      */
     void suspending(String call, Point next) {
         setPc(next);
-        line("if (!" + call + ") return;");
+        returnUnless(call);
         place(next, null);
     }
 
@@ -157,52 +242,26 @@ final class CaseWriter {
         return indent < INDENTS.length ? INDENTS[indent] : "    ".repeat(indent);
     }
 
-    private void startIfTerminated() {
+    private void add(Object line) {
         if (terminated || current == null) {
-            current = new Case(null);
-            cases.add(current);
+            current = newCase(null);
             terminated = false;
         }
+        current.lines.add(line);
+        int before = current.size;
+        current.size += size(line) + 1;
+        grewTooLarge |= before <= LARGEST_STATEMENT && current.size > LARGEST_STATEMENT;
     }
 
-    /**
-     * The {@code sourceAt} method of the program: each commented case's number and its comment (the
-     * MASL line), for the runtime's reports. Call after {@link #number}.
-     */
-    void sourceAtMethod(JavaLines out) {
-        out.add("    @Override");
-        out.add("    protected String sourceAt(int pc) {");
-        out.add("        return switch (pc) {");
-        StringBuilder text = out.buffer();
-        for (Case c : cases) {
-            if (c.comment != null) {
-                JavaText.quote(text.append("            case ").append(c.number).append(" -> "), c.comment).append(";\n");
-            }
-        }
-        out.add("            default -> null;");
-        out.add("        };");
-        out.add("    }");
+    private void terminate() {
+        terminated = true;
+        current.endsInJump = true;
     }
 
-    /**
-     * The {@code sourceOfCallIn} method: for each case holding several statements, the last one (the
-     * statement whose runtime call ends the case, say {@code .logln(x);} in a case that begins with
-     * {@code else}); other cases fall back on {@code sourceAt}. Call after {@link #number}.
-     */
-    void sourceOfCallInMethod(JavaLines out) {
-        out.add("    @Override");
-        out.add("    protected String sourceOfCallIn(int pc) {");
-        out.add("        return switch (pc) {");
-        StringBuilder text = out.buffer();
-        for (Case c : cases) {
-            if (c.lastStatement != null && !c.lastStatement.equals(c.comment)) {
-                JavaText.quote(text.append("            case ").append(c.number).append(" -> "), c.lastStatement)
-                        .append(";\n");
-            }
-        }
-        out.add("            default -> sourceAt(pc);");
-        out.add("        };");
-        out.add("    }");
+    private Case newCase(String comment) {
+        Case created = new Case(comment);
+        cases.add(created);
+        return created;
     }
 
     /** Numbers the cases, in the order they were placed: call once all the code is written. */
@@ -212,24 +271,76 @@ final class CaseWriter {
         }
     }
 
-    /** Adds the cases to {@code out}, each line indented by {@code margin}. Call after {@link #number}. */
-    void render(JavaLines out, String margin) {
-        StringBuilder text = out.buffer();
-        for (Case c : cases) {
-            text.append(margin).append("case ").append(c.number).append(':');
-            if (c.comment != null) {
-                text.append(" // ").append(JavaText.comment(c.comment));
+    /** The cases in order. Call after {@link #number}. */
+    List<Case> cases() {
+        return cases;
+    }
+
+    /**
+     * Appends {@code c} to {@code text}, each line indented by {@code margin}; a return is
+     * {@code return false;} when the case is in a part of a split state machine.
+     */
+    static void render(StringBuilder text, Case c, String margin, boolean inPart) {
+        text.append(margin).append("case ").append(c.number).append(':');
+        if (c.comment != null) {
+            text.append(" // ").append(JavaText.comment(c.comment));
+        }
+        text.append('\n');
+        for (Object line : c.lines) {
+            text.append(margin).append("    ");
+            if (line instanceof Jump jump) {
+                text.append(jump.indent()).append(jump.before()).append(jump.point().number()).append(jump.after());
+            } else if (line instanceof Return exit) {
+                text.append(exit.indent()).append(exit.before()).append(inPart ? "return false;" : "return;")
+                        .append(exit.after());
+            } else {
+                text.append((String) line);
             }
             text.append('\n');
-            for (Object line : c.lines) {
-                text.append(margin).append("    ");
-                if (line instanceof Jump jump) {
-                    text.append(jump.indent()).append(jump.before()).append(jump.point().number()).append(jump.after());
-                } else {
-                    text.append((String) line);
-                }
-                text.append('\n');
+        }
+    }
+
+    /**
+     * The characters of a line that become bytecode, about: a string or character literal counts as
+     * the 3 bytes that load its constant, a comment as nothing; a jump's number and a return's words
+     * are not known yet.
+     */
+    private static int size(Object line) {
+        if (line instanceof Jump jump) {
+            return jump.indent().length() + size(jump.before()) + size(jump.after()) + 5;
+        }
+        if (line instanceof Return exit) {
+            return exit.indent().length() + size(exit.before()) + size(exit.after()) + 13;
+        }
+        return size((String) line);
+    }
+
+    private static int size(String code) {
+        int size = 0;
+        int i = 0;
+        while (i < code.length()) {
+            char c = code.charAt(i);
+            if (c == '/' && i + 1 < code.length() && code.charAt(i + 1) == '/') {
+                break;
+            }
+            if (c == '"' || c == '\'') {
+                i = endOfLiteral(code, i);
+                size += 3;
+            } else {
+                i++;
+                size++;
             }
         }
+        return size;
+    }
+
+    /** The index after the literal that starts at {@code start} with its quote. */
+    private static int endOfLiteral(String code, int start) {
+        char quote = code.charAt(start);
+        int i = start + 1;
+        while (i < code.length() && code.charAt(i) != quote) {
+            i += code.charAt(i) == '\\' ? 2 : 1;
+        }
+        return i + 1;
     }
 }

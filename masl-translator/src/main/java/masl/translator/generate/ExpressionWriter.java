@@ -13,6 +13,7 @@ import masl.runtime.descriptor.Parameter;
 import masl.runtime.descriptor.Primitive;
 import masl.translator.analysis.AgentDecl;
 import masl.translator.analysis.AnalyzedProgram;
+import masl.translator.analysis.Block;
 import masl.translator.analysis.EntryRef;
 import masl.translator.analysis.EventDecl;
 import masl.translator.analysis.Label;
@@ -42,6 +43,13 @@ final class ExpressionWriter {
     private final Unsupported unsupported;
     private final TreeQueries queries;
     private final AssignmentWriter assignments;
+    /**
+     * The program's fields: {@code block$name} for a local, {@code agent$name}, {@code tmp$1}, ....
+     * MASL names may hold {@code $} ({@code a$b}'s local {@code c} and {@code a}'s local {@code b$c}),
+     * so every field's name is taken here, distinct from all others.
+     */
+    private final JavaNames.Unique fields = new JavaNames.Unique("self");
+    private final Map<Block, String> keepFlags = new java.util.HashMap<>();
     private final Map<Variable, String> locals = new java.util.LinkedHashMap<>();
     private final Map<Label, String> localLabels = new java.util.LinkedHashMap<>();
     private final AgentCalls calls = new AgentCalls();
@@ -133,7 +141,7 @@ final class ExpressionWriter {
 
     /** The field of an {@code LLabel}: {@code block$name}. */
     String localLabel(Label label) {
-        return localLabels.computeIfAbsent(label, l -> l.block().name() + "$" + l.name());
+        return localLabels.computeIfAbsent(label, l -> fields.take(l.block().name() + "$" + l.name()));
     }
 
     /** The {@code LLabel}s used so far, with their fields. */
@@ -258,7 +266,17 @@ final class ExpressionWriter {
 
     /** The field of a local variable: {@code block$name}. */
     String local(Variable variable) {
-        return locals.computeIfAbsent(variable, v -> v.block().name() + "$" + v.name());
+        return locals.computeIfAbsent(variable, v -> fields.take(v.block().name() + "$" + v.name()));
+    }
+
+    /** The flag of a block whose locals a reelect keeps (contract §3.6): {@code keep$block}. */
+    String keepFlag(Block block) {
+        return keepFlags.computeIfAbsent(block, b -> fields.take("keep$" + b.name()));
+    }
+
+    /** A new field of the program, named {@code wanted} unless another field has that name. */
+    String field(String wanted) {
+        return fields.take(wanted);
     }
 
     /** The locals used so far, with their fields. */
@@ -645,7 +663,7 @@ final class ExpressionWriter {
 
     /** The field holding a named agent's implementation: {@code agent$b}. */
     String agent(AgentDecl agent) {
-        return agents.computeIfAbsent(agent, a -> "agent$" + a.name());
+        return agents.computeIfAbsent(agent, a -> fields.take("agent$" + a.name()));
     }
 
     /**

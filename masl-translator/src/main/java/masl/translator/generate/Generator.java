@@ -12,6 +12,7 @@ import masl.translator.analysis.Block;
 import masl.translator.analysis.EntryRef;
 import masl.translator.analysis.ImportedType;
 import masl.translator.diagnostics.Diagnostics;
+import masl.translator.parse.NumberLiterals;
 import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.tree.ParseTree;
 
@@ -49,7 +50,7 @@ public final class Generator {
         StaticStructure structure = new StaticStructure(program.root(), shortName);
         Set<Block> kept = keptOnReelect(program);
 
-        JavaNames.Unique classNames = new JavaNames.Unique(missionClass);
+        JavaNames.Unique classNames = JavaNames.Unique.besideGeneratedNames(missionClass);
         Map<String, String> programClasses = new LinkedHashMap<>();
         Map<String, String> programSources = new LinkedHashMap<>();
         ProgramClassWriter writer = new ProgramClassWriter(program, structure, unsupported, shortName, kept);
@@ -97,7 +98,7 @@ public final class Generator {
                     target = entry.block();
                 }
             } else {
-                int levels = jump == null ? 1 : Integer.parseInt(jump.IntegerLiteral().getText());
+                int levels = jump == null ? 1 : NumberLiterals.count(jump.IntegerLiteral().getText());
                 ParserRuleContext node = reelect;
                 while (node != null && target == null) {
                     if (node instanceof MASLParser.EntryBlockContext && --levels == 0) {

@@ -15,6 +15,18 @@ final class JavaNames {
             "void", "volatile", "while", "true", "false", "null", "var", "record", "yield", "sealed", "permits",
             "_");
 
+    /**
+     * The simple names the generated classes import or declare besides their own ({@code
+     * masl.runtime.AgentProgram}, {@code java.net.URI}, the mission's {@code Types}, ...): a class
+     * or constant made from a MASL name must not hide one of them ({@code type Agent} would make a
+     * program class {@code AgentProgram}).
+     */
+    static final String[] GENERATED_CODE_NAMES = {"AgentContext", "AgentImplementation", "AgentProgram", "Event",
+        "Label", "Reaction", "Objects", "CompletableFuture", "URI", "ArrayList", "List", "ESequence",
+        "EntryDefinition", "Mission", "MissionProgram", "Mode", "SharedDeclaration", "AgentPath", "AgentType",
+        "DescriptorException", "DescriptorLoader", "DescriptorSource", "Types", "AgentSpec",
+        "ImplementationFactory", "AGENTS", "LOADER"};
+
     private JavaNames() {
     }
 
@@ -90,6 +102,13 @@ final class JavaNames {
 
         Unique(String... reserved) {
             used.addAll(Set.of(reserved));
+        }
+
+        /** Hands out no name of the generated code's own ({@link #GENERATED_CODE_NAMES}) either. */
+        static Unique besideGeneratedNames(String... reserved) {
+            Unique unique = new Unique(reserved);
+            unique.used.addAll(Set.of(GENERATED_CODE_NAMES));
+            return unique;
         }
 
         String take(String wanted) {

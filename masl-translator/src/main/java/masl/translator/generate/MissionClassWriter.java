@@ -27,6 +27,12 @@ final class MissionClassWriter {
         List<String> out = new ArrayList<>();
         out.add("package " + packageName + ";");
         out.add("");
+        for (String holder : structure.holders()) {
+            out.add("import static " + packageName + "." + className + "." + holder + ".*;");
+        }
+        if (!structure.holders().isEmpty()) {
+            out.add("");
+        }
         out.add("import java.net.URI;");
         out.add("import java.util.ArrayList;");
         out.add("import java.util.List;");
@@ -53,25 +59,29 @@ final class MissionClassWriter {
         out.add("@SuppressWarnings(\"unused\")");
         out.add("public final class " + className + " implements MissionProgram {");
         out.add("");
-        for (String declaration : structure.declarations()) {
+        List<List<String>> groups = structure.declarationGroups();
+        for (String declaration : groups.get(0)) {
             out.add("    " + declaration);
         }
-        if (!structure.declarations().isEmpty()) {
+        if (!groups.get(0).isEmpty()) {
             out.add("");
+        }
+        if (groups.size() > 1) {
+            out.addAll(holders(structure.holders(), groups));
         }
         List<AgentDecl> agents = program.agents();
         List<List<AgentDecl>> runs = runsOfOneType(agents);
-        List<List<AgentDecl>> groups = new ArrayList<>();
-        runs.forEach(run -> groups.addAll(withinOneConstant(run)));
+        List<List<AgentDecl>> nameGroups = new ArrayList<>();
+        runs.forEach(run -> nameGroups.addAll(withinOneConstant(run)));
         out.add("    /** The agents in declaration order (proxy ids 0, 1, 2, ...): implementation class, then names. */");
-        out.add("    private static final List<AgentSpec> AGENTS = specs(" + (groups.isEmpty() ? ");" : ""));
-        for (int g = 0; g < groups.size(); g++) {
-            List<AgentDecl> group = groups.get(g);
+        out.add("    private static final List<AgentSpec> AGENTS = specs(" + (nameGroups.isEmpty() ? ");" : ""));
+        for (int g = 0; g < nameGroups.size(); g++) {
+            List<AgentDecl> group = nameGroups.get(g);
             List<String> literals = nameLiterals(group);
             out.add("            " + JavaText.quote(group.get(0).instantiatedType().descriptor().fullClassName()) + ",");
             for (int l = 0; l < literals.size(); l++) {
                 out.add("            " + (l == 0 ? "" : "+ ") + literals.get(l)
-                        + (l + 1 < literals.size() ? "" : g + 1 < groups.size() ? "," : ");"));
+                        + (l + 1 < literals.size() ? "" : g + 1 < nameGroups.size() ? "," : ");"));
             }
         }
         out.add("");
@@ -140,10 +150,39 @@ final class MissionClassWriter {
         return String.join("\n", out) + "\n";
     }
 
+    /**
+     * The holder classes of a large static structure, initialised in order with the mission class:
+     * the structure is built in program order before any agent runs.
+     */
+    private static List<String> holders(List<String> holders, List<List<String>> groups) {
+        List<String> out = new ArrayList<>();
+        out.add("    // The rest of the static structure, in holder classes: a class initialiser holds at most 64 KB of");
+        out.add("    // bytecode. Each holder is loaded here, in order, so the whole structure is built with this class.");
+        out.add("    static {");
+        for (String holder : holders) {
+            out.add("        " + holder + ".load();");
+        }
+        out.add("    }");
+        for (int i = 0; i < holders.size(); i++) {
+            out.add("");
+            out.add("    static final class " + holders.get(i) + " {");
+            for (String declaration : groups.get(i + 1)) {
+                out.add("        " + declaration);
+            }
+            out.add("");
+            out.add("        static void load() {");
+            out.add("            // Calling it initialises the class.");
+            out.add("        }");
+            out.add("    }");
+        }
+        out.add("");
+        return out;
+    }
+
     /** A constant name for each instantiated type, by the type's MASL name. */
     private static Map<String, String> typeConstants(List<AgentDecl> agents) {
         Map<String, String> constants = new java.util.LinkedHashMap<>();
-        JavaNames.Unique names = new JavaNames.Unique("LOADER");
+        JavaNames.Unique names = JavaNames.Unique.besideGeneratedNames();
         for (AgentDecl agent : agents) {
             constants.computeIfAbsent(agent.instantiatedType().name(), type -> names.take(JavaNames.constant(type)));
         }

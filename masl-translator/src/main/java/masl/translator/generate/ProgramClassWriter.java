@@ -19,6 +19,7 @@ final class ProgramClassWriter {
 
     /** About how many characters of Java a character of MASL becomes: the buffer is sized once. */
     private static final int OUTPUT_PER_SOURCE_CHARACTER = 14;
+    private static final int REACTIONS_PER_METHOD = 1_000;
 
     private final AnalyzedProgram program;
     private final StaticStructure structure;
@@ -35,6 +36,33 @@ final class ProgramClassWriter {
         this.keptOnReelect = keptOnReelect;
     }
 
+    /**
+     * {@code reactionPc}: the case of each reaction. Past {@value #REACTIONS_PER_METHOD} reactions the
+     * tests go on in a method of their own, each about 15 bytes of the 64 KB a Java method holds.
+     */
+    private static void reactionPc(JavaLines out, StaticStructure structure,
+            List<Map.Entry<Reaction, CaseWriter.Point>> reactions) {
+        for (int first = 0; first < reactions.size(); first += REACTIONS_PER_METHOD) {
+            if (first == 0) {
+                out.add("    @Override");
+                out.add("    protected int reactionPc(Reaction reaction) {");
+            } else {
+                out.add("    /** reactionPc, continued: a Java method holds at most 64 KB of bytecode. */");
+                out.add("    private int reactionPcFrom" + first + "(Reaction reaction) {");
+            }
+            int end = Math.min(reactions.size(), first + REACTIONS_PER_METHOD);
+            for (Map.Entry<Reaction, CaseWriter.Point> reaction : reactions.subList(first, end)) {
+                out.add("        if (reaction == " + structure.reaction(reaction.getKey()) + ") {");
+                out.add("            return " + reaction.getValue().number() + ";");
+                out.add("        }");
+            }
+            out.add(end < reactions.size() ? "        return reactionPcFrom" + end + "(reaction);"
+                    : "        return super.reactionPc(reaction);");
+            out.add("    }");
+            out.add("");
+        }
+    }
+
     String write(String packageName, String className, String missionClass, ImportedType type) {
         ExpressionWriter expressions = new ExpressionWriter(program, structure, type, unsupported);
         StatementWriter statements = new StatementWriter(program, structure, expressions, unsupported, file,
@@ -47,6 +75,9 @@ final class ProgramClassWriter {
         out.add("package " + packageName + ";");
         out.add("");
         out.add("import static " + packageName + "." + missionClass + ".*;");
+        for (String holder : structure.holders()) {
+            out.add("import static " + packageName + "." + missionClass + "." + holder + ".*;");
+        }
         out.add("");
         out.add("import java.util.Objects;");
         out.add("import java.util.concurrent.CompletableFuture;");
@@ -85,7 +116,7 @@ final class ProgramClassWriter {
         for (Block block : keptOnReelect) {
             if (block.variables().stream().anyMatch(v -> v.sharing() == Sharing.LOCAL)) {
                 out.add("    /** Set by a reelect of " + block.name() + ": its locals are kept if the agent enters again. */");
-                out.add("    private boolean keep$" + block.name() + ";");
+                out.add("    private boolean " + expressions.keepFlag(block) + ";");
             }
         }
         out.add("");
@@ -99,32 +130,9 @@ final class ProgramClassWriter {
         out.add("    }");
         out.add("");
         if (!statements.reactionPoints().isEmpty()) {
-            out.add("    @Override");
-            out.add("    protected int reactionPc(Reaction reaction) {");
-            for (Map.Entry<Reaction, CaseWriter.Point> reaction : statements.reactionPoints().entrySet()) {
-                out.add("        if (reaction == " + structure.reaction(reaction.getKey()) + ") {");
-                out.add("            return " + reaction.getValue().number() + ";");
-                out.add("        }");
-            }
-            out.add("        return super.reactionPc(reaction);");
-            out.add("    }");
-            out.add("");
+            reactionPc(out, structure, List.copyOf(statements.reactionPoints().entrySet()));
         }
-        out.add("    @Override");
-        out.add("    @SuppressWarnings(\"fallthrough\") // resumption points fall through into the next one");
-        out.add("    protected void resume(AgentContext ctx) {");
-        out.add("        while (true) {");
-        out.add("            switch (pc) {");
-        resumptionPoints.render(out, "                ");
-        out.add("                default:");
-        out.add("                    throw new IllegalStateException(\"pc \" + pc);");
-        out.add("            }");
-        out.add("        }");
-        out.add("    }");
-        out.add("");
-        resumptionPoints.sourceAtMethod(out);
-        out.add("");
-        resumptionPoints.sourceOfCallInMethod(out);
+        new StateMachineWriter(resumptionPoints).write(out);
         if (expressions.usesDynamicMembers()) {
             out.add("");
             out.addAll(DynamicMembers.helpers());

@@ -7,8 +7,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.stream.Collectors;
-import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.StatementContext;
+import masl.grammar.MASLParser;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.Block;
 import masl.translator.analysis.BlockMode;
@@ -17,6 +17,7 @@ import masl.translator.analysis.EntryRef;
 import masl.translator.analysis.Reaction;
 import masl.translator.analysis.Sharing;
 import masl.translator.analysis.Variable;
+import masl.translator.parse.NumberLiterals;
 import org.antlr.v4.runtime.ParserRuleContext;
 
 /**
@@ -84,7 +85,7 @@ final class StatementWriter {
             cases.place(cases.point(), file + ":1: a program without blocks only creates its agents");
         }
         cases.line("ctx.finish();");
-        cases.end("return;");
+        cases.endWithReturn();
         if (root != null) {
             reactions(root);
         }
@@ -132,7 +133,7 @@ final class StatementWriter {
     /** In a reaction, before its ending: another reaction may follow, then this one does not decide. */
     private void endReaction() {
         if (instructions.isInReaction()) {
-            cases.line("if (!ctx.endReaction()) return;");
+            cases.returnUnless("ctx.endReaction()");
         }
     }
 
@@ -184,10 +185,11 @@ final class StatementWriter {
         CaseWriter.Point body = cases.point();
         cases.setPc(body);
         cases.open("switch (ctx.enter(" + definition + ", " + test + ")) {");
-        cases.jumpLine("case SKIPPED -> { " + (keeps ? "keep$" + block.name() + " = false; " : ""), after, " }");
-        cases.line("case WAITING -> { return; }");
+        cases.jumpLine("case SKIPPED -> { " + (keeps ? expressions.keepFlag(block) + " = false; " : ""), after, " }");
+        cases.returning("case WAITING -> { ", " }");
         cases.line("case ENTERED -> { }");
         cases.close("}");
+        checkSize(tree.test);
         cases.place(body, null);
 
         Block outerBlock = current;
@@ -208,7 +210,7 @@ final class StatementWriter {
 
         cases.place(cases.point(), file + ":" + tree.getStop().getLine() + ": end of " + block.name());
         cases.setPc(after);
-        cases.line("if (!ctx.leave(" + definition + ")) return;");
+        cases.returnUnless("ctx.leave(" + definition + ")");
     }
 
     private static boolean hasLocals(Block block) {
@@ -230,32 +232,36 @@ final class StatementWriter {
         }
         for (Variable variable : variables) {
             if (variable.sharing() == Sharing.SHARED && variable.initializer() != null) {
+                cases.statementStart();
                 String value = expressions.initializer(variable.type(), variable.initializer());
                 boolean stepped = instructions.awaitResults(variable.initializer());
                 cases.line("ctx.shared(" + structure.shared(variable) + ").initialise(() -> " + value + ");");
                 stepAfterInitialiser(variable, stepped);
+                checkSize(variable.initializer());
             }
         }
         CaseWriter.Point kept = cases.point();
         if (keeps) {
             // A step boundary cannot stand inside an if: a reelected member jumps over its locals instead.
-            cases.open("if (keep$" + block.name() + ") {");
+            cases.open("if (" + expressions.keepFlag(block) + ") {");
             cases.comment("reelected: " + block.name() + "'s locals keep their values");
             cases.jump(kept);
             cases.close("}");
         }
         for (Variable variable : variables) {
             if (variable.sharing() == Sharing.LOCAL) {
+                cases.statementStart();
                 String value = localInitialValue(variable);
                 boolean stepped = instructions.awaitResults(
                         variable.initializer() != null ? variable.initializer() : block.tree());
                 cases.line(expressions.local(variable) + " = " + value + ";");
                 stepAfterInitialiser(variable, stepped);
+                checkSize(variable.initializer() != null ? variable.initializer() : block.tree());
             }
         }
         if (keeps) {
             cases.place(kept, null);
-            cases.line("keep$" + block.name() + " = false;");
+            cases.line(expressions.keepFlag(block) + " = false;");
         }
     }
 
@@ -303,6 +309,20 @@ final class StatementWriter {
     }
 
     private void statement(StatementContext statement) {
+        cases.statementStart();
+        writeStatement(statement);
+        checkSize(statement);
+    }
+
+    /** Reports a statement whose Java does not fit in a method, whatever the splitting. */
+    private void checkSize(ParserRuleContext statement) {
+        if (cases.tooLarge()) {
+            unsupported.error(statement, "this statement is too large for Java, which holds at most 64 KB of bytecode"
+                    + " in a method: split it into several statements");
+        }
+    }
+
+    private void writeStatement(StatementContext statement) {
         if (statement instanceof MASLParser.EntryStmtContext) {
             statementInList(statement);
         } else if (statement instanceof MASLParser.BlockStmtContext block) {
@@ -320,7 +340,7 @@ final class StatementWriter {
         } else if (statement instanceof MASLParser.DoLoopStmtContext loop) {
             doLoop(loop);
         } else if (statement instanceof MASLParser.ExitStmtContext exit) {
-            int levels = exit.levels == null ? 1 : Integer.parseInt(exit.levels.getText());
+            int levels = exit.levels == null ? 1 : NumberLiterals.count(exit.levels.getText());
             cases.note(at(exit) + ": " + JavaText.snippet(exit));
             cases.jump(loopStack.stream().skip(levels - 1).findFirst().orElseThrow().exit());
         } else if (statement instanceof MASLParser.BreakStmtContext breakStmt) {
@@ -335,7 +355,7 @@ final class StatementWriter {
             endReaction();
             cases.line("ctx.reelect(" + structure.block(target) + ");");
             if (keptOnReelect.contains(target) && hasLocals(target)) {
-                cases.line("keep$" + target.name() + " = true;");
+                cases.line(expressions.keepFlag(target) + " = true;");
             }
             cases.jump(test(target));
         } else if (statement instanceof MASLParser.RestartStmtContext restart) {
@@ -347,7 +367,7 @@ final class StatementWriter {
             // Back to where the reactions interrupted the agent, completing the boundary it was at.
             cases.note(at(resume) + ": resume;");
             endReaction();
-            cases.line("if (!ctx.resumeInterrupted()) return;");
+            cases.returnUnless("ctx.resumeInterrupted()");
             cases.end("continue;");
         } else if (statement instanceof MASLParser.ClearEventsStmtContext clear) {
             cases.note(at(clear) + ": " + JavaText.snippet(clear));
@@ -379,7 +399,7 @@ final class StatementWriter {
             }
             throw new IllegalStateException("the analysis let through break or reelect to " + name);
         }
-        int levels = target == null ? 1 : Integer.parseInt(target.IntegerLiteral().getText());
+        int levels = target == null ? 1 : NumberLiterals.count(target.IntegerLiteral().getText());
         Block block = current;
         for (int i = 1; i < levels; i++) {
             block = block.parent();
@@ -471,7 +491,7 @@ final class StatementWriter {
     /** The end of an iteration (MASL 5): events and invocations, and parking if it is a busy-wait. */
     private void iteration(CaseWriter.Point head, boolean busyWait) {
         cases.setPc(head);
-        cases.line("if (!ctx." + (busyWait ? "busyWaitIteration" : "loopIteration") + "()) return;");
+        cases.returnUnless("ctx." + (busyWait ? "busyWaitIteration" : "loopIteration") + "()");
         cases.end("continue;");
     }
 }

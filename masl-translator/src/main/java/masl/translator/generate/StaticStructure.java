@@ -20,8 +20,11 @@ import masl.translator.analysis.Variable;
  */
 final class StaticStructure {
 
+    /** About 20 bytes of class initialiser each: 1,000 stay far below the 64 KB of a method. */
+    static final int DECLARATIONS_PER_CLASS = 1_000;
+
     private final String sourceName;
-    private final JavaNames.Unique names = new JavaNames.Unique("AGENTS");
+    private final JavaNames.Unique names = JavaNames.Unique.besideGeneratedNames();
     private final Map<Block, String> blocks = new IdentityHashMap<>();
     private final Map<ESequence, String> sequences = new IdentityHashMap<>();
     private final Map<Variable, String> shared = new IdentityHashMap<>();
@@ -29,6 +32,7 @@ final class StaticStructure {
     private final Map<masl.translator.analysis.Label, String> sharedLabels = new HashMap<>();
     private final Map<Reaction, String> reactions = new HashMap<>();
     private final List<String> declarations = new ArrayList<>();
+    private List<List<String>> groups;
 
     StaticStructure(Block root, String sourceName) {
         this.sourceName = sourceName;
@@ -81,9 +85,43 @@ final class StaticStructure {
         return reactions.get(reaction);
     }
 
-    /** The field declarations, in program order. */
-    List<String> declarations() {
-        return declarations;
+    /**
+     * The field declarations, in program order, each with the comment lines before it, in groups of
+     * at most {@value #DECLARATIONS_PER_CLASS}: the first group in the mission class, each other one in
+     * a holder class of its own ({@link #holders}), since a class initialiser holds at most 64 KB of bytecode.
+     */
+    List<List<String>> declarationGroups() {
+        if (groups == null) {
+            groups = grouped();
+        }
+        return groups;
+    }
+
+    private List<List<String>> grouped() {
+        List<List<String>> groups = new ArrayList<>();
+        List<String> group = new ArrayList<>();
+        int count = 0;
+        for (String line : declarations) {
+            boolean declaration = !line.startsWith("//");
+            if (declaration && count == DECLARATIONS_PER_CLASS) {
+                groups.add(group);
+                group = new ArrayList<>();
+                count = 0;
+            }
+            group.add(line);
+            count += declaration ? 1 : 0;
+        }
+        groups.add(group);
+        return groups;
+    }
+
+    /** The holder classes of the declarations after the first group, in order: {@code Structure2}, .... */
+    List<String> holders() {
+        List<String> holders = new ArrayList<>();
+        for (int i = 2; i <= declarationGroups().size(); i++) {
+            holders.add("Structure" + i);
+        }
+        return holders;
     }
 
     private void declareContents(Block block) {

@@ -3,7 +3,7 @@ package masl.translator.generate;
 import masl.translator.diagnostics.Diagnostics;
 import org.antlr.v4.runtime.ParserRuleContext;
 
-/** Reports the constructs the translator cannot generate yet, at their position in the program. */
+/** Reports the constructs the translator cannot generate, at their position in the program. */
 final class Unsupported {
 
     private final String file;
@@ -22,5 +22,10 @@ final class Unsupported {
         diagnostics.error(file, where.getStart().getLine(), where.getStart().getCharPositionInLine() + 1,
                 construct + " is not supported yet by the translator");
         return "null";
+    }
+
+    /** Reports {@code message} at {@code where}: a construct Java cannot hold. */
+    void error(ParserRuleContext where, String message) {
+        diagnostics.error(file, where.getStart().getLine(), where.getStart().getCharPositionInLine() + 1, message);
     }
 }

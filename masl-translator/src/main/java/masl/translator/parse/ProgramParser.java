@@ -39,7 +39,8 @@ public final class ProgramParser {
      * The parse tree and the token stream it was built from (the analysis reads path texts from it).
      *
      * @param nodes how many rule nodes the tree has, numbered 0 to {@code nodes - 1} ({@link MaslRuleContext})
-     * @param repaired whether ANTLR had to repair the tree after syntax errors
+     * @param repaired whether ANTLR had to repair the tree after syntax errors; then {@code tree} is
+     *     null if the program was not parsed at all (nested too deeply, {@link Nesting})
      */
     public record Parsed(SourceFile source, MASLParser.ProgramContext tree, CommonTokenStream tokens, int nodes,
             boolean repaired) { }
@@ -59,6 +60,10 @@ public final class ProgramParser {
         MASLLexer lexer = new MASLLexer(CharStreams.fromString(source.text(), source.name()));
         lexer.removeErrorListeners();
         CommonTokenStream tokens = new CommonTokenStream(lexer);
+        tokens.fill();
+        if (Nesting.reportTooDeep(source.name(), tokens.getTokens(), diagnostics)) {
+            return new Parsed(source, null, tokens, 0, true);
+        }
         MASLParser parser = new MASLParser(tokens);
         parser.removeErrorListeners();
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);

@@ -1,7 +1,9 @@
 package masl.translator.generate;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -19,7 +21,7 @@ class CaseWriterTest {
         cases.suspending("ctx.stepBoundary()", cases.point());
         cases.line("work();");
         cases.place(later, "t.masl:3: later");
-        cases.end("return;");
+        cases.endWithReturn();
         assertEquals(List.of(
                 "case 0: // t.masl:1: start",
                 "    if (x) { pc = 2; continue; }",
@@ -54,11 +56,55 @@ class CaseWriterTest {
                 lines(cases));
     }
 
-    private static List<String> lines(CaseWriter cases) {
-        JavaLines out = new JavaLines(100);
+    @Test
+    void aLongRunOfStatementsIsCutIntoCasesWhereAStatementStarts() {
+        CaseWriter cases = new CaseWriter();
+        cases.place(cases.point(), "t.masl:1: declarations of main");
+        String declaration = "main$v = 1;";
+        int perCase = CaseWriter.LONGEST_CASE / (declaration.length() + 1) + 1;
+        for (int i = 0; i < 3 * perCase; i++) {
+            cases.statementStart();
+            cases.line(declaration);
+        }
         cases.number();
-        cases.render(out, "");
-        return List.of(out.toString().split("\n"));
+        assertEquals(3, cases.cases().size());
+        assertEquals("t.masl:1: declarations of main", cases.cases().get(1).callSource());
+        assertTrue(cases.cases().get(0).fallsThrough());
+    }
+
+    @Test
+    void aStatementInsideAJavaBlockIsNeverCutFromIt() {
+        CaseWriter cases = new CaseWriter();
+        cases.place(cases.point(), "t.masl:1: if (x)");
+        cases.open("if (x) {");
+        for (int i = 0; i < CaseWriter.LONGEST_CASE; i++) {
+            cases.statementStart();
+            cases.line("ctx.clearEvents();");
+        }
+        cases.close("}");
+        cases.number();
+        assertEquals(1, cases.cases().size());
+    }
+
+    @Test
+    void aReturnInAPartOfASplitMachineSaysTheAgentStopped() {
+        CaseWriter cases = new CaseWriter();
+        cases.place(cases.point(), "t.masl:1: .nop();");
+        cases.suspending("ctx.stepBoundary()", cases.point());
+        cases.endWithReturn();
+        cases.number();
+        StringBuilder text = new StringBuilder();
+        cases.cases().forEach(c -> CaseWriter.render(text, c, "", true));
+        assertEquals(List.of("case 0: // t.masl:1: .nop();", "    pc = 1;", "    if (!ctx.stepBoundary()) return false;",
+                "case 1:", "    return false;"), List.of(text.toString().split("\n")));
+        assertFalse(cases.cases().get(1).fallsThrough());
+    }
+
+    private static List<String> lines(CaseWriter cases) {
+        StringBuilder text = new StringBuilder();
+        cases.number();
+        cases.cases().forEach(c -> CaseWriter.render(text, c, "", false));
+        return List.of(text.toString().split("\n"));
     }
 
     @Test

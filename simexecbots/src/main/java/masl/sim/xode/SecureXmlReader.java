@@ -21,6 +21,12 @@ import javax.xml.stream.XMLStreamReader;
  */
 public final class SecureXmlReader {
 
+    /**
+     * The deepest nesting of elements read: the loader's walks recurse into nested elements (on a
+     * deep stack, {@link XodeLoader}), and a scene needs a few levels, not thousands.
+     */
+    public static final int DEEPEST = 10_000;
+
     private final String fileName;
     private final String text;
     private final int[] lineStarts;
@@ -57,6 +63,11 @@ public final class SecureXmlReader {
             int event = reader.next();
             if (event == XMLStreamConstants.START_ELEMENT) {
                 XodeElement element = new XodeElement(qualifiedName(reader), elementStart(reader.getLocation()));
+                if (open.size() == DEEPEST) {
+                    throw new XodeException(List.of(new XodeProblem(XodeProblem.Severity.ERROR, element.location(),
+                            element.name(), String.format("elements nested more than %,d deep: masl loads at most %,d"
+                                    + " levels", DEEPEST, DEEPEST))));
+                }
                 for (int i = 0; i < reader.getAttributeCount(); i++) {
                     // xsi:… and other namespaced attributes are schema hints, not XODE data.
                     if (reader.getAttributeNamespace(i) == null || reader.getAttributeNamespace(i).isEmpty()) {

@@ -1,0 +1,179 @@
+package masl.translator.analysis;
+
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.IdentityHashMap;
+import java.util.Map;
+import masl.grammar.MASLLexer;
+import masl.grammar.MASLParser;
+import masl.translator.parse.Literals;
+import masl.translator.parse.NumberLiterals;
+import org.antlr.v4.runtime.ParserRuleContext;
+import org.antlr.v4.runtime.tree.ParseTree;
+import org.antlr.v4.runtime.tree.TerminalNode;
+
+/**
+ * Java's limits on constants, which javac would otherwise meet in the generated code: number literals
+ * in range ({@code 2147483648} only after a unary minus), and no string constant over 65,535 bytes
+ * (JVMS 4.4.7), a literal or a concatenation javac folds into one constant ({@code "..." + "..."}).
+ * The walk is iterative: an expression may be nested thousands of levels deep.
+ */
+final class ConstantLimits {
+
+    /** The most bytes, in modified UTF-8, that a class file's constant holds. */
+    static final int LONGEST_CONSTANT = 65_535;
+
+    /** A constant expression: whether it is a string, and the bytes of its string form (at most, for a number). */
+    private record Constant(boolean string, long bytes) {
+    }
+
+    /** Bytes enough for the string form of any number, character or boolean. */
+    private static final Constant OTHER = new Constant(false, 25);
+
+    private final Errors errors;
+    private final Map<ParseTree, Constant> constants = new IdentityHashMap<>();
+
+    private ConstantLimits(Errors errors) {
+        this.errors = errors;
+    }
+
+    static void check(ParseTree tree, Errors errors) {
+        new ConstantLimits(errors).walk(tree);
+    }
+
+    /** Visits every node after its children, without recursion. */
+    private void walk(ParseTree root) {
+        Deque<ParseTree> pending = new ArrayDeque<>();
+        Deque<ParseTree> visited = new ArrayDeque<>();
+        pending.push(root);
+        while (!pending.isEmpty()) {
+            ParseTree node = pending.pop();
+            visited.push(node);
+            for (int i = 0; i < node.getChildCount(); i++) {
+                pending.push(node.getChild(i));
+            }
+        }
+        while (!visited.isEmpty()) {
+            visit(visited.pop());
+        }
+    }
+
+    private void visit(ParseTree node) {
+        if (node instanceof TerminalNode terminal) {
+            checkNumber(terminal);
+            return;
+        }
+        Constant constant = constant(node);
+        if (constant != null) {
+            constants.put(node, constant);
+        }
+        if (constant == null || !constant.string()) {
+            // The largest constant strings end here: report each child that is one too long.
+            for (int i = 0; i < node.getChildCount(); i++) {
+                Constant child = constants.get(node.getChild(i));
+                if (child != null && child.string() && child.bytes() > LONGEST_CONSTANT) {
+                    errors.at((ParserRuleContext) node.getChild(i), String.format("a string constant of %,d bytes"
+                            + " (in UTF-8): Java holds at most %,d in one; build a longer text at run time",
+                            child.bytes(), LONGEST_CONSTANT));
+                }
+            }
+        }
+    }
+
+    private void checkNumber(TerminalNode terminal) {
+        String text = terminal.getText();
+        String problem = switch (terminal.getSymbol().getType()) {
+            case MASLLexer.IntegerLiteral -> NumberLiterals.integerProblem(text, isNegated(terminal));
+            case MASLLexer.FloatingPointLiteral -> NumberLiterals.floatingProblem(text);
+            default -> null;
+        };
+        if (problem != null) {
+            errors.at(terminal.getSymbol(), problem);
+        }
+    }
+
+    /** Whether the literal is the operand of a unary minus: {@code -2147483648}. */
+    private static boolean isNegated(TerminalNode literal) {
+        ParseTree primary = literal.getParent() == null ? null : literal.getParent().getParent();
+        return primary instanceof MASLParser.LiteralExprContext
+                && primary.getParent() instanceof MASLParser.PrimaryExprContext operand
+                && operand.getParent() instanceof MASLParser.PrefixExprContext prefix
+                && prefix.op.getType() == MASLLexer.SUB;
+    }
+
+    /** The constant {@code node} is, as javac folds it, or null if it is none. */
+    private Constant constant(ParseTree node) {
+        if (node instanceof MASLParser.LiteralContext literal) {
+            return literal(literal);
+        }
+        if (node instanceof MASLParser.LiteralExprContext literal) {
+            return constants.get(literal.literal());
+        }
+        if (node instanceof MASLParser.ParenExprContext paren) {
+            return constants.get(paren.expression());
+        }
+        if (node instanceof MASLParser.PrimaryExprContext primary) {
+            return constants.get(primary.primary());
+        }
+        if (node instanceof MASLParser.CastExprContext cast) {
+            Constant operand = constants.get(cast.expression());
+            boolean toString = cast.javaType().getText().equals("String") || cast.javaType().getText().equals("java.lang.String");
+            return operand == null ? null : toString ? operand : cast.javaType().primitiveType() != null ? OTHER : null;
+        }
+        if (node instanceof MASLParser.PrefixExprContext prefix) {
+            boolean sign = prefix.op.getType() == MASLLexer.ADD || prefix.op.getType() == MASLLexer.SUB;
+            return sign && constants.containsKey(prefix.expression()) ? OTHER : null;
+        }
+        if (node instanceof MASLParser.NotExprContext not) {
+            return constants.containsKey(not.expression()) ? OTHER : null;
+        }
+        if (node instanceof MASLParser.BinaryExprContext binary) {
+            return binary(binary);
+        }
+        if (node instanceof MASLParser.ConditionalExprContext conditional) {
+            Constant whenTrue = constants.get(conditional.whenTrue);
+            Constant whenFalse = constants.get(conditional.whenFalse);
+            if (!constants.containsKey(conditional.condition) || whenTrue == null || whenFalse == null) {
+                return null;
+            }
+            return new Constant(whenTrue.string() || whenFalse.string(), Math.max(whenTrue.bytes(), whenFalse.bytes()));
+        }
+        return null;
+    }
+
+    private Constant binary(MASLParser.BinaryExprContext binary) {
+        Constant left = constants.get(binary.left);
+        Constant right = constants.get(binary.right);
+        if (left == null || right == null) {
+            return null;
+        }
+        if (binary.op.getType() == MASLLexer.ADD && (left.string() || right.string())) {
+            return new Constant(true, left.bytes() + right.bytes());
+        }
+        return OTHER;
+    }
+
+    private static Constant literal(MASLParser.LiteralContext literal) {
+        if (literal.NULL() != null) {
+            return null;
+        }
+        if (literal.StringLiteral() == null) {
+            return OTHER;
+        }
+        try {
+            return new Constant(true, modifiedUtf8Length(Literals.string(literal.getText())));
+        } catch (Literals.Problem reportedByTheParser) {
+            return null;
+        }
+    }
+
+    /** The bytes of {@code text} in a class file: 1 for U+0001 to U+007F, 2 up to U+07FF and for U+0000, else 3. */
+    private static long modifiedUtf8Length(String text) {
+        long bytes = 0;
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            bytes += c >= 1 && c <= 0x7f ? 1 : c <= 0x7ff ? 2 : 3;
+        }
+        return bytes;
+    }
+}
