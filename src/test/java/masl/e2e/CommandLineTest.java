@@ -7,9 +7,13 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.File;
 import java.io.IOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
+import masl.e2e.agents.HomeOnly;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -76,6 +80,48 @@ class CommandLineTest {
         try (MaslProcess masl = MaslProcess.start(full, "run", "missions/hello.masl")) {
             assertEquals(2, masl.awaitExit(), masl::toString);
             assertEquals("masl: cannot write the journal to standard output\n", masl.err());
+        }
+    }
+
+    /** JADE prints the stack traces of a failed join on standard error: the user sees one line instead. */
+    @Test
+    void joiningAPlatformWhoseMainContainerIsNotThereIsOneLine() throws Exception {
+        int port = freePort();
+        try (MaslProcess masl = MaslProcess.start(folder.resolve("journal.txt").toFile(), "run", "missions/hello.masl",
+                "--platform", "jade", "--main-host", "127.0.0.1", "--main-port", String.valueOf(port))) {
+            assertEquals(2, masl.awaitExit(), masl::toString);
+            assertEquals("masl: cannot join the JADE platform at 127.0.0.1:" + port + " (is its main container running?)\n",
+                    masl.err());
+        }
+    }
+
+    /**
+     * {@code masl container} on a host where the class of the agent placed there cannot be
+     * initialised: each side says so in one line, what the class threw included, with status 2.
+     */
+    @Test
+    void aContainerThatCannotHostItsAgentIsOneLineOnEachSide() throws Exception {
+        String port = String.valueOf(freePort());
+        String secret = folder.resolve("secret").toString();
+        String why = "masl: container c2 cannot host b: class masl.e2e.agents.HomeOnly: its static initialiser threw"
+                + " java.lang.IllegalStateException: no robot on this host\n";
+        try (MaslProcess container = MaslProcess.start(Map.of(HomeOnly.NO_ROBOT, "yes"),
+                folder.resolve("container.txt").toFile(), "container", "--main-host", "127.0.0.1", "--main-port", port,
+                "--name", "c2", "--agent-path", "src/test/resources/faults/agents", "--timeout", "60",
+                "--secret-file", secret);
+                MaslProcess run = MaslProcess.start(folder.resolve("journal.txt").toFile(), "run",
+                        "src/test/resources/faults/home_only.masl", "--platform", "jade", "--port", port, "--place", "b=c2",
+                        "--timeout", "60", "--secret-file", secret)) {
+            assertEquals(2, run.awaitExit(), run::toString);
+            assertEquals(why, run.err());
+            assertEquals(2, container.awaitExit(), container::toString);
+            assertEquals(why, container.err());
+        }
+    }
+
+    private static int freePort() throws IOException {
+        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
+            return socket.getLocalPort();
         }
     }
 

@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import masl.cli.Main;
 
@@ -26,11 +27,18 @@ final class MaslProcess implements AutoCloseable {
 
     /** Starts {@code masl ARGUMENTS} with standard output written to {@code out}. */
     static MaslProcess start(File out, String... arguments) throws IOException {
+        return start(Map.of(), out, arguments);
+    }
+
+    /** Starts {@code masl ARGUMENTS} with {@code environment} added to this JVM's, standard output written to {@code out}. */
+    static MaslProcess start(Map<String, String> environment, File out, String... arguments) throws IOException {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), Main.class.getName()));
         command.addAll(List.of(arguments));
         Path err = Files.createTempFile("masl-stderr-", ".txt");
-        Process process = new ProcessBuilder(command).redirectOutput(out).redirectError(err.toFile()).start();
+        ProcessBuilder builder = new ProcessBuilder(command).redirectOutput(out).redirectError(err.toFile());
+        builder.environment().putAll(environment);
+        Process process = builder.start();
         return new MaslProcess(process, err);
     }
 

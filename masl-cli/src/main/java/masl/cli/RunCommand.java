@@ -9,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.time.Duration;
+import masl.jade.JadeException;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.SeededScheduler;
@@ -135,6 +136,11 @@ final class RunCommand {
         }
         if (outcome.completed()) {
             return Masl.OK;
+        }
+        if (outcome.failure().orElse(null) instanceof JadeException platform) {
+            // The platform's own words (cannot join, a container cannot host an agent) are meant for the user as they are.
+            err.println("masl: " + platform.getMessage());
+            return Masl.MISSION_FAILED;
         }
         String what = switch (outcome.status()) {
             case DEADLOCKED -> "deadlocked: no agent can make progress";

@@ -1,10 +1,10 @@
 package masl.translator;
 
-import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import masl.runtime.AgentClasses;
 import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 import masl.runtime.MissionProgram;
@@ -98,42 +98,11 @@ public final class MissionLoader {
     /**
      * A new instance of an agent's implementation class, loaded along the agent path.
      *
-     * @throws ReflectiveOperationException if the class is missing or has no usable constructor; a
-     *     {@link CreationFailed} if its static initialiser or its constructor threw (it names what)
+     * @throws ReflectiveOperationException if the class is missing or has no usable constructor; an
+     *     {@link AgentClasses.CreationFailed} if its static initialiser or its constructor threw (it names what)
      */
     public AgentImplementation newImplementation(MissionProgram.AgentSpec agent) throws ReflectiveOperationException {
-        Class<?> type;
-        try {
-            type = Class.forName(agent.typeClassName(), true, classes);
-        } catch (ExceptionInInitializerError thrown) {
-            throw new CreationFailed("its static initialiser threw " + thrown.getCause());
-        } catch (LinkageError broken) {
-            throw new CreationFailed("its class cannot be loaded: " + broken);
-        }
-        try {
-            return type.asSubclass(AgentImplementation.class).getDeclaredConstructor().newInstance();
-        } catch (InvocationTargetException thrown) {
-            throw new CreationFailed("its constructor threw " + thrown.getCause());
-        }
-    }
-
-    /**
-     * An agent's implementation class was found but could not make an instance: the message says
-     * what its own code threw, since the reflective wrapper ({@code InvocationTargetException},
-     * {@code ExceptionInInitializerError}) says nothing a user can act on.
-     */
-    public static final class CreationFailed extends ReflectiveOperationException {
-        private static final long serialVersionUID = 1L;
-
-        CreationFailed(String message) {
-            super(message);
-        }
-
-        /** The message alone: it is printed after the agent's name and class. */
-        @Override
-        public String toString() {
-            return getMessage();
-        }
+        return AgentClasses.instantiate(agent.typeClassName(), classes);
     }
 
     /** An agent's implementation could not be created: its class is missing or has no usable constructor. */
