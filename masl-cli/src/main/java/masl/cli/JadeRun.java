@@ -124,12 +124,14 @@ final class JadeRun {
             }
             return launcher.run(options, timeout);
         } catch (IOException unwritable) {
-            return failed(new JadeException("cannot write the mission's secret for its containers to " + secretFile
+            return failed(new PlatformFailure("cannot write the mission's secret for its containers to " + secretFile
                     + ": " + unwritable.getMessage()), MissionOutcome.Status.FAILED);
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
             return failed(interrupted, MissionOutcome.Status.STOPPED);
-        } catch (JadeException | IllegalStateException cannotRun) {
+        } catch (JadeException platform) {
+            return failed(new PlatformFailure(platform.getMessage()), MissionOutcome.Status.FAILED);
+        } catch (IllegalStateException cannotRun) {
             return failed(cannotRun, MissionOutcome.Status.FAILED);
         } finally {
             forgetSecret();

@@ -9,7 +9,6 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.time.Duration;
-import masl.jade.JadeException;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.SeededScheduler;
@@ -137,8 +136,7 @@ final class RunCommand {
         if (outcome.completed()) {
             return Masl.OK;
         }
-        if (outcome.failure().orElse(null) instanceof JadeException platform) {
-            // The platform's own words (cannot join, a container cannot host an agent) are meant for the user as they are.
+        if (outcome.failure().orElse(null) instanceof PlatformFailure platform) {
             err.println("masl: " + platform.getMessage());
             return Masl.MISSION_FAILED;
         }
