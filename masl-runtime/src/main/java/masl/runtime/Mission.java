@@ -12,17 +12,26 @@ import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
-import java.util.concurrent.Future;
-import java.util.concurrent.TimeoutException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
 import masl.runtime.descriptor.AgentType;
+import masl.runtime.entry.Entry;
+import masl.runtime.entry.EntryCoordinator;
+import masl.runtime.invocation.PendingInvocation;
+import masl.runtime.scheduling.Blocking;
+import masl.runtime.scheduling.ChangeEpoch;
+import masl.runtime.scheduling.PoolScheduler;
+import masl.runtime.scheduling.PrimitiveTurn;
+import masl.runtime.scheduling.Scheduler;
+import masl.runtime.scheduling.WakeUps;
 import masl.runtime.trace.Trace;
 import masl.runtime.trace.TraceEvent;
 
@@ -264,11 +273,11 @@ public final class Mission {
     }
 
     /**
-     * The agent running {@code implementation}.
+     * The agent running {@code implementation}. <b>Internal:</b> not part of the API.
      *
      * @throws IllegalArgumentException if it runs no agent of this mission
      */
-    Agent agentOf(AgentImplementation implementation) {
+    public Agent agentOf(AgentImplementation implementation) {
         int proxyId = implementation.services().proxyId();
         if (proxyId < 0 || proxyId >= agents.size() || agents.get(proxyId).implementation != implementation) {
             throw new IllegalArgumentException(implementation + " is no agent of this mission");
@@ -345,7 +354,8 @@ public final class Mission {
         return entry;
     }
 
-    Scheduler scheduler() {
+    /** <b>Internal:</b> not part of the API. */
+    public Scheduler scheduler() {
         return scheduler;
     }
 
@@ -398,7 +408,8 @@ public final class Mission {
         return over || ended.getCount() == 0;
     }
 
-    void countSchedule() {
+    /** <b>Internal:</b> not part of the API. */
+    public void countSchedule() {
         wakeUps.counted();
     }
 

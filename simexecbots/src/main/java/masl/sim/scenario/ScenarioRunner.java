@@ -14,7 +14,7 @@ import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
-import masl.runtime.Scheduler;
+import masl.runtime.scheduling.Scheduler;
 import masl.runtime.trace.JsonLinesTrace;
 import masl.runtime.trace.Trace;
 import masl.sim.clock.LockStepScheduler;
