@@ -29,7 +29,10 @@ public final class JsonLinesTrace implements Trace, Flushable {
     @Override
     public synchronized void record(TraceEvent event) {
         String line;
-        if (event instanceof TraceEvent.MissionEnded e) {
+        if (event instanceof TraceEvent.MissionStarted e) {
+            line = head(e.nanos(), "mission-started") + ",\"agents\":["
+                    + String.join(",", e.agents().stream().map(JsonLinesTrace::string).toList()) + "]";
+        } else if (event instanceof TraceEvent.MissionEnded e) {
             line = head(e.nanos(), "mission-ended") + ",\"status\":" + string(e.status());
         } else if (event instanceof TraceEvent.AgentFailed e) {
             line = head(e.nanos(), "agent-failed") + ",\"agent\":" + e.agent() + ",\"cause\":" + string(e.cause());
