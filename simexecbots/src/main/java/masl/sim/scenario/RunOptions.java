@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.function.DoubleConsumer;
 import masl.runtime.trace.Trace;
 
 /**
@@ -17,37 +18,45 @@ import masl.runtime.trace.Trace;
  *                  {@code journal.txt} and {@code trajectories.png} to, created if missing
  * @param classes   loads the implementation and initialisation classes the scenario names, or null
  *                  for the mission program's own class loader
+ * @param progress  told the simulated time, in seconds, after every physics step (on the stepping
+ *                  thread: it must be quick), for a progress report
  */
-public record RunOptions(Duration timeout, Appendable journal, Trace trace, Optional<Path> output, ClassLoader classes) {
+public record RunOptions(Duration timeout, Appendable journal, Trace trace, Optional<Path> output, ClassLoader classes,
+        DoubleConsumer progress) {
 
     public RunOptions {
         Objects.requireNonNull(timeout, "timeout");
         Objects.requireNonNull(trace, "trace");
         Objects.requireNonNull(output, "output");
+        Objects.requireNonNull(progress, "progress");
     }
 
-    /** Ten minutes, no journal sink, no trace, no output files, the program's class loader. */
+    /** Ten minutes, no journal sink, no trace, no output files, the program's class loader, no progress. */
     public static RunOptions defaults() {
-        return new RunOptions(Duration.ofMinutes(10), null, Trace.NONE, Optional.empty(), null);
+        return new RunOptions(Duration.ofMinutes(10), null, Trace.NONE, Optional.empty(), null, seconds -> { });
     }
 
     public RunOptions withTimeout(Duration newTimeout) {
-        return new RunOptions(newTimeout, journal, trace, output, classes);
+        return new RunOptions(newTimeout, journal, trace, output, classes, progress);
     }
 
     public RunOptions withJournal(Appendable sink) {
-        return new RunOptions(timeout, sink, trace, output, classes);
+        return new RunOptions(timeout, sink, trace, output, classes, progress);
     }
 
     public RunOptions withTrace(Trace newTrace) {
-        return new RunOptions(timeout, journal, newTrace, output, classes);
+        return new RunOptions(timeout, journal, newTrace, output, classes, progress);
     }
 
     public RunOptions withOutput(Path folder) {
-        return new RunOptions(timeout, journal, trace, Optional.of(folder), classes);
+        return new RunOptions(timeout, journal, trace, Optional.of(folder), classes, progress);
     }
 
     public RunOptions withClasses(ClassLoader loader) {
-        return new RunOptions(timeout, journal, trace, output, loader);
+        return new RunOptions(timeout, journal, trace, output, loader, progress);
+    }
+
+    public RunOptions withProgress(DoubleConsumer simulatedSeconds) {
+        return new RunOptions(timeout, journal, trace, output, classes, simulatedSeconds);
     }
 }
