@@ -119,8 +119,8 @@ final class Progress implements AutoCloseable {
     }
 
     /** {@code out} for the journal: each write erases the progress line first and is flushed at once. */
-    Appendable journal(PrintStream out) {
-        return new JournalSink(out);
+    <T extends Appendable & Flushable> Appendable journal(T out) {
+        return new JournalSink<>(out);
     }
 
     private void erase() {
@@ -144,15 +144,15 @@ final class Progress implements AutoCloseable {
         return String.format(Locale.ROOT, "%.1f s", nanos / 1e9);
     }
 
-    private final class JournalSink implements Appendable, Flushable {
-        private final PrintStream out;
+    private final class JournalSink<T extends Appendable & Flushable> implements Appendable, Flushable {
+        private final T out;
 
-        JournalSink(PrintStream out) {
+        JournalSink(T out) {
             this.out = out;
         }
 
         @Override
-        public Appendable append(CharSequence text) {
+        public Appendable append(CharSequence text) throws IOException {
             CharSequence written = text == null ? "null" : text;
             synchronized (Progress.this) {
                 erase();
@@ -171,12 +171,12 @@ final class Progress implements AutoCloseable {
         }
 
         @Override
-        public Appendable append(CharSequence text, int start, int end) {
+        public Appendable append(CharSequence text, int start, int end) throws IOException {
             return append((text == null ? "null" : text).subSequence(start, end));
         }
 
         @Override
-        public Appendable append(char c) {
+        public Appendable append(char c) throws IOException {
             return append(String.valueOf(c));
         }
 

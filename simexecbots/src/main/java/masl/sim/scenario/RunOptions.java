@@ -4,7 +4,9 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.function.Consumer;
 import java.util.function.DoubleConsumer;
+import masl.runtime.Mission;
 import masl.runtime.trace.Trace;
 
 /**
@@ -18,45 +20,52 @@ import masl.runtime.trace.Trace;
  *                  {@code journal.txt} and {@code trajectories.png} to, created if missing
  * @param classes   loads the implementation and initialisation classes the scenario names, or null
  *                  for the mission program's own class loader
+ * @param ready     given the mission once it is built, before it runs: whoever may stop it early
+ *                  (on a signal, say) keeps it
  * @param progress  told the simulated time, in seconds, after every physics step (on the stepping
  *                  thread: it must be quick), for a progress report
  */
 public record RunOptions(Duration timeout, Appendable journal, Trace trace, Optional<Path> output, ClassLoader classes,
-        DoubleConsumer progress) {
+        Consumer<Mission> ready, DoubleConsumer progress) {
 
     public RunOptions {
         Objects.requireNonNull(timeout, "timeout");
         Objects.requireNonNull(trace, "trace");
         Objects.requireNonNull(output, "output");
+        Objects.requireNonNull(ready, "ready");
         Objects.requireNonNull(progress, "progress");
     }
 
     /** Ten minutes, no journal sink, no trace, no output files, the program's class loader, no progress. */
     public static RunOptions defaults() {
-        return new RunOptions(Duration.ofMinutes(10), null, Trace.NONE, Optional.empty(), null, seconds -> { });
+        return new RunOptions(Duration.ofMinutes(10), null, Trace.NONE, Optional.empty(), null, mission -> { }, seconds -> { });
+    }
+
+    public RunOptions whenReady(Consumer<Mission> action) {
+        return new RunOptions(timeout, journal, trace, output, classes, action, progress);
     }
 
     public RunOptions withTimeout(Duration newTimeout) {
-        return new RunOptions(newTimeout, journal, trace, output, classes, progress);
+        return new RunOptions(newTimeout, journal, trace, output, classes, ready, progress);
     }
 
     public RunOptions withJournal(Appendable sink) {
-        return new RunOptions(timeout, sink, trace, output, classes, progress);
+        return new RunOptions(timeout, sink, trace, output, classes, ready, progress);
     }
 
     public RunOptions withTrace(Trace newTrace) {
-        return new RunOptions(timeout, journal, newTrace, output, classes, progress);
+        return new RunOptions(timeout, journal, newTrace, output, classes, ready, progress);
     }
 
     public RunOptions withOutput(Path folder) {
-        return new RunOptions(timeout, journal, trace, Optional.of(folder), classes, progress);
+        return new RunOptions(timeout, journal, trace, Optional.of(folder), classes, ready, progress);
     }
 
     public RunOptions withClasses(ClassLoader loader) {
-        return new RunOptions(timeout, journal, trace, output, loader, progress);
+        return new RunOptions(timeout, journal, trace, output, loader, ready, progress);
     }
 
     public RunOptions withProgress(DoubleConsumer simulatedSeconds) {
-        return new RunOptions(timeout, journal, trace, output, classes, simulatedSeconds);
+        return new RunOptions(timeout, journal, trace, output, classes, ready, simulatedSeconds);
     }
 }
