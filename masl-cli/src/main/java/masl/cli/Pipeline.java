@@ -1,6 +1,8 @@
 package masl.cli;
 
+import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
 import java.util.Map;
 import java.util.Optional;
 import masl.runtime.descriptor.AgentPath;
@@ -28,14 +30,30 @@ final class Pipeline {
     private Pipeline() {
     }
 
-    /** Runs the pipeline on {@code source}, its diagnostics to {@code err}; null when it has errors. */
-    static Loaded load(SourceFile source, AgentPath agentPath, PrintStream err) {
-        Translation translation = new Translator(agentPath).translate(source);
-        err.print(diagnostics(source, translation));
+    /**
+     * Runs the pipeline on {@code source}, its diagnostics to {@code err}; null when it has errors.
+     * Translating and compiling each say so through {@code progress} when they take long.
+     */
+    static Loaded load(SourceFile source, AgentPath agentPath, PrintStream err, Progress progress) {
+        Translation translation;
+        progress.begin(elapsed -> "masl: translating " + source.name() + " (" + Progress.seconds(elapsed) + ")");
+        try {
+            translation = new Translator(agentPath).translate(source);
+        } finally {
+            progress.end();
+        }
+        new DiagnosticPrinter(Map.of(source.name(), source.text())).print(translation.diagnostics().sorted(), err);
         if (!translation.succeeded()) {
             return null;
         }
-        return new Loaded(translation, MissionLoader.load(translation, agentPath));
+        int classes = translation.javaSources().size();
+        progress.begin(elapsed -> "masl: compiling the Java generated for " + source.name() + " (" + classes
+                + (classes == 1 ? " class, " : " classes, ") + Progress.seconds(elapsed) + ")");
+        try {
+            return new Loaded(translation, MissionLoader.load(translation, agentPath));
+        } finally {
+            progress.end();
+        }
     }
 
     /**
@@ -44,28 +62,29 @@ final class Pipeline {
      * again), without translating or compiling; otherwise the pipeline runs and stores what it
      * compiled. Null when the program has errors.
      */
-    static MissionLoader loadForRun(SourceFile source, AgentPath agentPath, PrintStream err, CompiledMissionCache cache) {
+    static MissionLoader loadForRun(SourceFile source, AgentPath agentPath, PrintStream err, Progress progress,
+            CompiledMissionCache cache) {
         String key = cache.keyOf(source, agentPath);
         Optional<CompiledMission> cached = cache.lookup(key);
         if (cached.isPresent()) {
             err.print(cached.get().diagnostics());
             return MissionLoader.ofCompiled(cached.get().missionClassName(), cached.get().classFiles(), agentPath);
         }
-        Translation translation = new Translator(agentPath).translate(source);
-        String diagnostics = diagnostics(source, translation);
-        err.print(diagnostics);
-        if (!translation.succeeded()) {
+        ByteArrayOutputStream printed = new ByteArrayOutputStream();
+        Loaded loaded;
+        try {
+            loaded = load(source, agentPath, new PrintStream(printed, true, StandardCharsets.UTF_8), progress);
+        } finally {
+            err.print(printed.toString(StandardCharsets.UTF_8));
+        }
+        if (loaded == null) {
             return null;
         }
-        MissionLoader loader = MissionLoader.load(translation, agentPath);
         // What was read while translating must still be what the key was made of.
         if (key != null && key.equals(cache.keyOf(source, agentPath))) {
-            cache.store(key, new CompiledMission(loader.missionClassName(), loader.classFiles(), diagnostics));
+            cache.store(key, new CompiledMission(loaded.loader().missionClassName(), loaded.loader().classFiles(),
+                    printed.toString(StandardCharsets.UTF_8)));
         }
-        return loader;
-    }
-
-    private static String diagnostics(SourceFile source, Translation translation) {
-        return new DiagnosticPrinter(Map.of(source.name(), source.text())).report(translation.diagnostics().sorted());
+        return loaded.loader();
     }
 }

@@ -34,12 +34,14 @@ final class RunCommand {
 
     private final PrintStream out;
     private final PrintStream err;
+    private final Progress progress;
     private final CompiledMissionCache cache;
 
-    /** @param cache where compiled missions are kept between runs; null for none */
-    RunCommand(PrintStream out, PrintStream err, CompiledMissionCache cache) {
+    /** @param cache where compiled missions are kept between runs */
+    RunCommand(PrintStream out, PrintStream err, Progress progress, CompiledMissionCache cache) {
         this.out = out;
         this.err = err;
+        this.progress = progress;
         this.cache = cache;
     }
 
@@ -113,12 +115,12 @@ final class RunCommand {
 
     /** The compiled program, from the cache unless --no-cache; null when it has errors. */
     private MissionLoader load(CommandLine line, SourceFile source, AgentPath agentPath) {
-        if (line.noCache || cache == null) {
-            Pipeline.Loaded compiled = Pipeline.load(source, agentPath, err);
+        if (line.noCache) {
+            Pipeline.Loaded compiled = Pipeline.load(source, agentPath, err, progress);
             return compiled == null ? null : compiled.loader();
         }
         cache.unusable().ifPresent(reason -> err.println("masl: not using the cache of compiled missions: " + reason));
-        return Pipeline.loadForRun(source, agentPath, err, cache);
+        return Pipeline.loadForRun(source, agentPath, err, progress, cache);
     }
 
     /** Runs the mission; a signal stops it ({@link StopOnSignal}). */

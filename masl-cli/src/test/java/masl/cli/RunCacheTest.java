@@ -52,8 +52,9 @@ class RunCacheTest {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         InputStream noInput = new ByteArrayInputStream(new byte[0]);
-        int status = new Masl(noInput, new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8), Map.of("MASL_CACHE_DIR", cache().toString())).run(args);
+        Masl masl = new Masl(noInput, new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8), Map.of("MASL_CACHE_DIR", cache().toString()));
+        int status = masl.withoutProgress().run(args);
         return new Run(status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
     }
 
