@@ -43,7 +43,7 @@ public final class EventPlanner {
     /**
      * Takes every occurrence perceived so far and plans the reactions of the blocks of
      * {@code chain} (innermost first); occurrences without one go to {@code dropped}. Returns the
-     * processing, its first reaction still to take ({@link #next}), or null if nothing reacts.
+     * processing, its first reaction still to take ({@link ReactionRun#next}), or null if nothing reacts.
      *
      * @param interruptedPc where the interrupted boundary continues
      * @param barrierDue whether that boundary still owes the synchronisation barrier (§5 step 3)
