@@ -112,6 +112,8 @@ public final class Mission {
     /** How long a primitive may run before its caller gets {@code timeout}; null: no limit. */
     private final Duration callTimeout;
     private volatile boolean stopped;
+    /** Why {@link #stop(String)} stopped the mission, for its {@code mission-ended} record; null if not said. */
+    private volatile String stopReason;
     /** Wake-ups counted and pending, for the deadlock watchdog. */
     private final WakeUps wakeUps;
     /** {@link #run} has seen the end (whatever it was) and is stopping the scheduler. */
@@ -175,7 +177,8 @@ public final class Mission {
         scheduler.start(agents);
         MissionOutcome.Status status = awaitEnd(timeout);
         over = true;
-        trace.record(new TraceEvent.MissionEnded(scheduler.nanoTime(), status.name().toLowerCase(Locale.ROOT)));
+        trace.record(new TraceEvent.MissionEnded(scheduler.nanoTime(), status.name().toLowerCase(Locale.ROOT),
+                status == MissionOutcome.Status.STOPPED ? stopReason : null));
         String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
         scheduler.shutdown();
         primitives.shutdownNow();
@@ -236,6 +239,17 @@ public final class Mission {
     public void stop() {
         stopped = true;
         ended.countDown();
+    }
+
+    /**
+     * Stops the mission as {@link #stop()} does, saying why: the {@code mission-ended} record of the
+     * trace carries {@code reason} (the first one given, if stopped more than once).
+     */
+    public void stop(String reason) {
+        if (stopReason == null) {
+            stopReason = Objects.requireNonNull(reason, "reason");
+        }
+        stop();
     }
 
     public Journal journal() {

@@ -128,6 +128,7 @@ public final class ScenarioRunner {
         }
         program.configure(builder, spec -> implementations.get(spec.name()));
         Mission mission = builder.build();
+        options.ready().accept(mission);
 
         // The recorder first: events of a step's listeners are stamped with that step's time.
         world.addStepListener(recorder);
