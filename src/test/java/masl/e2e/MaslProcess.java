@@ -13,7 +13,8 @@ import masl.cli.Main;
 /**
  * The {@code masl} command as a process of its own ({@code java -cp CLASSPATH masl.cli.Main …}, the
  * class path this test runs with), for what only a real process shows: signals, standard output
- * that fails. Its standard error goes to a file; {@link #close()} ends it in any case.
+ * that fails. Its standard error goes to a file; {@link #close()} ends it in any case. A test that
+ * reads standard error as the diagnostics alone runs with {@code --quiet} (no progress lines).
  */
 final class MaslProcess implements AutoCloseable {
 

@@ -97,6 +97,8 @@ public final class Mission {
     public static final Duration WATCHDOG_PERIOD = Duration.ofMillis(100);
 
     private final List<Agent> agents;
+    /** The agents' MASL names by proxy id, for the trace. */
+    private final List<String> agentNames;
     private final Map<EntryDefinition, Entry> entries;
     private final Scheduler scheduler;
     private final Journal journal;
@@ -145,6 +147,7 @@ public final class Mission {
             created.add(declaration.create(created.size(), this));
         }
         agents = Collections.unmodifiableList(created);
+        agentNames = builder.agents.stream().map(Builder.AgentDeclaration::name).toList();
         running = new AtomicInteger(agents.size());
         coordinator.addAgents(agents);
     }
@@ -174,6 +177,7 @@ public final class Mission {
         if (agents.isEmpty()) {
             ended.countDown();
         }
+        trace.record(new TraceEvent.MissionStarted(scheduler.nanoTime(), agentNames));
         scheduler.start(agents);
         MissionOutcome.Status status = awaitEnd(timeout);
         over = true;
