@@ -78,7 +78,8 @@ class TwoJvmJadeExamplesTest {
             MaslCommand run = MaslCommand.run("run", "src/test/resources/examples/" + example, "--platform", "jade",
                     "--port", String.valueOf(port), "--place", placement, "--timeout", "60",
                     "--secret-file", secretFile.toString());
-            assertEquals("", run.err(), container.output());
+            assertEquals("masl: platform ready: host=127.0.0.1 port=" + port + " platform=127.0.0.1:" + port + "/JADE\n",
+                    run.err(), container.output());
             assertEquals(0, run.status(), container.output());
             assertEquals(List.of(), JadeThreads.live(), "JADE threads left in this JVM after the mission");
             assertFalse(Files.exists(secretFile), "the mission's secret outlived it");

@@ -13,8 +13,10 @@ import java.util.concurrent.atomic.AtomicReference;
 import masl.jade.JadeException;
 import masl.jade.JadeLauncher;
 import masl.jade.JadeOptions;
+import masl.jade.JadePlatform;
 import masl.jade.MissionSecret;
 import masl.jade.Placement;
+import masl.jade.Readiness;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
@@ -30,7 +32,8 @@ import masl.translator.source.SourceFile;
  * {@code --main-host}/{@code --main-port}; with {@code --place}, the bodies of the agents named run in
  * the containers named ({@code masl container}), their programs here. The journal, timeout, trace,
  * Ctrl-C and outcome are those of an in-process run; a platform that cannot start or be joined, or a
- * container that does not join, ends the run as a failed mission.
+ * container that does not join, ends the run as a failed mission. Once the platform accepts containers,
+ * one line on standard error says where ({@link Readiness#platform}).
  */
 final class JadeRun {
 
@@ -41,13 +44,14 @@ final class JadeRun {
     private final Path secretFile;
     private final Duration callTimeout;
     private final PrintStream out;
+    private final PrintStream err;
 
     /**
      * @throws UsageException if the command line asks for something JADE runs cannot do: a scheduler
      *                        of its own ({@code --threads}, {@code --seed}), or half a main address
      */
-    JadeRun(CommandLine line, SourceFile source, AgentPath agentPath, MissionLoader loaded, PrintStream out)
-            throws UsageException {
+    JadeRun(CommandLine line, SourceFile source, AgentPath agentPath, MissionLoader loaded, PrintStream out,
+            PrintStream err) throws UsageException {
         if (line.threads || line.seed != null) {
             throw new UsageException("--platform jade runs each agent in a JADE behaviour of its own:"
                     + " --threads and --seed are for --platform inproc");
@@ -71,6 +75,7 @@ final class JadeRun {
         this.secretFile = Path.of(line.secretFile == null ? CommandLine.DEFAULT_SECRET_FILE : line.secretFile);
         this.callTimeout = line.callTimeoutMillis == null ? null : Duration.ofMillis(line.callTimeoutMillis);
         this.out = out;
+        this.err = err;
     }
 
     /** {@code --place}: pairs or a file, naming agents the program declares. */
@@ -118,7 +123,11 @@ final class JadeRun {
             if (!placement.isEmpty()) {
                 launcher.secret(shareSecret());
             }
-            return launcher.run(options, timeout);
+            try (JadePlatform platform = JadePlatform.start(options)) {
+                err.println(Readiness.platform(platform));
+                err.flush();
+                return launcher.run(platform, timeout);
+            }
         } catch (IOException unwritable) {
             return failed(new JadeException("cannot write the mission's secret for its containers to " + secretFile
                     + ": " + unwritable.getMessage()), MissionOutcome.Status.FAILED);

@@ -55,7 +55,7 @@ final class RunCommand {
         MissionLoader loaded = compiled.loader();
         Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
         if (line.platform.equals("jade")) {
-            JadeRun jade = new JadeRun(line, source, agentPath, loaded, out);
+            JadeRun jade = new JadeRun(line, source, agentPath, loaded, out, err);
             Writer trace = openTrace(line.traceFile);
             try {
                 return report(jade.run(trace == null ? null : new JsonLinesTrace(trace), timeout), null);
