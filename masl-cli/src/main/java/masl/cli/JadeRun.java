@@ -114,6 +114,7 @@ final class JadeRun {
                 .implementations(loaded::newImplementation)
                 .place(placement)
                 .journal(out)
+                .problems(problem -> err.println("masl: " + problem))
                 .trace(trace == null ? Trace.NONE : trace)
                 .whenReady(mission -> stopper.set(stopOnCtrlC(mission)));
         try {
