@@ -55,11 +55,6 @@ final class FipaBody implements BodyStub {
         this.problems = problems;
     }
 
-    /** The FIPA agent found for this agent: set before the mission starts. */
-    void peer(AID found) {
-        this.peer = found;
-    }
-
     @Override
     public Object call(int index, Object[] args) {
         Method method = methods.get(index);
@@ -75,6 +70,11 @@ final class FipaBody implements BodyStub {
                     + ACLMessage.getPerformative(answer.getPerformative()) + " to " + primitive + ": "
                     + answer.getContent());
         }
+    }
+
+    /** The FIPA agent found for this agent: set before the mission starts. */
+    void peer(AID found) {
+        this.peer = found;
     }
 
     private ACLMessage request(String primitive, List<Object> args) {

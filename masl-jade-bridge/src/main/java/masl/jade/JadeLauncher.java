@@ -208,8 +208,9 @@ public final class JadeLauncher {
         List<AgentImplementation> created = new ArrayList<>();
         ThreadedBehaviourScheduler scheduler = new ThreadedBehaviourScheduler();
         // FIPA agents may invoke primitives at any time: a busy-wait may end on a request.
+        EventSubscribers subscribers = new EventSubscribers(names);
         Mission.Builder builder = Mission.builder().scheduler(scheduler).openToOutsideInvocations()
-                .trace(distribution == null ? trace : distribution.sendingEvents(trace, names));
+                .trace(subscribers.forwarding(distribution == null ? trace : distribution.sendingEvents(trace, names)));
         if (journal != null) {
             builder.journal(journal);
         }
@@ -255,7 +256,8 @@ public final class JadeLauncher {
                 hosts.add(externals.host(id));
                 continue;
             }
-            MaslJadeAgent host = new MaslJadeAgent(id, created.get(id), tables.get(id), mission, outside, ready);
+            MaslJadeAgent host = new MaslJadeAgent(id, created.get(id), tables.get(id), mission, outside, subscribers,
+                    ready);
             controllers.add(create(platform, names.get(id), host));
             locals.add(host);
             hosts.add(host);

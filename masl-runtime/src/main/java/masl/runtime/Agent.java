@@ -859,6 +859,12 @@ final class Agent implements AgentContext, AgentTask {
         return true;
     }
 
+    /** Whether the current state lets an agent outside the mission read {@code attribute} (its r bit for o). */
+    boolean othersMayRead(String attribute) {
+        return Permeability.allows(permeability.current(), permeability.attributeId(attribute),
+                PermeabilityState.Requester.OTHER, PermeabilityState.READ);
+    }
+
     private boolean permitsAttribute(Agent requester, String attribute, int permission) {
         return Permeability.allows(permeability.current(), permeability.attributeId(attribute),
                 relationOf(requester, permeability.isStaticAttribute(attribute)), permission);

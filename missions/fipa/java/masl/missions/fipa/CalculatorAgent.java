@@ -3,13 +3,10 @@ package masl.missions.fipa;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import jade.core.Agent;
-import jade.domain.DFService;
-import jade.domain.FIPAAgentManagement.DFAgentDescription;
 import jade.domain.FIPAAgentManagement.FailureException;
 import jade.domain.FIPAAgentManagement.NotUnderstoodException;
 import jade.domain.FIPAAgentManagement.RefuseException;
 import jade.domain.FIPAAgentManagement.ServiceDescription;
-import jade.domain.FIPAException;
 import jade.domain.FIPANames;
 import jade.lang.acl.ACLMessage;
 import jade.lang.acl.MessageTemplate;
@@ -30,18 +27,13 @@ public class CalculatorAgent extends Agent {
 
     @Override
     protected void setup() {
-        DFAgentDescription description = new DFAgentDescription();
-        description.setName(getAID());
         ServiceDescription service = new ServiceDescription();
         service.setType("calculator");
         service.setName("integer arithmetic");
         service.addProtocols(FIPANames.InteractionProtocol.FIPA_REQUEST);
         service.addLanguages("json");
         service.addOntologies("arithmetic");
-        description.addServices(service);
-        try {
-            DFService.register(this, description);
-        } catch (FIPAException e) {
+        if (!Directory.register(this, service)) {
             doDelete();
             return;
         }
@@ -50,11 +42,7 @@ public class CalculatorAgent extends Agent {
 
     @Override
     protected void takeDown() {
-        try {
-            DFService.deregister(this);
-        } catch (FIPAException e) {
-            // The platform is going away with its DF.
-        }
+        Directory.deregister(this);
     }
 
     private static final class Responder extends AchieveREResponder {

@@ -1,10 +1,7 @@
 package masl.missions.fipa;
 
 import jade.core.Agent;
-import jade.domain.DFService;
-import jade.domain.FIPAAgentManagement.DFAgentDescription;
 import jade.domain.FIPAAgentManagement.ServiceDescription;
-import jade.domain.FIPAException;
 import jade.core.behaviours.CyclicBehaviour;
 import jade.lang.acl.ACLMessage;
 import jade.lang.acl.MessageTemplate;
@@ -19,15 +16,10 @@ public class GreeterAgent extends Agent {
 
     @Override
     protected void setup() {
-        DFAgentDescription description = new DFAgentDescription();
-        description.setName(getAID());
         ServiceDescription service = new ServiceDescription();
         service.setType("greeting");
         service.setName("greetings in plain text");
-        description.addServices(service);
-        try {
-            DFService.register(this, description);
-        } catch (FIPAException e) {
+        if (!Directory.register(this, service)) {
             doDelete();
             return;
         }
@@ -57,10 +49,6 @@ public class GreeterAgent extends Agent {
 
     @Override
     protected void takeDown() {
-        try {
-            DFService.deregister(this);
-        } catch (FIPAException e) {
-            // The platform is going away with its DF.
-        }
+        Directory.deregister(this);
     }
 }
