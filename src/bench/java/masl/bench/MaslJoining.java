@@ -6,7 +6,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
 import masl.runtime.Mission;
-import masl.runtime.PoolScheduler;
+import masl.runtime.scheduling.PoolScheduler;
 import masl.runtime.trace.TraceEvent;
 import masl.translator.MissionLoader;
 

@@ -5,7 +5,7 @@ import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
 import masl.runtime.Mission;
-import masl.runtime.PoolScheduler;
+import masl.runtime.scheduling.PoolScheduler;
 import masl.translator.MissionLoader;
 
 /**

@@ -3,12 +3,27 @@ package masl.e2e;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.File;
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import masl.e2e.agents.HomeOnly;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
 
-/** {@code masl run} on the project's own missions, as the README shows it. */
-@Timeout(120)
+/** {@code masl run} on the project's own missions, as the README shows it, and as a process a user stops. */
+@Timeout(180)
 class CommandLineTest {
+
+    @TempDir
+    Path folder;
 
     @Test
     void helloPrintsOneGreetingFromOneOfItsThreeAgents() {
@@ -16,5 +31,109 @@ class CommandLineTest {
         assertEquals(0, run.status(), run.err());
         assertTrue(run.out().matches("Hello from agent [012]\n"), run.out());
         assertEquals("", run.err());
+    }
+
+    /**
+     * SIGTERM (what {@code Process.destroy()} sends, and {@code kill}) or Ctrl-C while the mission
+     * runs: the trace is flushed and closed, its last line a whole {@code mission-ended} record
+     * saying why, one line on standard error, status 128 + 15.
+     */
+    @Test
+    void sigtermEndsTheTraceWithMissionEndedAndPrintsOneLine() throws Exception {
+        Path program = folder.resolve("ticking.masl");
+        Files.writeString(program, """
+                import Default.xml as Default;
+                Default a, b = newAgent(Default);
+                asynchronous entry main (true) {
+                  asynchronous entry tick (true) {
+                    .nop();
+                    reelect;
+                  }
+                }
+                """);
+        Path trace = folder.resolve("trace.jsonl");
+        try (MaslProcess masl = MaslProcess.start(folder.resolve("journal.txt").toFile(), "run", program.toString(),
+                "--trace", trace.toString())) {
+            awaitRecords(trace, masl);
+            masl.process().destroy();
+            assertEquals(143, masl.awaitExit(), masl::toString);
+            assertEquals("masl: the mission was stopped by a signal: Ctrl-C (SIGINT) or SIGTERM\n", masl.err());
+        }
+        String text = Files.readString(trace);
+        assertTrue(text.endsWith("}\n"), () -> "cut mid-record: " + text.substring(Math.max(0, text.length() - 200)));
+        List<String> lines = text.lines().toList();
+        ObjectMapper json = new ObjectMapper();
+        for (String line : lines) {
+            json.readTree(line);
+        }
+        JsonNode last = json.readTree(lines.get(lines.size() - 1));
+        assertEquals("mission-ended", last.get("event").asText(), last::toString);
+        assertEquals("stopped", last.get("status").asText(), last::toString);
+        assertEquals("a signal: Ctrl-C (SIGINT) or SIGTERM", last.get("reason").asText(), last::toString);
+    }
+
+    /** {@code masl run hello.masl > /dev/full}: the journal is lost, so the run fails and says so. */
+    @Test
+    void aJournalThatCannotBeWrittenFailsTheRun() throws Exception {
+        File full = new File("/dev/full");
+        assertTrue(full.exists(), "this test needs Linux's /dev/full");
+        try (MaslProcess masl = MaslProcess.start(full, "run", "missions/hello.masl")) {
+            assertEquals(2, masl.awaitExit(), masl::toString);
+            assertEquals("masl: cannot write the journal to standard output\n", masl.err());
+        }
+    }
+
+    /** JADE prints the stack traces of a failed join on standard error: the user sees one line instead. */
+    @Test
+    void joiningAPlatformWhoseMainContainerIsNotThereIsOneLine() throws Exception {
+        int port = freePort();
+        try (MaslProcess masl = MaslProcess.start(folder.resolve("journal.txt").toFile(), "run", "missions/hello.masl",
+                "--platform", "jade", "--main-host", "127.0.0.1", "--main-port", String.valueOf(port))) {
+            assertEquals(2, masl.awaitExit(), masl::toString);
+            assertEquals("masl: cannot join the JADE platform at 127.0.0.1:" + port + " (is its main container running?)\n",
+                    masl.err());
+        }
+    }
+
+    /**
+     * {@code masl container} on a host where the class of the agent placed there cannot be
+     * initialised: each side says so in one line, what the class threw included, with status 2.
+     */
+    @Test
+    void aContainerThatCannotHostItsAgentIsOneLineOnEachSide() throws Exception {
+        String port = String.valueOf(freePort());
+        String secret = folder.resolve("secret").toString();
+        String why = "masl: container c2 cannot host b: class masl.e2e.agents.HomeOnly: its static initialiser threw"
+                + " java.lang.IllegalStateException: no robot on this host\n";
+        try (MaslProcess container = MaslProcess.start(Map.of(HomeOnly.NO_ROBOT, "yes"),
+                folder.resolve("container.txt").toFile(), "container", "--main-host", "127.0.0.1", "--main-port", port,
+                "--name", "c2", "--agent-path", "src/test/resources/faults/agents", "--timeout", "60",
+                "--secret-file", secret);
+                MaslProcess run = MaslProcess.start(folder.resolve("journal.txt").toFile(), "run",
+                        "src/test/resources/faults/home_only.masl", "--platform", "jade", "--port", port, "--place", "b=c2",
+                        "--timeout", "60", "--secret-file", secret)) {
+            assertEquals(2, run.awaitExit(), run::toString);
+            assertEquals("masl: platform ready: host=127.0.0.1 port=" + port + " platform=127.0.0.1:" + port + "/JADE\n"
+                    + why, run.err());
+            assertEquals(2, container.awaitExit(), container::toString);
+            assertEquals(why, container.err());
+        }
+    }
+
+    private static int freePort() throws IOException {
+        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
+            return socket.getLocalPort();
+        }
+    }
+
+    /** Waits until the trace file has records on disk: the mission runs (the writer flushes its buffer as it fills). */
+    private static void awaitRecords(Path trace, MaslProcess masl) throws IOException, InterruptedException {
+        long deadline = System.nanoTime() + 120_000_000_000L;
+        while (!Files.exists(trace) || Files.size(trace) == 0) {
+            if (!masl.process().isAlive() || System.nanoTime() - deadline > 0) {
+                throw new AssertionError("no trace records from the running mission: " + masl.err());
+            }
+            Thread.sleep(50);
+        }
     }
 }

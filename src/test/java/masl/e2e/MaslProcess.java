@@ -1,73 +1,79 @@
 package masl.e2e;
 
 import java.io.BufferedReader;
+import java.io.File;
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import java.util.function.Consumer;
 import java.util.function.Function;
 import masl.cli.Main;
 
 /**
- * The {@code masl} command in a child JVM (this class path, the {@code java} of {@code java.home}), its
- * standard error readable line by line as it comes, so that a test can wait for a line (readiness) while
- * the command runs. {@link #close()} ends the JVM in any case.
+ * The {@code masl} command as a process of its own ({@code java -cp CLASSPATH masl.cli.Main …}, the
+ * class path this test runs with), for what only a real process shows: signals, standard output
+ * that fails, a line another JVM waits for. Its standard error is read line by line as it comes
+ * ({@link #awaitErrLine}); {@link #close()} ends it in any case.
  */
 final class MaslProcess implements AutoCloseable {
 
     private static final String END = new String("end of standard error");
 
     private final Process process;
-    private final LinkedBlockingQueue<String> errLines = new LinkedBlockingQueue<>();
-    private final StringBuffer out = new StringBuffer();
     private final StringBuffer err = new StringBuffer();
-    private final Thread outReader;
+    private final LinkedBlockingQueue<String> errLines = new LinkedBlockingQueue<>();
     private final Thread errReader;
 
     private MaslProcess(Process process) {
         this.process = process;
-        this.outReader = reader(process.getInputStream(), line -> out.append(line).append('\n'), () -> { });
-        this.errReader = reader(process.getErrorStream(), line -> {
-            err.append(line).append('\n');
-            errLines.add(line);
-        }, () -> errLines.add(END));
+        this.errReader = new Thread(this::readErr, "masl-process-stderr");
+        errReader.setDaemon(true);
+        errReader.start();
     }
 
-    static MaslProcess start(String... arguments) throws IOException {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
-                .toString(), "-cp", System.getProperty("java.class.path"), Main.class.getName()));
+    /** Starts {@code masl ARGUMENTS} with standard output written to {@code out}. */
+    static MaslProcess start(File out, String... arguments) throws IOException {
+        return start(Map.of(), out, arguments);
+    }
+
+    /** Starts {@code masl ARGUMENTS} with {@code environment} added to this JVM's, standard output written to {@code out}. */
+    static MaslProcess start(Map<String, String> environment, File out, String... arguments) throws IOException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), Main.class.getName()));
         command.addAll(List.of(arguments));
-        return new MaslProcess(new ProcessBuilder(command).start());
+        ProcessBuilder builder = new ProcessBuilder(command).redirectOutput(out);
+        builder.environment().putAll(environment);
+        return new MaslProcess(builder.start());
     }
 
-    private static Thread reader(InputStream stream, Consumer<String> lines, Runnable atEnd) {
-        Thread thread = new Thread(() -> {
-            try (BufferedReader reader = new BufferedReader(new InputStreamReader(stream, StandardCharsets.UTF_8))) {
-                for (String line = reader.readLine(); line != null; line = reader.readLine()) {
-                    lines.accept(line);
-                }
-            } catch (IOException closed) {
-                // The process was ended: what it wrote so far is kept.
-            } finally {
-                atEnd.run();
+    private void readErr() {
+        try (BufferedReader reader = new BufferedReader(new InputStreamReader(process.getErrorStream(),
+                StandardCharsets.UTF_8))) {
+            for (String line = reader.readLine(); line != null; line = reader.readLine()) {
+                err.append(line).append('\n');
+                errLines.add(line);
             }
-        }, "masl-process-reader");
-        thread.setDaemon(true);
-        thread.start();
-        return thread;
+        } catch (IOException closed) {
+            // The process was ended: what it wrote so far is kept.
+        } finally {
+            errLines.add(END);
+        }
+    }
+
+    Process process() {
+        return process;
     }
 
     /**
-     * The first line of standard error (from the next one not read yet) that {@code reading} makes
-     * something of; empty if the process closed its standard error or {@code timeout} elapsed first.
+     * The first line of standard error, from the next one not taken yet, that {@code reading} makes
+     * something of; empty if standard error closed or {@code timeout} elapsed first.
      */
     <T> Optional<T> awaitErrLine(Function<String, Optional<T>> reading, Duration timeout) throws InterruptedException {
         long deadline = System.nanoTime() + timeout.toNanos();
@@ -83,32 +89,29 @@ final class MaslProcess implements AutoCloseable {
         }
     }
 
-    /** Waits for the process to end and its output to be read; its exit status, or -1 if it did not end in time. */
-    int awaitExit(Duration timeout) throws InterruptedException {
-        if (!process.waitFor(timeout.toMillis(), TimeUnit.MILLISECONDS)) {
-            return -1;
+    /** Waits until it ends, at most a minute, and its standard error is read; its exit status. */
+    int awaitExit() throws InterruptedException {
+        if (!process.waitFor(60, TimeUnit.SECONDS)) {
+            throw new AssertionError("masl did not end within a minute");
         }
-        outReader.join(timeout.toMillis());
-        errReader.join(timeout.toMillis());
+        errReader.join(TimeUnit.SECONDS.toMillis(60));
         return process.exitValue();
     }
 
-    String out() {
-        return out.toString();
-    }
-
+    /** What it printed on standard error so far (all of it after {@link #awaitExit()}). */
     String err() {
         return err.toString();
+    }
+
+    /** What it printed on standard error, for assertion messages. */
+    @Override
+    public String toString() {
+        return "standard error:\n" + err();
     }
 
     @Override
     public void close() throws InterruptedException {
         process.destroyForcibly();
         process.waitFor(10, TimeUnit.SECONDS);
-    }
-
-    @Override
-    public String toString() {
-        return "stdout:\n" + out + "stderr:\n" + err;
     }
 }

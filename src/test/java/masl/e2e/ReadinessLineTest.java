@@ -26,7 +26,8 @@ class ReadinessLineTest {
     @Test
     void aSecondJvmJoinsThePlatformAtTheAddressOfItsReadinessLine() throws Exception {
         Path secretFile = Files.createTempDirectory("masl-mission").resolve("secret");
-        try (MaslProcess run = MaslProcess.start("run", "src/test/resources/examples/e2_shared_and_local.masl",
+        Path journal = secretFile.resolveSibling("journal.txt");
+        try (MaslProcess run = MaslProcess.start(journal.toFile(), "run", "src/test/resources/examples/e2_shared_and_local.masl",
                 "--platform", "jade", "--place", "b=c2,d=c2", "--timeout", "60", "--secret-file",
                 secretFile.toString())) {
             Optional<Readiness> platform = run.awaitErrLine(Readiness::parse, WITHIN);
@@ -44,12 +45,13 @@ class ReadinessLineTest {
                     new AssertionError("not one readiness line:\n" + container));
             assertEquals(new Readiness(Optional.of("c2"), platform.get().host(), platform.get().port(),
                     platform.get().platform(), List.of("b", "d")), placed);
-            assertEquals(0, run.awaitExit(WITHIN), run.toString());
-            assertEquals("n=5\n" + "mine=1\n".repeat(5), run.out());
+            assertEquals(0, run.awaitExit(), run.toString());
+            assertEquals("n=5\n" + "mine=1\n".repeat(5), Files.readString(journal));
             assertEquals(List.of("masl: platform ready: host=127.0.0.1 port=" + platform.get().port() + " platform="
                     + platform.get().platform()), run.err().lines().toList());
         } finally {
             Files.deleteIfExists(secretFile);
+            Files.deleteIfExists(journal);
             Files.delete(secretFile.getParent());
         }
     }

@@ -21,6 +21,11 @@ final class CommandLine {
             "timeline", Set.of("-o"),
             "lsp", Set.of("--agent-path"));
     private static final Set<String> FLAGS = Set.of("--threads");
+    /**
+     * The longest {@code --timeout}: ten years, within the nanosecond arithmetic of deadlines
+     * ({@code Long.MAX_VALUE} ns is 292 years), and longer than any mission.
+     */
+    static final long MAX_TIMEOUT_SECONDS = 3650L * 24 * 60 * 60;
     /** Where {@code masl run --place} writes the mission's secret and {@code masl container} reads it, by default. */
     static final String DEFAULT_SECRET_FILE = ".masl-mission-secret";
 
@@ -91,9 +96,9 @@ final class CommandLine {
             case "--sim" -> scenarioFile = value;
             case "-o" -> outputFile = value;
             case "--trace" -> traceFile = value;
-            case "--seed" -> seed = number(option, value, Long.MIN_VALUE);
-            case "--timeout" -> timeoutSeconds = number(option, value, 1);
-            case "--call-timeout" -> callTimeoutMillis = number(option, value, 1);
+            case "--seed" -> seed = number(option, value, Long.MIN_VALUE, Long.MAX_VALUE);
+            case "--timeout" -> timeoutSeconds = number(option, value, 1, MAX_TIMEOUT_SECONDS);
+            case "--call-timeout" -> callTimeoutMillis = number(option, value, 1, MAX_TIMEOUT_SECONDS * 1000);
             case "--platform" -> platform = oneOf(option, value, "inproc", "jade");
             case "--main-host" -> mainHost = value;
             case "--main-port" -> mainPort = port(option, value);
@@ -115,23 +120,27 @@ final class CommandLine {
     }
 
     private static int port(String option, String value) throws UsageException {
-        long port = number(option, value, 1);
-        if (port > 65535) {
-            throw new UsageException(option + " must be at most 65535, got " + value);
-        }
-        return (int) port;
+        return (int) number(option, value, 1, 65535);
     }
 
-    private static long number(String option, String value, long minimum) throws UsageException {
+    private static long number(String option, String value, long minimum, long maximum) throws UsageException {
+        long number;
         try {
-            long number = Long.parseLong(value);
-            if (number < minimum) {
-                throw new UsageException(option + " must be at least " + minimum + ", got " + value);
-            }
-            return number;
+            number = Long.parseLong(value);
         } catch (NumberFormatException notANumber) {
+            if (value.matches("[+-]?[0-9]+")) {
+                throw new UsageException(option + " must be " + (value.startsWith("-") ? "at least " + minimum
+                        : "at most " + maximum) + ", got " + value);
+            }
             throw new UsageException(option + " needs a whole number, got '" + value + "'");
         }
+        if (number < minimum) {
+            throw new UsageException(option + " must be at least " + minimum + ", got " + value);
+        }
+        if (number > maximum) {
+            throw new UsageException(option + " must be at most " + maximum + ", got " + value);
+        }
+        return number;
     }
 
     String singleFile() throws UsageException {

@@ -1,6 +1,5 @@
 package masl.cli;
 
-import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -59,6 +58,10 @@ final class ContainerCommand {
                         + " s");
                 return Masl.MISSION_FAILED;
             }
+            if (container.unhosted().isPresent()) {
+                err.println("masl: " + container.unhosted().get());
+                return Masl.MISSION_FAILED;
+            }
             if (container.lostPlatform().isPresent()) {
                 err.println("masl: container " + line.containerName + ": " + container.lostPlatform().get()
                         + "; its bodies were deleted");
@@ -79,16 +82,13 @@ final class ContainerCommand {
 
     /**
      * Joins, retrying for {@value #JOIN_SECONDS} s while the main container does not answer yet (it
-     * may start after this command, and its port opens a moment before it accepts containers). A
-     * JADE join that fails prints stack traces of its own on standard error: they are kept out of
-     * sight while retrying (this command's JVM runs nothing else), and the last failure is reported
-     * in one line. The port is not probed with a bare connection: JADE would log that as an error.
+     * may start after this command, and its port opens a moment before it accepts containers); the
+     * last failure is reported in one line. The port is not probed with a bare connection: JADE
+     * would log that as an error.
      */
     private MaslContainer join(CommandLine line, DescriptorLoader descriptors) throws InterruptedException {
         long deadline = System.nanoTime() + Duration.ofSeconds(JOIN_SECONDS).toNanos();
         while (true) {
-            PrintStream standardError = System.err;
-            System.setErr(new PrintStream(OutputStream.nullOutputStream()));
             try {
                 return MaslContainer.start(JadeOptions.join(line.mainHost, line.mainPort), line.containerName,
                         descriptors::loadByClassName, descriptors.implementationClasses(),
@@ -99,8 +99,6 @@ final class ContainerCommand {
                 if (System.nanoTime() - deadline > 0) {
                     throw notYet;
                 }
-            } finally {
-                System.setErr(standardError);
             }
             Thread.sleep(200);
         }

@@ -9,7 +9,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.concurrent.atomic.AtomicReference;
 import masl.jade.JadeException;
 import masl.jade.JadeLauncher;
 import masl.jade.JadeOptions;
@@ -17,7 +16,6 @@ import masl.jade.JadePlatform;
 import masl.jade.MissionSecret;
 import masl.jade.Placement;
 import masl.jade.Readiness;
-import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
 import masl.runtime.descriptor.AgentPath;
@@ -31,7 +29,7 @@ import masl.translator.source.SourceFile;
  * in a new main container on loopback, or in a container joining the platform at
  * {@code --main-host}/{@code --main-port}; with {@code --place}, the bodies of the agents named run in
  * the containers named ({@code masl container}), their programs here. The journal, timeout, trace,
- * Ctrl-C and outcome are those of an in-process run; a platform that cannot start or be joined, or a
+ * signals and outcome are those of an in-process run; a platform that cannot start or be joined, or a
  * container that does not join, ends the run as a failed mission. Once the platform accepts containers,
  * one line on standard error says where ({@link Readiness#platform}).
  */
@@ -41,16 +39,16 @@ final class JadeRun {
     private final DescriptorLoader descriptors;
     private final JadeOptions options;
     private final Map<String, String> placement;
+    private final JournalOutput journal;
     private final Path secretFile;
     private final Duration callTimeout;
-    private final PrintStream out;
     private final PrintStream err;
 
     /**
      * @throws UsageException if the command line asks for something JADE runs cannot do: a scheduler
      *                        of its own ({@code --threads}, {@code --seed}), or half a main address
      */
-    JadeRun(CommandLine line, SourceFile source, AgentPath agentPath, MissionLoader loaded, PrintStream out,
+    JadeRun(CommandLine line, SourceFile source, AgentPath agentPath, MissionLoader loaded, JournalOutput journal,
             PrintStream err) throws UsageException {
         if (line.threads || line.seed != null) {
             throw new UsageException("--platform jade runs each agent in a JADE behaviour of its own:"
@@ -68,13 +66,13 @@ final class JadeRun {
         this.options = line.mainHost != null ? JadeOptions.join(line.mainHost, line.mainPort)
                 : line.port != null ? JadeOptions.mainContainer().withPort(line.port) : JadeOptions.mainContainer();
         this.placement = line.place == null ? Map.of() : placement(line.place, loaded);
+        this.journal = journal;
         if (line.secretFile != null && placement.isEmpty()) {
             throw new UsageException("--secret-file is where the containers of --place find the mission's secret:"
                     + " give it with --place");
         }
         this.secretFile = Path.of(line.secretFile == null ? CommandLine.DEFAULT_SECRET_FILE : line.secretFile);
         this.callTimeout = line.callTimeoutMillis == null ? null : Duration.ofMillis(line.callTimeoutMillis);
-        this.out = out;
         this.err = err;
     }
 
@@ -106,17 +104,24 @@ final class JadeRun {
         return AgentPath.of(entries, agentPath.resources());
     }
 
-    /** Runs the mission; Ctrl-C stops it once its agents exist (its journal so far is kept). */
-    MissionOutcome run(Trace trace, Duration timeout) {
-        AtomicReference<Thread> stopper = new AtomicReference<>();
+    /**
+     * Runs the mission; a signal stops it once its agents exist ({@link StopOnSignal}), and so does a
+     * journal that cannot be written.
+     */
+    MissionOutcome run(Trace trace, Duration timeout, StopOnSignal signals) {
         JadeLauncher launcher = JadeLauncher.of(loaded.program())
                 .types(spec -> descriptors.loadByClassName(spec.typeClassName()))
                 .implementations(loaded::newImplementation)
                 .place(placement)
-                .journal(out)
+                .journal(journal)
                 .problems(problem -> err.println("masl: " + problem))
                 .trace(trace == null ? Trace.NONE : trace)
-                .whenReady(mission -> stopper.set(stopOnCtrlC(mission)));
+                .whenReady(mission -> {
+                    journal.whenFailed(() -> mission.stop(RunCommand.JOURNAL_LOST));
+                    if (!signals.stops(mission::stop)) {
+                        mission.stop(StopOnSignal.REASON);
+                    }
+                });
         try {
             if (callTimeout != null) {
                 launcher.callTimeout(callTimeout);
@@ -130,15 +135,16 @@ final class JadeRun {
                 return launcher.run(platform, timeout);
             }
         } catch (IOException unwritable) {
-            return failed(new JadeException("cannot write the mission's secret for its containers to " + secretFile
+            return failed(new PlatformFailure("cannot write the mission's secret for its containers to " + secretFile
                     + ": " + unwritable.getMessage()), MissionOutcome.Status.FAILED);
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
             return failed(interrupted, MissionOutcome.Status.STOPPED);
-        } catch (JadeException | IllegalStateException cannotRun) {
+        } catch (JadeException platform) {
+            return failed(new PlatformFailure(platform.getMessage()), MissionOutcome.Status.FAILED);
+        } catch (IllegalStateException cannotRun) {
             return failed(cannotRun, MissionOutcome.Status.FAILED);
         } finally {
-            removeHook(stopper.get());
             forgetSecret();
         }
     }
@@ -162,23 +168,6 @@ final class JadeRun {
             Files.deleteIfExists(secretFile);
         } catch (IOException kept) {
             // Harmless: the next mission writes a secret of its own over it.
-        }
-    }
-
-    private static Thread stopOnCtrlC(Mission mission) {
-        Thread stopper = new Thread(mission::stop, "masl-stop");
-        Runtime.getRuntime().addShutdownHook(stopper);
-        return stopper;
-    }
-
-    private static void removeHook(Thread stopper) {
-        if (stopper == null) {
-            return;
-        }
-        try {
-            Runtime.getRuntime().removeShutdownHook(stopper);
-        } catch (IllegalStateException shuttingDown) {
-            // The JVM is exiting because of Ctrl-C: the hook is running, as it should.
         }
     }
 

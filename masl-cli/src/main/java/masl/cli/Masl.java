@@ -13,8 +13,9 @@ import masl.translator.source.SourceFile;
 
 /**
  * The {@code masl} command. Exit statuses (components.md): 0 success, 1 errors in the program or its
- * descriptors, 2 the mission failed (deadlock, crash, timeout), 64 bad usage, 70 an internal error (a
- * bug of masl, reported as one, never as a stack trace).
+ * descriptors, 2 the mission failed (deadlock, crash, timeout, lost journal), 64 bad usage, 70 an
+ * internal error (a bug of masl, reported as one, never as a stack trace); a run Ctrl-C or SIGTERM
+ * stops ends with the JVM's 130 or 143 ({@link StopOnSignal}).
  */
 public final class Masl {
 
@@ -73,7 +74,8 @@ public final class Masl {
                                   mission (owner-only, deleted at its end) and its containers read it; they obey
                                   only messages signed with it (default: .masl-mission-secret in this folder)
             exit status: 0 success, 1 errors in the program or its descriptors, 2 the mission failed,
-                         deadlocked or timed out, 64 bad usage, 70 internal error
+                         deadlocked or timed out, or its journal could not be written, 64 bad usage,
+                         70 internal error, 130 or 143 stopped by Ctrl-C or SIGTERM
             """;
 
     private final InputStream in;
@@ -133,7 +135,7 @@ public final class Masl {
             err.println("masl: internal error: the Java generated for this program does not compile; please report it"
                     + " with the program" + savedReport(bug));
             return INTERNAL_ERROR;
-        } catch (RuntimeException | StackOverflowError | OutOfMemoryError bug) {
+        } catch (RuntimeException | StackOverflowError | OutOfMemoryError | LinkageError bug) {
             err.println("masl: internal error, please report it with the program that caused it: " + bug);
             return INTERNAL_ERROR;
         }

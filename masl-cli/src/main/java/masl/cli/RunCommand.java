@@ -11,9 +11,9 @@ import java.nio.file.Path;
 import java.time.Duration;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
-import masl.runtime.SeededScheduler;
-import masl.runtime.ThreadPerAgentScheduler;
 import masl.runtime.descriptor.AgentPath;
+import masl.runtime.scheduling.SeededScheduler;
+import masl.runtime.scheduling.ThreadPerAgentScheduler;
 import masl.runtime.trace.JsonLinesTrace;
 import masl.translator.MissionLoader;
 import masl.translator.source.SourceFile;
@@ -24,6 +24,9 @@ import masl.translator.source.SourceFile;
  * to standard error.
  */
 final class RunCommand {
+
+    /** Why a mission whose journal cannot be written was stopped, as its {@code mission-ended} record says. */
+    static final String JOURNAL_LOST = "the journal cannot be written";
 
     /** "No limit": long enough for any mission, short enough for the runtime's deadline arithmetic. */
     private static final Duration NO_TIMEOUT = Duration.ofDays(3650);
@@ -47,6 +50,12 @@ final class RunCommand {
             throw new UsageException("--place, --port and --secret-file are for a JADE platform: give them with"
                     + " --platform jade");
         }
+        try (StopOnSignal signals = new StopOnSignal(err)) {
+            return translateAndRun(line, source, signals);
+        }
+    }
+
+    private int translateAndRun(CommandLine line, SourceFile source, StopOnSignal signals) throws UsageException {
         AgentPath agentPath = AgentPath.parse(line.agentPath);
         Pipeline.Loaded compiled = Pipeline.load(source, agentPath, err);
         if (compiled == null) {
@@ -54,11 +63,13 @@ final class RunCommand {
         }
         MissionLoader loaded = compiled.loader();
         Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
+        JournalOutput journal = new JournalOutput(out);
         if (line.platform.equals("jade")) {
-            JadeRun jade = new JadeRun(line, source, agentPath, loaded, out, err);
+            JadeRun jade = new JadeRun(line, source, agentPath, loaded, journal, err);
             Writer trace = openTrace(line.traceFile);
             try {
-                return report(jade.run(trace == null ? null : new JsonLinesTrace(trace), timeout), null);
+                return report(jade.run(trace == null ? null : new JsonLinesTrace(trace), timeout, signals), null,
+                        signals, journal);
             } finally {
                 out.flush();
                 closeTrace(trace, line.traceFile);
@@ -79,23 +90,26 @@ final class RunCommand {
         if (line.callTimeoutMillis != null) {
             builder.callTimeout(Duration.ofMillis(line.callTimeoutMillis));
         }
-        builder.journal(out);
+        builder.journal(journal);
         Writer trace = openTrace(line.traceFile);
         if (trace != null) {
             builder.trace(new JsonLinesTrace(trace));
         }
+        Mission mission = builder.build();
+        journal.whenFailed(() -> mission.stop(JOURNAL_LOST));
         try {
-            return report(runStoppable(builder.build(), timeout), line.seed);
+            if (!signals.stops(mission::stop)) {
+                return Masl.MISSION_FAILED;
+            }
+            return report(run(mission, timeout), line.seed, signals, journal);
         } finally {
             out.flush();
             closeTrace(trace, line.traceFile);
         }
     }
 
-    /** Runs the mission; Ctrl-C stops it (its journal so far is flushed, the exit status is 2). */
-    private static MissionOutcome runStoppable(Mission mission, Duration timeout) {
-        Thread stopper = new Thread(mission::stop, "masl-stop");
-        Runtime.getRuntime().addShutdownHook(stopper);
+    /** Runs the mission; a signal stops it ({@link StopOnSignal}). */
+    private static MissionOutcome run(Mission mission, Duration timeout) {
         try {
             return mission.run(timeout);
         } catch (InterruptedException interrupted) {
@@ -103,18 +117,28 @@ final class RunCommand {
             mission.stop();
             return new MissionOutcome(MissionOutcome.Status.STOPPED, mission.journal().text(),
                     java.util.Optional.empty(), "");
-        } finally {
-            try {
-                Runtime.getRuntime().removeShutdownHook(stopper);
-            } catch (IllegalStateException shuttingDown) {
-                // The JVM is exiting because of Ctrl-C: the hook is running, as it should.
-            }
         }
     }
 
-    private int report(MissionOutcome outcome, Long seed) {
+    /**
+     * The exit status of a run and its one report on standard error. A journal that could not be
+     * written fails the run whatever the mission did; a signal's stop is said in one line.
+     */
+    private int report(MissionOutcome outcome, Long seed, StopOnSignal signals, JournalOutput journal) {
+        if (journal.failed()) {
+            err.println("masl: cannot write the journal to standard output");
+            return Masl.MISSION_FAILED;
+        }
+        if (outcome.status() == MissionOutcome.Status.STOPPED && signals.signalled()) {
+            err.println("masl: the mission was stopped by " + StopOnSignal.REASON);
+            return Masl.MISSION_FAILED;
+        }
         if (outcome.completed()) {
             return Masl.OK;
+        }
+        if (outcome.failure().orElse(null) instanceof PlatformFailure platform) {
+            err.println("masl: " + platform.getMessage());
+            return Masl.MISSION_FAILED;
         }
         String what = switch (outcome.status()) {
             case DEADLOCKED -> "deadlocked: no agent can make progress";

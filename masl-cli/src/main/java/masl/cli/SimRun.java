@@ -24,7 +24,8 @@ import masl.translator.source.SourceFile;
  * journal (only the journal) goes to standard output; trajectories, events, trace, journal and the
  * trajectory picture are written to {@code --out}, by default the folder {@code NAME.out} next to
  * the scenario file {@code NAME.scenario.xml}. Folders holding the scenario's descriptor files are
- * searched for descriptors before {@code --agent-path}.
+ * searched for descriptors before {@code --agent-path}. An output folder that cannot be written is
+ * reported before anything runs; a signal stops the mission and the output is still written.
  */
 final class SimRun {
 
@@ -70,18 +71,31 @@ final class SimRun {
             return Masl.PROGRAM_ERRORS;
         }
         Path output = outputFolder(line.outputFolder, scenarioFile);
-        RunOptions options = RunOptions.defaults()
-                .withJournal(out)
-                .withOutput(output)
-                .withTimeout(line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds));
-        try {
+        String unwritable = OutputFolder.cannotWrite(output);
+        if (unwritable != null) {
+            err.println("masl: cannot write the simulation's output to " + output + ": " + unwritable);
+            return Masl.USAGE;
+        }
+        JournalOutput journal = new JournalOutput(out);
+        try (StopOnSignal signals = new StopOnSignal(err)) {
+            RunOptions options = RunOptions.defaults()
+                    .withJournal(journal)
+                    .withOutput(output)
+                    .withTimeout(line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds))
+                    .whenReady(mission -> {
+                        journal.whenFailed(() -> mission.stop(RunCommand.JOURNAL_LOST));
+                        if (!signals.stops(mission::stop)) {
+                            mission.stop(StopOnSignal.REASON);
+                        }
+                    });
             SimulationResult result = new ScenarioRunner(seeded(scenario, line.seed)).run(loaded.loader().program(), options);
-            return report(result, scenario, output);
+            return report(result, scenario, output, signals, journal);
         } catch (ScenarioException doesNotFit) {
             doesNotFit.errors().forEach(err::println);
             return Masl.PROGRAM_ERRORS;
         } catch (IOException cannotWrite) {
-            err.println("masl: cannot write the simulation's output to " + output + ": " + cannotWrite.getMessage());
+            err.println("masl: cannot write the simulation's output to " + output + ": "
+                    + OutputFolder.reason(cannotWrite));
             return Masl.MISSION_FAILED;
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
@@ -106,10 +120,19 @@ final class SimRun {
      * A simulated mission ends normally when it completes or when the scenario's duration has passed
      * (the runner stops it then); a deadlock, a crash or the wall-clock timeout fail it.
      */
-    private int report(SimulationResult result, Scenario scenario, Path output) {
+    private int report(SimulationResult result, Scenario scenario, Path output, StopOnSignal signals,
+            JournalOutput journal) {
         MissionOutcome outcome = result.outcome();
         boolean durationReached = outcome.status() == MissionOutcome.Status.STOPPED && scenario.duration() > 0
                 && result.simulatedSeconds() >= scenario.duration() - 1e-6;
+        if (journal.failed()) {
+            err.println("masl: cannot write the journal to standard output");
+            return Masl.MISSION_FAILED;
+        }
+        if (outcome.status() == MissionOutcome.Status.STOPPED && signals.signalled() && !durationReached) {
+            err.println("masl: the mission was stopped by " + StopOnSignal.REASON + "; output in " + output);
+            return Masl.MISSION_FAILED;
+        }
         if (outcome.completed() || durationReached) {
             err.printf(java.util.Locale.ROOT, "masl: %.2f s simulated; output in %s%n", result.simulatedSeconds(), output);
             return Masl.OK;

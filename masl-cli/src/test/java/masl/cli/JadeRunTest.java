@@ -67,7 +67,8 @@ class JadeRunTest {
                 "--platform", "jade", "--main-host", "127.0.0.1", "--main-port", String.valueOf(freePort));
         assertEquals(2, run.status());
         assertEquals("", run.out());
-        assertTrue(run.err().contains("masl.jade.JadeException"), run.err());
+        assertEquals("masl: cannot join the JADE platform at 127.0.0.1:" + freePort + " (is its main container running?)\n",
+                run.err());
     }
 
     @Test

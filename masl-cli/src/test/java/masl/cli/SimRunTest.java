@@ -87,6 +87,32 @@ class SimRunTest {
     }
 
     @Test
+    void anOutputFolderThatCannotBeWrittenIsReportedBeforeTheMissionRuns() throws IOException {
+        Path scenario = scenario(DRIVE);
+        Path file = Files.writeString(folder.resolve("taken"), "a file, not a folder");
+        Path out = file.resolve("out");
+        Run run = Run.of("run", "--sim", scenario.toString(), "--out", out.toString());
+        assertEquals(new Run(64, "", "masl: cannot write the simulation's output to " + out + ": Not a directory ("
+                + out + ")\n"), run);
+        Run taken = Run.of("run", "--sim", scenario.toString(), "--out", file.toString());
+        assertEquals(new Run(64, "", "masl: cannot write the simulation's output to " + file + ": " + file
+                + " exists and is not a folder\n"), taken);
+    }
+
+    /** A physics step cannot be interrupted, so {@code --timeout} could not end a step of 2·10⁹ iterations. */
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void scenarioNumbersThatWouldMakeAStepEndlessArePositionedErrors() throws IOException {
+        Path scenario = scenario(DRIVE);
+        Files.writeString(scenario, Files.readString(scenario).replace("<world", """
+                <physics iterations="2000000000"/>
+                  <world"""));
+        Run run = Run.of("run", "--sim", scenario.toString(), "--timeout", "5");
+        assertEquals(new Run(1, "", scenario + ":2:3: error: iterations: '2000000000' is not a whole number from 1"
+                + " to 10000\n"), run);
+    }
+
+    @Test
     void aProgramOperandOrAMissingScenarioIsBadUsage() throws IOException {
         Path scenario = scenario(DRIVE);
         assertEquals(64, Run.of("run", "--sim", scenario.toString(), "drive.masl").status());

@@ -23,6 +23,7 @@ import masl.jade.acl.ContentException;
 import masl.jade.acl.JsonContent;
 import masl.jade.acl.PlacementContent;
 import masl.jade.acl.Reply;
+import masl.runtime.AgentClasses;
 import masl.runtime.AgentImplementation;
 import masl.runtime.descriptor.AgentType;
 
@@ -71,6 +72,7 @@ final class ContainerHost extends Agent {
     /** Whether the bodies placed here exist and are registered. */
     private transient volatile boolean bodiesReady;
     private transient volatile String lost;
+    private transient volatile String unhosted;
 
     /**
      * @param secretSource the mission's secret, asked for until a control message bears its signature
@@ -151,6 +153,11 @@ final class ContainerHost extends Agent {
         return lost;
     }
 
+    /** Why this container could not create the bodies the coordinator placed here; null if it could, or has not been asked. */
+    String unhosted() {
+        return unhosted;
+    }
+
     /** The names of the bodies the coordinator placed here. */
     List<String> hosted() {
         return List.copyOf(hosted);
@@ -195,6 +202,9 @@ final class ContainerHost extends Agent {
                 } else {
                     placed = true;
                     send(place(message));
+                    if (unhosted != null) {
+                        ended.countDown();
+                    }
                 }
             }
             case CoordinatorAgent.END -> {
@@ -244,9 +254,14 @@ final class ContainerHost extends Agent {
         }
     }
 
+    /**
+     * Creates the bodies a placement names and answers {@code INFORM}; or deletes those made, answers
+     * {@code FAILURE} with what went wrong and keeps it in {@link #unhosted}: the mission cannot run.
+     */
     private ACLMessage place(ACLMessage request) {
+        List<PlacementContent.Body> placed = List.of();
         try {
-            List<PlacementContent.Body> placed = PlacementContent.read(request.getContent());
+            placed = PlacementContent.read(request.getContent());
             primitiveThreads = Executors.newCachedThreadPool(runnable -> {
                 Thread thread = new Thread(runnable, "masl-body-primitive");
                 thread.setDaemon(true);
@@ -275,6 +290,8 @@ final class ContainerHost extends Agent {
         } catch (ContentException | StaleProxyException | ReflectiveOperationException | RuntimeException
                 | LinkageError problem) {
             deleteBodies();
+            unhosted = Distribution.cannotHost(containerName, placed.stream().map(PlacementContent.Body::name).toList(),
+                    problem.getMessage());
             return AclInvocations.reply(request, Reply.Kind.FAILED, JsonContent.failure(problem));
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -285,8 +302,12 @@ final class ContainerHost extends Agent {
     private BodyAgent body(PlacementContent.Body body, ACLMessage request, CountDownLatch registered)
             throws ReflectiveOperationException {
         AgentType type = types.apply(body.className());
-        AgentImplementation implementation = Class.forName(body.className(), true, classes)
-                .asSubclass(AgentImplementation.class).getConstructor().newInstance();
+        AgentImplementation implementation;
+        try {
+            implementation = AgentClasses.instantiate(body.className(), classes);
+        } catch (AgentClasses.CreationFailed thrown) {
+            throw new JadeException("class " + body.className() + ": " + thrown.getMessage());
+        }
         BodyJournal journal = new BodyJournal(body.proxyId());
         implementation.bind(journal);
         return new BodyAgent(implementation, journal, new PrimitiveTable(type, implementation.getClass()),

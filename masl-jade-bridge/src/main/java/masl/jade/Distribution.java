@@ -126,11 +126,17 @@ final class Distribution {
             ACLMessage request = request(host, CoordinatorAgent.PLACE, PlacementContent.write(placed.getValue()));
             ACLMessage answer = await(request, "container " + placed.getKey() + " to create its bodies");
             if (answer.getPerformative() != ACLMessage.INFORM) {
-                throw new JadeException("container " + placed.getKey() + " cannot host "
-                        + placed.getValue().stream().map(PlacementContent.Body::name).toList() + ": "
-                        + answer.getContent());
+                throw new JadeException(cannotHost(placed.getKey(),
+                        placed.getValue().stream().map(PlacementContent.Body::name).toList(),
+                        JsonContent.failureMessage(answer.getContent())));
             }
         }
+    }
+
+    /** What both sides say when a container cannot create the bodies placed in it: the same line. */
+    static String cannotHost(String container, List<String> bodies, String why) {
+        return "container " + container + " cannot host " + (bodies.isEmpty() ? "its bodies" : String.join(", ", bodies))
+                + ": " + why;
     }
 
     /**

@@ -1,7 +1,9 @@
 package masl.jade;
 
+import java.io.OutputStream;
 import java.io.PrintStream;
 import java.util.List;
+import java.util.function.Supplier;
 import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.LogRecord;
@@ -21,6 +23,8 @@ final class JadeLog {
      */
     private static final List<Logger> LOGGERS = Stream.of("jade", "ams", "df").map(Logger::getLogger).toList();
 
+    private static volatile boolean silenced;
+
     static {
         Handler handler = new OneLineHandler(System.err);
         for (Logger logger : LOGGERS) {
@@ -36,6 +40,24 @@ final class JadeLog {
         LOGGERS.forEach(logger -> logger.setLevel(level));
     }
 
+    /**
+     * Runs {@code action} with JADE's log records and standard error out of sight. For a call whose
+     * failure JADE reports in both (a log record, then stack traces printed straight to
+     * {@code System.err}) while the caller reports it in one line of its own. Only while nothing
+     * else of this JVM writes to standard error: at a platform's start.
+     */
+    static <T> T silenced(Supplier<T> action) {
+        PrintStream standardError = System.err;
+        silenced = true;
+        System.setErr(new PrintStream(OutputStream.nullOutputStream()));
+        try {
+            return action.get();
+        } finally {
+            System.setErr(standardError);
+            silenced = false;
+        }
+    }
+
     private static final class OneLineHandler extends Handler {
         private final PrintStream out;
 
@@ -45,6 +67,9 @@ final class JadeLog {
 
         @Override
         public void publish(LogRecord record) {
+            if (silenced) {
+                return;
+            }
             String message = record.getMessage() == null ? "" : record.getMessage().strip();
             int newline = message.indexOf('\n');
             out.println("JADE " + record.getLevel().getName().toLowerCase() + ": "

@@ -110,8 +110,9 @@ public final class JadePlatform implements AutoCloseable {
                     ? "http://" + options.localHost() + ":" + freePort(options.localHost()) + "/acc"
                     : null;
             Profile profile = profile(options, port, httpAddress, fileDir);
+            // A failed join is reported by cannotStart in one line: JADE's own report is stack traces.
             AgentContainer container = options.joins()
-                    ? Runtime.instance().createAgentContainer(profile)
+                    ? JadeLog.silenced(() -> Runtime.instance().createAgentContainer(profile))
                     : Runtime.instance().createMainContainer(profile);
             if (container != null) {
                 return new JadePlatform(options, container, port, httpAddress, fileDir);

@@ -114,6 +114,15 @@ public final class MaslContainer implements AutoCloseable {
         return Optional.ofNullable(host.lost());
     }
 
+    /**
+     * Why this container could not create the bodies its coordinator placed in it (their class
+     * cannot be loaded or initialised here, their descriptor is not on this host's agent path), in
+     * the words the coordinator reports too; the mission ends then. Empty if it could, or has not been asked.
+     */
+    public Optional<String> unhosted() {
+        return Optional.ofNullable(host.unhosted());
+    }
+
     /** The agents whose bodies the coordinator placed in this container, in its order. */
     public List<String> hostedAgents() {
         return host.hosted();

@@ -7,8 +7,8 @@ import java.util.List;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.Semaphore;
 import java.util.concurrent.TimeUnit;
-import masl.runtime.AgentTask;
-import masl.runtime.Scheduler;
+import masl.runtime.scheduling.AgentTask;
+import masl.runtime.scheduling.Scheduler;
 
 /**
  * Runs each MASL agent inside its JADE agent, in a threaded behaviour (a thread of its own that JADE

@@ -151,7 +151,7 @@ class ForgedMessagesTest {
         try (MaslContainer container = container("c4", MissionSecret.generate(), refusals, new CopyOnWriteArrayList<>())) {
             JadeException refused = assertThrows(JadeException.class, () -> JadeLauncher.of(callsGated(new ArrayList<>()))
                     .types(TestPrograms::type).place(Map.of("b", "c4")).secret(SECRET).run(JADE.platform(), TIMEOUT));
-            assertTrue(refused.getMessage().startsWith("container c4 cannot host [b]: ")
+            assertTrue(refused.getMessage().startsWith("container c4 cannot host b: ")
                     && refused.getMessage().contains("not signed with the mission's secret"), refused.getMessage());
             assertEquals(List.of(), container.hostedAgents());
             String line = refusals.poll(20, TimeUnit.SECONDS);

@@ -11,8 +11,22 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Supplier;
 import masl.runtime.descriptor.AgentType;
-import masl.runtime.descriptor.PermeabilityState;
 import masl.runtime.descriptor.PermeabilityState.Requester;
+import masl.runtime.descriptor.PermeabilityState;
+import masl.runtime.entry.Entry;
+import masl.runtime.entry.EntryCoordinator;
+import masl.runtime.entry.Membership;
+import masl.runtime.entry.SynchronisationBarrier;
+import masl.runtime.entry.Wave;
+import masl.runtime.event.EventOccurrence;
+import masl.runtime.event.EventQueue;
+import masl.runtime.event.ReactionPlan;
+import masl.runtime.event.ReactionRun;
+import masl.runtime.invocation.Countermeasure;
+import masl.runtime.invocation.PendingInvocation;
+import masl.runtime.invocation.Permeability;
+import masl.runtime.scheduling.AgentTask;
+import masl.runtime.scheduling.Scheduler;
 import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.TraceEvent;
 
@@ -57,8 +71,11 @@ import masl.runtime.trace.TraceEvent;
  * requester's relation to it, whether it runs or is denied. While the agent is in
  * {@code wait(state)} it is <em>attentive</em>: a serving slice runs only the first pending
  * invocation that state allows, which ends the wait; the others stay queued.
+ *
+ * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
+ * friend packages), and may change without notice.
  */
-final class Agent implements AgentContext, AgentTask {
+public final class Agent implements AgentContext, AgentTask {
 
     private static final int SCHEDULED = 0;
     private static final int RUNNING = 1;
@@ -70,7 +87,7 @@ final class Agent implements AgentContext, AgentTask {
 
     private final int id;
     private final String name;
-    final AgentImplementation implementation;
+    public final AgentImplementation implementation;
     private final AgentProgram program;
     private final Mission mission;
     private final AtomicInteger state = new AtomicInteger(SCHEDULED);
@@ -119,20 +136,20 @@ final class Agent implements AgentContext, AgentTask {
     private boolean interruptedStatementIsLoop;
 
     // Guarded by the EntryCoordinator's lock (see its invariant for the agent's own reads).
-    final List<Membership> memberships = new ArrayList<>();
-    List<Wave> activeIn = new ArrayList<>();
-    List<SynchronisationBarrier> participatesIn = new ArrayList<>();
+    public final List<Membership> memberships = new ArrayList<>();
+    public List<Wave> activeIn = new ArrayList<>();
+    public List<SynchronisationBarrier> participatesIn = new ArrayList<>();
     /** Its program died: it counts in no wave, not even the mission's (see {@link EntryCoordinator#leaveAll}). */
-    boolean departed;
+    public boolean departed;
 
     // The agent's latest arrival at a synchronisation barrier (see SynchronisationBarrier): written
     // by its own slice without the lock, read under the lock by the barrier it arrived at.
     /** The agent that arrived before it at the same barrier, while it waits on the barrier's stack. */
-    Agent nextArrival;
+    public Agent nextArrival;
     /** The barrier it arrived at last, until it stops taking part in it; null if none. */
-    SynchronisationBarrier arrivedAt;
+    public SynchronisationBarrier arrivedAt;
     /** The phase of {@link #arrivedAt} its arrival counted in. */
-    int arrivalPhase;
+    public int arrivalPhase;
 
     Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
             Mission mission) {
@@ -320,7 +337,7 @@ final class Agent implements AgentContext, AgentTask {
     }
 
     /** Issues the ticket of a park: the caller (this agent's own slice) then returns {@code false}. */
-    long prepareToPark() {
+    public long prepareToPark() {
         if (suspended) {
             throw new IllegalStateException(describe() + ": runtime called again after a suspension");
         }
@@ -335,7 +352,7 @@ final class Agent implements AgentContext, AgentTask {
      * Takes back the park that issued {@code ticket}, which nobody has ended: the call that issued
      * it goes on without waiting after all (the arrival that completes a synchronisation barrier).
      */
-    void cancelPark(long ticket) {
+    public void cancelPark(long ticket) {
         if (!wakeTicket.compareAndSet(ticket, 0)) {
             throw new IllegalStateException(describe() + ": its park was ended before it was taken back");
         }
@@ -343,12 +360,12 @@ final class Agent implements AgentContext, AgentTask {
     }
 
     /** The ticket of the pending park, or 0 if the agent has none (it is running, not waiting). */
-    long pendingTicket() {
+    public long pendingTicket() {
         return wakeTicket.get();
     }
 
     /** Ends the park that issued {@code ticket}; ignored if that park already ended. */
-    void unpark(long ticket) {
+    public void unpark(long ticket) {
         if (endPark(ticket)) {
             // Counted before the agent leaves PARKED, for the deadlock watchdog (Mission).
             mission.countSchedule();
@@ -362,7 +379,7 @@ final class Agent implements AgentContext, AgentTask {
      * Claims the end of the park that issued {@code ticket}, as the first half of {@link #unpark}:
      * false if that park already ended. The claimant must then call {@link #leavePark()}.
      */
-    boolean endPark(long ticket) {
+    public boolean endPark(long ticket) {
         return ticket != 0 && wakeTicket.compareAndSet(ticket, 0);
     }
 
@@ -371,7 +388,7 @@ final class Agent implements AgentContext, AgentTask {
      * true if the agent went {@code PARKED → SCHEDULED} and the caller must hand it to the
      * scheduler; false if its slice (running or serving) notes the wake-up and reschedules it.
      */
-    boolean leavePark() {
+    public boolean leavePark() {
         while (true) {
             int current = state.get();
             if (current == PARKED && state.compareAndSet(PARKED, SCHEDULED)) {
@@ -1169,12 +1186,12 @@ final class Agent implements AgentContext, AgentTask {
         return !memberships.isEmpty() && innermost().entry.mode() == Mode.SYNCHRONOUS;
     }
 
-    Membership innermost() {
+    public Membership innermost() {
         return memberships.get(memberships.size() - 1);
     }
 
     /** Held by an entry or exit barrier: then it is active nowhere (§6.3). */
-    boolean isHeld() {
+    public boolean isHeld() {
         return !memberships.isEmpty() && innermost().status != Membership.Status.ACTIVE;
     }
 
@@ -1201,7 +1218,7 @@ final class Agent implements AgentContext, AgentTask {
      * if its program does not say: the last statement of the case making the current call (a loop's
      * own statement at its head), or of the nearest case before it that has one.
      */
-    String source() {
+    public String source() {
         return sourceOf(statementPc, statementIsLoop);
     }
 
@@ -1213,7 +1230,7 @@ final class Agent implements AgentContext, AgentTask {
         return source;
     }
 
-    String describe() {
+    public String describe() {
         String source = source();
         return "agent " + name + " (" + id + ") at pc " + program.pc() + (source == null ? "" : " (" + source + ")");
     }

@@ -4,6 +4,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionStage;
 import java.util.function.Supplier;
+import masl.runtime.entry.Entry;
 
 /**
  * What a generated program calls on the runtime: one instance per agent, passed to

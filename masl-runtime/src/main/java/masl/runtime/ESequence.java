@@ -54,8 +54,11 @@ public final class ESequence {
         return block;
     }
 
-    /** Whether {@code block} is the last block of this e-sequence, after which it ends. */
-    boolean endsWith(EntryDefinition block) {
+    /**
+     * Whether {@code block} is the last block of this e-sequence, after which it ends.
+     * <b>Internal:</b> not part of the API.
+     */
+    public boolean endsWith(EntryDefinition block) {
         synchronized (blocks) {
             return blocks.get(blocks.size() - 1) == block;
         }

@@ -5,6 +5,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Optional;
 import java.util.Objects;
+import masl.runtime.entry.Entry;
 
 /**
  * The static description of an e-block (MASL §3, §6): its name, mode, parent block, the e-sequence
@@ -180,7 +181,8 @@ public final class EntryDefinition {
         }
     }
 
-    List<SharedDeclaration<?>> sharedDeclarations() {
+    /** <b>Internal:</b> not part of the API. */
+    public List<SharedDeclaration<?>> sharedDeclarations() {
         synchronized (sharedDeclarations) {
             return new ArrayList<>(sharedDeclarations);
         }

@@ -2,6 +2,7 @@ package masl.runtime;
 
 import java.util.concurrent.CompletableFuture;
 import java.util.function.Consumer;
+import masl.runtime.scheduling.ChangeEpoch;
 
 /**
  * A MASL label (§10): collects invocations and tells when all have completed. {@code LLabel l;} is

@@ -12,17 +12,27 @@ import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
-import java.util.concurrent.Future;
-import java.util.concurrent.TimeoutException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
 import masl.runtime.descriptor.AgentType;
+import masl.runtime.entry.Entry;
+import masl.runtime.entry.EntryCoordinator;
+import masl.runtime.event.EventOccurrence;
+import masl.runtime.invocation.PendingInvocation;
+import masl.runtime.scheduling.Blocking;
+import masl.runtime.scheduling.ChangeEpoch;
+import masl.runtime.scheduling.PoolScheduler;
+import masl.runtime.scheduling.PrimitiveTurn;
+import masl.runtime.scheduling.Scheduler;
+import masl.runtime.scheduling.WakeUps;
 import masl.runtime.trace.Trace;
 import masl.runtime.trace.TraceEvent;
 
@@ -105,6 +115,8 @@ public final class Mission {
     /** How long a primitive may run before its caller gets {@code timeout}; null: no limit. */
     private final Duration callTimeout;
     private volatile boolean stopped;
+    /** Why {@link #stop(String)} stopped the mission, for its {@code mission-ended} record; null if not said. */
+    private volatile String stopReason;
     /** Wake-ups counted and pending, for the deadlock watchdog. */
     private final WakeUps wakeUps;
     /** {@link #run} has seen the end (whatever it was) and is stopping the scheduler. */
@@ -168,7 +180,8 @@ public final class Mission {
         scheduler.start(agents);
         MissionOutcome.Status status = awaitEnd(timeout);
         over = true;
-        trace.record(new TraceEvent.MissionEnded(scheduler.nanoTime(), status.name().toLowerCase(Locale.ROOT)));
+        trace.record(new TraceEvent.MissionEnded(scheduler.nanoTime(), status.name().toLowerCase(Locale.ROOT),
+                status == MissionOutcome.Status.STOPPED ? stopReason : null));
         String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
         scheduler.shutdown();
         primitives.shutdownNow();
@@ -231,6 +244,17 @@ public final class Mission {
         ended.countDown();
     }
 
+    /**
+     * Stops the mission as {@link #stop()} does, saying why: the {@code mission-ended} record of the
+     * trace carries {@code reason} (the first one given, if stopped more than once).
+     */
+    public void stop(String reason) {
+        if (stopReason == null) {
+            stopReason = Objects.requireNonNull(reason, "reason");
+        }
+        stop();
+    }
+
     public Journal journal() {
         return journal;
     }
@@ -252,11 +276,11 @@ public final class Mission {
     }
 
     /**
-     * The agent running {@code implementation}.
+     * The agent running {@code implementation}. <b>Internal:</b> not part of the API.
      *
      * @throws IllegalArgumentException if it runs no agent of this mission
      */
-    Agent agentOf(AgentImplementation implementation) {
+    public Agent agentOf(AgentImplementation implementation) {
         int proxyId = implementation.services().proxyId();
         if (proxyId < 0 || proxyId >= agents.size() || agents.get(proxyId).implementation != implementation) {
             throw new IllegalArgumentException(implementation + " is no agent of this mission");
@@ -369,7 +393,8 @@ public final class Mission {
         return entry;
     }
 
-    Scheduler scheduler() {
+    /** <b>Internal:</b> not part of the API. */
+    public Scheduler scheduler() {
         return scheduler;
     }
 
@@ -422,7 +447,8 @@ public final class Mission {
         return over || ended.getCount() == 0;
     }
 
-    void countSchedule() {
+    /** <b>Internal:</b> not part of the API. */
+    public void countSchedule() {
         wakeUps.counted();
     }
 

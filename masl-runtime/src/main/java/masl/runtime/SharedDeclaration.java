@@ -34,7 +34,8 @@ public final class SharedDeclaration<T> {
         return initialValue;
     }
 
-    int index() {
+    /** <b>Internal:</b> not part of the API. */
+    public int index() {
         return index;
     }
 

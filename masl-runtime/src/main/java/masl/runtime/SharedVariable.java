@@ -2,6 +2,7 @@ package masl.runtime;
 
 import java.util.function.Supplier;
 import java.util.function.UnaryOperator;
+import masl.runtime.scheduling.ChangeEpoch;
 
 /**
  * One wave's copy of a shared variable (MASL §7).
@@ -20,7 +21,8 @@ public final class SharedVariable<T> {
     private volatile T value;
     private volatile boolean initialised;
 
-    SharedVariable(SharedDeclaration<T> declaration, ChangeEpoch changes) {
+    /** <b>Internal:</b> not part of the API. */
+    public SharedVariable(SharedDeclaration<T> declaration, ChangeEpoch changes) {
         this.declaration = declaration;
         this.changes = changes;
         this.value = declaration.initialValue();

@@ -9,6 +9,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLongArray;
 import java.util.concurrent.atomic.AtomicReferenceArray;
 import masl.runtime.descriptor.AgentType;
+import masl.runtime.scheduling.Scheduler;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;

@@ -7,6 +7,8 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.BooleanSupplier;
+import masl.runtime.scheduling.ThreadPerAgentScheduler;
+import masl.runtime.scheduling.WakeUps;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.TestAgent;
@@ -81,7 +83,7 @@ class DeadlockWatchdogTest {
         volatile BooleanSupplier parked;
 
         @Override
-        void counted() {
+        public void counted() {
             super.counted();
             if (Thread.currentThread() == stalled && inTheWindow.getCount() > 0) {
                 inTheWindow.countDown();
@@ -90,7 +92,7 @@ class DeadlockWatchdogTest {
         }
 
         @Override
-        long look() {
+        public long look() {
             BooleanSupplier quiet = quietButForTheStall;
             if (inTheWindow.getCount() == 0 && quiet != null && quiet.getAsBoolean()) {
                 quietLooks.countDown();
@@ -382,7 +384,7 @@ class DeadlockWatchdogTest {
         final CountDownLatch looks = new CountDownLatch(6);
 
         @Override
-        long look() {
+        public long look() {
             if (inTheWindow != null && inTheWindow.getCount() == 0) {
                 looks.countDown();
             }

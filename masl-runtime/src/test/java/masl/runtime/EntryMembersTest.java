@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import masl.runtime.entry.Entry;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;

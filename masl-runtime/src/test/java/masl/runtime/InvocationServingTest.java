@@ -6,6 +6,7 @@ import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReferenceArray;
+import masl.runtime.entry.Entry;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;

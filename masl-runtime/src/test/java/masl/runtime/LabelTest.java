@@ -9,6 +9,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicReferenceArray;
+import masl.runtime.scheduling.ChangeEpoch;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;

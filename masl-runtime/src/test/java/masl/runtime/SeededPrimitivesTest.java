@@ -11,6 +11,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicReferenceArray;
+import masl.runtime.scheduling.SeededScheduler;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;

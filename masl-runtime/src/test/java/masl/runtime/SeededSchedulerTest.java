@@ -9,6 +9,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.function.Function;
+import masl.runtime.scheduling.SeededScheduler;
 import masl.runtime.testing.PhaseLog;
 import masl.runtime.testing.TestAgent;
 import masl.runtime.trace.MemoryTrace;

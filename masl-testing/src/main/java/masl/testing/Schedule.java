@@ -1,9 +1,9 @@
 package masl.testing;
 
-import masl.runtime.PoolScheduler;
-import masl.runtime.Scheduler;
-import masl.runtime.SeededScheduler;
-import masl.runtime.ThreadPerAgentScheduler;
+import masl.runtime.scheduling.PoolScheduler;
+import masl.runtime.scheduling.Scheduler;
+import masl.runtime.scheduling.SeededScheduler;
+import masl.runtime.scheduling.ThreadPerAgentScheduler;
 
 /**
  * Who runs a mission's agents: the real pool, one thread per agent, or one thread drawing every

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import masl.runtime.AgentClasses;
 import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 import masl.runtime.MissionProgram;
@@ -94,10 +95,14 @@ public final class MissionLoader {
         }
     }
 
-    /** A new instance of an agent's implementation class, loaded along the agent path. */
+    /**
+     * A new instance of an agent's implementation class, loaded along the agent path.
+     *
+     * @throws ReflectiveOperationException if the class is missing or has no usable constructor; an
+     *     {@link AgentClasses.CreationFailed} if its static initialiser or its constructor threw (it names what)
+     */
     public AgentImplementation newImplementation(MissionProgram.AgentSpec agent) throws ReflectiveOperationException {
-        Class<?> type = Class.forName(agent.typeClassName(), true, classes);
-        return type.asSubclass(AgentImplementation.class).getDeclaredConstructor().newInstance();
+        return AgentClasses.instantiate(agent.typeClassName(), classes);
     }
 
     /** An agent's implementation could not be created: its class is missing or has no usable constructor. */

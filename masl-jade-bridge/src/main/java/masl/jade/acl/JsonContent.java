@@ -187,6 +187,21 @@ public final class JsonContent {
                 .put(MESSAGE, thrown.getMessage()).toString();
     }
 
+    /**
+     * What an answer that is not a result says went wrong, in words: the message of a
+     * {@code FAILURE} (or its exception's name if it has none), the reason of a {@code REFUSE}, the
+     * error of a {@code NOT_UNDERSTOOD}; the content itself if it has none of these.
+     */
+    public static String failureMessage(String content) {
+        JsonNode answer = readObject(content);
+        for (String field : List.of(MESSAGE, REASON, ERROR, EXCEPTION)) {
+            if (answer.path(field).isTextual()) {
+                return answer.path(field).textValue();
+            }
+        }
+        return String.valueOf(content);
+    }
+
     /** The content of a {@code NOT_UNDERSTOOD}: {@link ContentException#describe()}. */
     public static String notUnderstood(ContentException problem) {
         return NODES.objectNode().put(ERROR, problem.describe()).toString();

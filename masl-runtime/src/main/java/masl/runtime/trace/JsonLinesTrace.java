@@ -21,6 +21,8 @@ public final class JsonLinesTrace implements Trace, Flushable {
     private static final Pattern POSITION = Pattern.compile("[^:]*:(\\d+):");
 
     private final Appendable out;
+    /** {@code mission-ended} was written: it stays the last line, whatever agents still finishing record. */
+    private boolean ended;
 
     public JsonLinesTrace(Appendable out) {
         this.out = out;
@@ -28,9 +30,14 @@ public final class JsonLinesTrace implements Trace, Flushable {
 
     @Override
     public synchronized void record(TraceEvent event) {
+        if (ended) {
+            return;
+        }
         String line;
         if (event instanceof TraceEvent.MissionEnded e) {
-            line = head(e.nanos(), "mission-ended") + ",\"status\":" + string(e.status());
+            ended = true;
+            line = head(e.nanos(), "mission-ended") + ",\"status\":" + string(e.status())
+                    + (e.reason() == null ? "" : ",\"reason\":" + string(e.reason()));
         } else if (event instanceof TraceEvent.AgentFailed e) {
             line = head(e.nanos(), "agent-failed") + ",\"agent\":" + e.agent() + ",\"cause\":" + string(e.cause());
         } else if (event instanceof TraceEvent.Entered e) {

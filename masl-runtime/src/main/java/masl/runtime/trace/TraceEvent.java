@@ -95,7 +95,13 @@ public sealed interface TraceEvent {
 
     /**
      * The mission ended with {@code status} ({@code completed}, {@code failed}, {@code deadlocked},
-     * {@code timed_out}, {@code stopped}): the last record of a trace.
+     * {@code timed_out}, {@code stopped}): the last record of a trace. {@code reason} says why a
+     * stopped mission was stopped (a signal, a journal that cannot be written), or is null.
      */
-    record MissionEnded(long nanos, String status) implements TraceEvent { }
+    record MissionEnded(long nanos, String status, String reason) implements TraceEvent {
+
+        public MissionEnded(long nanos, String status) {
+            this(nanos, status, null);
+        }
+    }
 }

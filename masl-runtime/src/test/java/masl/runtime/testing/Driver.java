@@ -1,10 +1,10 @@
 package masl.runtime.testing;
 
 import java.util.concurrent.atomic.AtomicLong;
-import masl.runtime.PoolScheduler;
-import masl.runtime.Scheduler;
-import masl.runtime.SeededScheduler;
-import masl.runtime.ThreadPerAgentScheduler;
+import masl.runtime.scheduling.PoolScheduler;
+import masl.runtime.scheduling.Scheduler;
+import masl.runtime.scheduling.SeededScheduler;
+import masl.runtime.scheduling.ThreadPerAgentScheduler;
 
 /** The ways of running the same program objects that every concurrency test is run with. */
 public enum Driver {

@@ -6,8 +6,8 @@ import masl.runtime.AgentProgram;
 import masl.runtime.EntryDefinition;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
-import masl.runtime.Scheduler;
 import masl.runtime.descriptor.AgentType;
+import masl.runtime.scheduling.Scheduler;
 import masl.runtime.trace.Trace;
 
 /** Runs a test mission of {@link TestAgent}s and insists that it completes. */

@@ -17,9 +17,13 @@ import java.nio.file.Path;
  */
 public record SourceFile(String name, Path folder, String text) {
 
+    /** The byte order mark some editors put at the start of a UTF-8 file: not part of the program. */
+    private static final char BYTE_ORDER_MARK = '\uFEFF';
+
     /**
-     * Reads a program file as UTF-8; bytes that are not UTF-8 are read as Latin-1 rather than
-     * rejected, so the parser reports the offending characters with their position.
+     * Reads a program file as UTF-8, without the byte order mark it may start with; bytes that are
+     * not UTF-8 are read as Latin-1 rather than rejected, so the parser reports the offending
+     * characters with their position.
      */
     public static SourceFile read(Path file) throws IOException {
         byte[] bytes = Files.readAllBytes(file);
@@ -31,6 +35,9 @@ public record SourceFile(String name, Path folder, String text) {
                     .toString();
         } catch (CharacterCodingException notUtf8) {
             text = new String(bytes, StandardCharsets.ISO_8859_1);
+        }
+        if (!text.isEmpty() && text.charAt(0) == BYTE_ORDER_MARK) {
+            text = text.substring(1);
         }
         Path folder = file.toAbsolutePath().getParent();
         return new SourceFile(file.toString(), folder, text);

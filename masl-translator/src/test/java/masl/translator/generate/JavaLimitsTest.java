@@ -5,8 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import java.util.stream.Collectors;
-import masl.runtime.SeededScheduler;
 import masl.runtime.descriptor.AgentPath;
+import masl.runtime.scheduling.SeededScheduler;
 import masl.translator.MissionLoader;
 import masl.translator.Translation;
 import masl.translator.diagnostics.Diagnostic;

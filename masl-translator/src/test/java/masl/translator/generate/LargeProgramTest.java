@@ -5,8 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.StringJoiner;
-import masl.runtime.SeededScheduler;
 import masl.runtime.descriptor.AgentPath;
+import masl.runtime.scheduling.SeededScheduler;
 import masl.translator.MissionLoader;
 import masl.translator.Translation;
 import org.junit.jupiter.api.Test;

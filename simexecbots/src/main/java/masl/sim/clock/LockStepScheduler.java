@@ -2,16 +2,16 @@ package masl.sim.clock;
 
 import java.util.List;
 import java.util.concurrent.Executor;
-import masl.runtime.AgentTask;
-import masl.runtime.PrimitiveTurn;
-import masl.runtime.Scheduler;
-import masl.runtime.SeededDraw;
+import masl.runtime.scheduling.AgentTask;
+import masl.runtime.scheduling.PrimitiveTurn;
+import masl.runtime.scheduling.Scheduler;
+import masl.runtime.scheduling.SeededDraw;
 import masl.sim.physics.PhysicsWorld;
 
 /**
  * Runs a simulated mission on one thread that also steps the physics: the same scenario, seed and
  * program give the same run, bit for bit (trajectories, journal, trace). Like
- * {@link masl.runtime.SeededScheduler}, the next agent is drawn from the runnable ones by a seeded
+ * {@link masl.runtime.scheduling.SeededScheduler}, the next agent is drawn from the runnable ones by a seeded
  * generator after every step boundary; unlike it, time is the physics world's.
  *
  * <p><b>Simulated time.</b> The world takes one step when no agent is runnable (everyone sleeps or

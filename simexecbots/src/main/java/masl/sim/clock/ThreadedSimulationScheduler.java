@@ -1,9 +1,9 @@
 package masl.sim.clock;
 
 import java.util.List;
-import masl.runtime.AgentTask;
-import masl.runtime.PoolScheduler;
-import masl.runtime.Scheduler;
+import masl.runtime.scheduling.AgentTask;
+import masl.runtime.scheduling.PoolScheduler;
+import masl.runtime.scheduling.Scheduler;
 import masl.sim.physics.PhysicsWorld;
 
 /**

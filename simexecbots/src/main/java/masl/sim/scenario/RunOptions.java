@@ -4,6 +4,8 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.function.Consumer;
+import masl.runtime.Mission;
 import masl.runtime.trace.Trace;
 
 /**
@@ -17,37 +19,45 @@ import masl.runtime.trace.Trace;
  *                  {@code journal.txt} and {@code trajectories.png} to, created if missing
  * @param classes   loads the implementation and initialisation classes the scenario names, or null
  *                  for the mission program's own class loader
+ * @param ready     given the mission once it is built, before it runs: whoever may stop it early
+ *                  (on a signal, say) keeps it
  */
-public record RunOptions(Duration timeout, Appendable journal, Trace trace, Optional<Path> output, ClassLoader classes) {
+public record RunOptions(Duration timeout, Appendable journal, Trace trace, Optional<Path> output, ClassLoader classes,
+        Consumer<Mission> ready) {
 
     public RunOptions {
         Objects.requireNonNull(timeout, "timeout");
         Objects.requireNonNull(trace, "trace");
         Objects.requireNonNull(output, "output");
+        Objects.requireNonNull(ready, "ready");
     }
 
     /** Ten minutes, no journal sink, no trace, no output files, the program's class loader. */
     public static RunOptions defaults() {
-        return new RunOptions(Duration.ofMinutes(10), null, Trace.NONE, Optional.empty(), null);
+        return new RunOptions(Duration.ofMinutes(10), null, Trace.NONE, Optional.empty(), null, mission -> { });
+    }
+
+    public RunOptions whenReady(Consumer<Mission> action) {
+        return new RunOptions(timeout, journal, trace, output, classes, action);
     }
 
     public RunOptions withTimeout(Duration newTimeout) {
-        return new RunOptions(newTimeout, journal, trace, output, classes);
+        return new RunOptions(newTimeout, journal, trace, output, classes, ready);
     }
 
     public RunOptions withJournal(Appendable sink) {
-        return new RunOptions(timeout, sink, trace, output, classes);
+        return new RunOptions(timeout, sink, trace, output, classes, ready);
     }
 
     public RunOptions withTrace(Trace newTrace) {
-        return new RunOptions(timeout, journal, newTrace, output, classes);
+        return new RunOptions(timeout, journal, newTrace, output, classes, ready);
     }
 
     public RunOptions withOutput(Path folder) {
-        return new RunOptions(timeout, journal, trace, Optional.of(folder), classes);
+        return new RunOptions(timeout, journal, trace, Optional.of(folder), classes, ready);
     }
 
     public RunOptions withClasses(ClassLoader loader) {
-        return new RunOptions(timeout, journal, trace, output, loader);
+        return new RunOptions(timeout, journal, trace, output, loader, ready);
     }
 }

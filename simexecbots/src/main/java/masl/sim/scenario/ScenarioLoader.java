@@ -39,7 +39,9 @@ import masl.sim.xode.XodeSource;
  *
  * Every element but {@code scenario} is optional; {@code physics}, {@code initialisation},
  * {@code mission} and {@code output} appear at most once. Defaults: {@link PhysicsSettings#defaults()},
- * lock-step, 64 slices per step, no duration limit, samples every 0.1 s. Headings are degrees;
+ * lock-step, 64 slices per step, no duration limit, samples every 0.1 s. Bounds: step 1e-6 to 1 s,
+ * iterations 1 to {@value #MAX_ITERATIONS}, contacts 1 to {@value #MAX_CONTACTS}, slicesPerStep 1 to
+ * {@value #MAX_SLICES_PER_STEP}, realTimeFactor 0 or 0.001 to 1000. Headings are degrees;
  * {@code mode} is {@code lock-step} or {@code threaded}. File paths are relative to the scenario's
  * folder. Unknown elements and attributes are errors: a scenario is this project's own format.
  */
@@ -57,6 +59,17 @@ public final class ScenarioLoader {
             "mission", Set.of("file"),
             "output", Set.of("sample"));
     private static final Set<String> SINGLE = Set.of("physics", "initialisation", "mission", "output");
+    /**
+     * Bounds of the physics numbers. A physics step cannot be interrupted, so {@code --timeout} is
+     * honoured between steps: these bounds keep one step short (a few milliseconds for the robot
+     * models at the most iterations), and keep simulated time moving.
+     */
+    static final int MAX_ITERATIONS = 10_000;
+    static final int MAX_CONTACTS = 256;
+    static final int MAX_SLICES_PER_STEP = 1_000_000;
+    static final double MIN_STEP = 1e-6;
+    static final double MAX_STEP = 1;
+    static final double MAX_REAL_TIME_FACTOR = 1000;
 
     /** Reads the scenario file at {@code file}. */
     public Scenario load(Path file) throws ScenarioException {
@@ -128,7 +141,7 @@ public final class ScenarioLoader {
                     case "physics" -> {
                         physics = physics(child, physics);
                         mode = mode(child);
-                        slicesPerStep = whole(child, "slicesPerStep", 64);
+                        slicesPerStep = whole(child, "slicesPerStep", 64, MAX_SLICES_PER_STEP);
                         duration = number(child, "duration", 0, 0, false);
                     }
                     case "world" -> world(child).ifPresent(worlds::add);
@@ -155,10 +168,20 @@ public final class ScenarioLoader {
 
         private PhysicsSettings physics(XodeElement element, PhysicsSettings defaults) {
             double step = number(element, "step", defaults.stepSize(), 0, true);
-            int iterations = whole(element, "iterations", defaults.solverIterations());
+            if (step < MIN_STEP || step > MAX_STEP) {
+                error(element, "step: " + element.attribute("step").orElse("") + " must be from 0.000001 to "
+                        + formatBound(MAX_STEP) + " (seconds)");
+                step = defaults.stepSize();
+            }
+            int iterations = whole(element, "iterations", defaults.solverIterations(), MAX_ITERATIONS);
             double friction = number(element, "friction", defaults.friction(), 0, false);
-            int contacts = whole(element, "contacts", defaults.maxContacts());
+            int contacts = whole(element, "contacts", defaults.maxContacts(), MAX_CONTACTS);
             double realTime = number(element, "realTimeFactor", defaults.realTimeFactor(), 0, false);
+            if (realTime > MAX_REAL_TIME_FACTOR || realTime > 0 && realTime < 1 / MAX_REAL_TIME_FACTOR) {
+                error(element, "realTimeFactor: " + element.attribute("realTimeFactor").orElse("") + " must be 0 (as fast"
+                        + " as possible) or from " + 1 / MAX_REAL_TIME_FACTOR + " to " + formatBound(MAX_REAL_TIME_FACTOR));
+                realTime = defaults.realTimeFactor();
+            }
             long seed = defaults.seed();
             Optional<String> seedText = element.attribute("seed");
             if (seedText.isPresent()) {
@@ -320,21 +343,20 @@ public final class ScenarioLoader {
             return value;
         }
 
-        /** The attribute as a whole number ≥ 1, else {@code fallback}. */
-        private int whole(XodeElement element, String attribute, int fallback) {
+        /** The attribute as a whole number from 1 to {@code max}, else {@code fallback}. */
+        private int whole(XodeElement element, String attribute, int fallback, int max) {
             Optional<String> text = element.attribute(attribute);
             if (text.isEmpty()) {
                 return fallback;
             }
-            try {
-                int value = Integer.parseInt(text.get().trim());
-                if (value >= 1) {
+            String digits = text.get().trim();
+            if (digits.matches("[0-9]{1,9}")) {
+                int value = Integer.parseInt(digits);
+                if (value >= 1 && value <= max) {
                     return value;
                 }
-            } catch (NumberFormatException e) {
-                // reported below
             }
-            error(element, attribute + ": '" + text.get() + "' is not a whole number of at least 1");
+            error(element, attribute + ": '" + text.get() + "' is not a whole number from 1 to " + max);
             return fallback;
         }
 

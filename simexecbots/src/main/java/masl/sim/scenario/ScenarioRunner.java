@@ -14,7 +14,7 @@ import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
-import masl.runtime.Scheduler;
+import masl.runtime.scheduling.Scheduler;
 import masl.runtime.trace.JsonLinesTrace;
 import masl.runtime.trace.Trace;
 import masl.sim.clock.LockStepScheduler;
@@ -128,6 +128,7 @@ public final class ScenarioRunner {
         }
         program.configure(builder, spec -> implementations.get(spec.name()));
         Mission mission = builder.build();
+        options.ready().accept(mission);
 
         // The recorder first: events of a step's listeners are stamped with that step's time.
         world.addStepListener(recorder);

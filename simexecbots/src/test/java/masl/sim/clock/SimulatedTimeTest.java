@@ -11,7 +11,7 @@ import masl.runtime.AgentContext;
 import masl.runtime.AgentProgram;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
-import masl.runtime.Scheduler;
+import masl.runtime.scheduling.Scheduler;
 import masl.sim.physics.PhysicsSettings;
 import masl.sim.physics.PhysicsWorld;
 import org.junit.jupiter.api.Test;

@@ -116,11 +116,28 @@ class ScenarioLoaderTest {
     @Test
     void countsAreWholeNumbersOfAtLeastOne() throws Exception {
         assertEquals(List.of(
-                "s.xml:1:11: error: iterations: '2.5' is not a whole number of at least 1",
-                "s.xml:1:11: error: contacts: '0' is not a whole number of at least 1",
-                "s.xml:1:11: error: slicesPerStep: 'many' is not a whole number of at least 1"),
+                "s.xml:1:11: error: iterations: '2.5' is not a whole number from 1 to 10000",
+                "s.xml:1:11: error: contacts: '0' is not a whole number from 1 to 256",
+                "s.xml:1:11: error: slicesPerStep: 'many' is not a whole number from 1 to 1000000"),
                 errors("<scenario><physics iterations=\"2.5\" contacts=\"0\" slicesPerStep=\"many\"/></scenario>"));
         assertEquals(1, load("<scenario><physics slicesPerStep=\"1\"/></scenario>").slicesPerStep(), "one slice per step");
+    }
+
+    /** A physics step cannot be interrupted: numbers that would make one run for hours are errors (issue 22). */
+    @Test
+    void numbersThatWouldMakeAStepEndlessAreBounded() throws Exception {
+        assertEquals(List.of(
+                "s.xml:1:11: error: step: 2 must be from 0.000001 to 1 (seconds)",
+                "s.xml:1:11: error: iterations: '2000000000' is not a whole number from 1 to 10000",
+                "s.xml:1:11: error: contacts: '99999999999' is not a whole number from 1 to 256",
+                "s.xml:1:11: error: realTimeFactor: 1e-9 must be 0 (as fast as possible) or from 0.001 to 1000",
+                "s.xml:1:11: error: slicesPerStep: '2000000000' is not a whole number from 1 to 1000000"),
+                errors("<scenario><physics step=\"2\" iterations=\"2000000000\" contacts=\"99999999999\""
+                        + " realTimeFactor=\"1e-9\" slicesPerStep=\"2000000000\"/></scenario>"));
+        Scenario largest = load("<scenario><physics step=\"1\" iterations=\"10000\" contacts=\"256\" realTimeFactor=\"1000\""
+                + " slicesPerStep=\"1000000\"/></scenario>");
+        assertEquals(10000, largest.physics().solverIterations());
+        assertEquals(1000000, largest.slicesPerStep());
     }
 
     @Test

@@ -1,0 +1,217 @@
+package masl.runtime.entry;
+
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Consumer;
+import masl.runtime.Agent;
+
+/**
+ * The synchronisation barrier of one barrier domain (MASL §6.3, §6.4): an outermost synchronous
+ * block and all its synchronous descendants reached through synchronous parents. Unlike a
+ * {@link java.util.concurrent.Phaser} it never blocks a thread: an arriving agent is parked as data
+ * and a trip makes the parked agents runnable. Like a {@code Phaser}, an arrival that does not
+ * complete the barrier takes no lock.
+ *
+ * <p><b>Participants.</b> The agents with a membership of a block of the domain that are held by
+ * no entry or exit barrier (anywhere in their chain). Membership is dynamic: the
+ * {@link EntryCoordinator} adds and removes participants, under its lock, as agents join, are
+ * held, are released, leave and die. A domain without participants never trips.
+ *
+ * <p><b>State.</b> One atomic long packs the <em>phase</em> (the number of trips so far, modulo
+ * 2<sup>22</sup>), the number of <em>participants</em> and the number of them still
+ * <em>unarrived</em> in this phase (21 bits each: at most 2,097,151 participants). Agents that
+ * arrived in the phase wait on a lock-free stack linked through the agents themselves
+ * ({@link Agent#nextArrival}), so an arrival allocates nothing.
+ *
+ * <p><b>Transitions.</b>
+ * <ul>
+ * <li><b>Arrive</b> ({@link #arrive}, no lock, by the arriving participant, which has issued the
+ *     ticket of its park): push the agent onto the stack, <em>then</em> decrement unarrived. Every
+ *     agent counted as arrived is therefore on the stack. The arrival that brings unarrived to zero
+ *     has <em>completed</em> the phase; every other one is simply parked.</li>
+ * <li><b>Add or remove a participant</b> ({@link #addParticipant}, {@link #removeParticipant},
+ *     under the coordinator's lock): participants and unarrived change together, by one, since a
+ *     joining or leaving participant has not arrived. The one exception is an agent whose program
+ *     died after it arrived: only participants drop, its arrival stays counted.</li>
+ * <li><b>Trip</b> ({@link #trip}, under the coordinator's lock, only when unarrived is zero and
+ *     participants are not): advance the phase, set unarrived to participants, take the whole
+ *     stack and let its agents go in arrival order.</li>
+ * </ul>
+ *
+ * <p><b>Who trips, exactly once.</b> Trips happen only under the lock, and a trip moves the phase
+ * on, so the lock orders every trip and every membership change and the trace lists them in that
+ * order. A completing arrival takes the lock and trips if its phase is still the current one and
+ * still complete ({@link #completes}). Two things may come between its decrement and its taking
+ * the lock, each as one atomic step under the lock:
+ * <ul>
+ * <li>a participant joins (or is released into the domain): unarrived is no longer zero, so the
+ *     join counts as having come before the completing arrival, whose agent stays parked on the
+ *     stack until the joiner arrives too; a barrier never trips with a participant missing;</li>
+ * <li>a change completes the phase itself (the joiner leaves again, or is held; an arrived agent
+ *     dies) and trips it, waking every stacked agent, the completing one included, which then finds
+ *     its phase gone and returns parked and already woken.</li>
+ * </ul>
+ * A membership change that leaves unarrived at zero (a non-arrived participant leaving, held or
+ * dying while all the others have arrived) trips in its own atomic step, after everything else it
+ * caused ({@link EntryCoordinator}'s settle). The trip's {@code BarrierTripped} record therefore
+ * counts exactly the participants at the trip, all of which have arrived, and no arrival between
+ * two trips is lost: an arrival for the next phase is pushed only once its agent was let go by the
+ * trip, or, for a joiner, after its join, which comes after the previous trip under the lock.
+ *
+ * <p><b>Trace.</b> An arrival writes no trace record: it changes no membership, and a record of
+ * it, written without the lock, could only be ordered against the others by a clock. The trip is
+ * the record of a completed phase, written under the lock among the membership changes.
+ *
+ * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
+ * friend packages), and may change without notice.
+ */
+public final class SynchronisationBarrier {
+
+    private static final int COUNT_BITS = 21;
+    private static final long COUNT_MASK = (1L << COUNT_BITS) - 1;
+    private static final int PARTICIPANTS_SHIFT = COUNT_BITS;
+    private static final int PHASE_SHIFT = 2 * COUNT_BITS;
+    private static final long PHASE_MASK = (1L << (Long.SIZE - PHASE_SHIFT)) - 1;
+    private static final long ONE_UNARRIVED = 1;
+    private static final long ONE_PARTICIPANT = 1L << PARTICIPANTS_SHIFT;
+
+    /** The outermost block of the domain, naming it in traces and reports. */
+    final Entry domain;
+    private final AtomicLong state = new AtomicLong();
+    /** The agents that arrived in the current phase, last arrival first, linked by {@link Agent#nextArrival}. */
+    private final AtomicReference<Agent> arrivals = new AtomicReference<>();
+
+    SynchronisationBarrier(Entry domain) {
+        this.domain = domain;
+    }
+
+    /**
+     * The arrival of a participant, which has issued the ticket of its park; no lock. Returns the
+     * phase it completed, which the caller must then trip under the coordinator's lock if it
+     * {@link #completes} it still, or -1 if participants remain unarrived: it stays parked until
+     * the trip.
+     */
+    int arrive(Agent agent) {
+        Agent top;
+        do {
+            top = arrivals.get();
+            agent.nextArrival = top;
+        } while (!arrivals.compareAndSet(top, agent));
+        long current;
+        long next;
+        do {
+            current = state.get();
+            if (unarrived(current) == 0) {
+                throw new IllegalStateException(describe(current) + ": " + agent + " arrives, but every participant has");
+            }
+            next = current - ONE_UNARRIVED;
+        } while (!state.compareAndSet(current, next));
+        agent.arrivedAt = this;
+        agent.arrivalPhase = phase(next);
+        return unarrived(next) == 0 ? phase(next) : -1;
+    }
+
+    /** Under the lock: whether {@code phase} is the current phase and every participant has arrived in it. */
+    boolean completes(int phase) {
+        long current = state.get();
+        return phase(current) == phase && isComplete(current);
+    }
+
+    /** Under the lock: whether every participant has arrived, at least one, so that the barrier must trip. */
+    boolean isComplete() {
+        return isComplete(state.get());
+    }
+
+    /** Under the lock: a new participant, not arrived. */
+    void addParticipant() {
+        long current;
+        do {
+            current = state.get();
+            if (participants(current) == COUNT_MASK) {
+                throw new IllegalStateException(describe(current) + ": more than " + COUNT_MASK + " participants");
+            }
+        } while (!state.compareAndSet(current, current + ONE_PARTICIPANT + ONE_UNARRIVED));
+    }
+
+    /** Under the lock: {@code agent} no longer takes part; if it died after arriving, its arrival stays counted. */
+    void removeParticipant(Agent agent) {
+        long current;
+        long next;
+        do {
+            current = state.get();
+            boolean arrived = agent.arrivedAt == this && agent.arrivalPhase == phase(current);
+            next = current - ONE_PARTICIPANT - (arrived ? 0 : ONE_UNARRIVED);
+            if (participants(current) == 0 || (!arrived && unarrived(current) == 0)) {
+                throw new IllegalStateException(describe(current) + ": " + agent + " leaves, but it does not take part");
+            }
+        } while (!state.compareAndSet(current, next));
+        agent.arrivedAt = null;
+    }
+
+    /**
+     * Under the lock, when {@link #isComplete()}: starts the next phase and lets the agents that
+     * arrived go, in arrival order: each is given to {@code letGo} (which wakes it), but
+     * {@code going}, the completing arrival that trips and goes on running (null if a membership
+     * change trips). Returns how many agents went on: the participants.
+     */
+    int trip(Agent going, Consumer<Agent> letGo) {
+        long current = state.get();
+        if (!isComplete(current)) {
+            throw new IllegalStateException(describe(current) + " trips incomplete");
+        }
+        int participants = participants(current);
+        long next = ((long) ((phase(current) + 1) & PHASE_MASK) << PHASE_SHIFT)
+                | ((long) participants << PARTICIPANTS_SHIFT) | participants;
+        if (!state.compareAndSet(current, next)) {
+            throw new IllegalStateException(describe(current) + " changed while it tripped");
+        }
+        for (Agent agent = inArrivalOrder(arrivals.getAndSet(null)); agent != null; ) {
+            Agent following = agent.nextArrival;
+            agent.nextArrival = null;
+            if (agent != going) {
+                letGo.accept(agent);
+            }
+            agent = following;
+        }
+        return participants;
+    }
+
+    /** Reverses a detached stack (last arrival first) in place. */
+    private static Agent inArrivalOrder(Agent lastArrived) {
+        Agent reversed = null;
+        Agent agent = lastArrived;
+        while (agent != null) {
+            Agent earlier = agent.nextArrival;
+            agent.nextArrival = reversed;
+            reversed = agent;
+            agent = earlier;
+        }
+        return reversed;
+    }
+
+    private static boolean isComplete(long state) {
+        return unarrived(state) == 0 && participants(state) > 0;
+    }
+
+    private static int unarrived(long state) {
+        return (int) (state & COUNT_MASK);
+    }
+
+    private static int participants(long state) {
+        return (int) ((state >>> PARTICIPANTS_SHIFT) & COUNT_MASK);
+    }
+
+    private static int phase(long state) {
+        return (int) (state >>> PHASE_SHIFT);
+    }
+
+    private String describe(long state) {
+        return "barrier of " + domain.name() + " (phase " + phase(state) + ", "
+                + (participants(state) - unarrived(state)) + "/" + participants(state) + " arrived)";
+    }
+
+    @Override
+    public String toString() {
+        return describe(state.get());
+    }
+}
