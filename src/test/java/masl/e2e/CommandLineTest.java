@@ -55,7 +55,7 @@ class CommandLineTest {
         try (MaslProcess masl = MaslProcess.start(folder.resolve("journal.txt").toFile(), "run", program.toString(),
                 "--trace", trace.toString())) {
             awaitRecords(trace, masl);
-            masl.process().destroy();
+            masl.terminate();
             assertEquals(143, masl.awaitExit(), masl::toString);
             assertEquals("masl: the mission was stopped by a signal: Ctrl-C (SIGINT) or SIGTERM\n", masl.err());
         }

@@ -72,6 +72,14 @@ final class MaslProcess implements AutoCloseable {
     }
 
     /**
+     * Sends it SIGTERM, as {@link Process#destroy()} does, but through its {@link ProcessHandle}:
+     * {@code destroy()} also closes the pipe its standard error is read from, losing what it says as it ends.
+     */
+    void terminate() {
+        process.toHandle().destroy();
+    }
+
+    /**
      * The first line of standard error, from the next one not taken yet, that {@code reading} makes
      * something of; empty if standard error closed or {@code timeout} elapsed first.
      */

@@ -1,7 +1,5 @@
 package masl.cli;
 
-import masl.jade.StackTraceFolding;
-
 /** Entry point of the {@code masl} command line. */
 public final class Main {
 

@@ -1,4 +1,4 @@
-package masl.jade;
+package masl.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 

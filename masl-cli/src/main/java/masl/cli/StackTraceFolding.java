@@ -1,4 +1,4 @@
-package masl.jade;
+package masl.cli;
 
 import java.io.ByteArrayOutputStream;
 import java.io.OutputStream;
@@ -11,12 +11,13 @@ import java.util.regex.Pattern;
  * A standard error on which every stack trace is one line: its first (the exception and its
  * message); its frames, {@code ... n more}, {@code Caused by:} lines and JADE's own
  * {@code Nested Exception:} lines are dropped. JADE prints some of its faults with
- * {@code printStackTrace} rather than through its log (a peer container whose JVM ended abruptly, a
- * platform that cannot be joined): a process that runs JADE ({@code masl run --platform jade},
- * {@code masl container}) installs it as {@code System.err} so that those are one line too
- * ({@link JadeLog} makes JADE's log records one line). Thread-safe, as a {@link PrintStream} is.
+ * {@code printStackTrace} rather than through its log (a peer container whose JVM ended abruptly):
+ * the {@code masl} command ({@link Main}) installs it as {@code System.err} so that those are one line
+ * too (masl-jade-bridge's {@code JadeLog} makes JADE's log records one line; the CLI itself never
+ * prints a stack trace). No JADE class is involved: an in-process run loads none. Thread-safe, as a
+ * {@link PrintStream} is.
  */
-public final class StackTraceFolding extends OutputStream {
+final class StackTraceFolding extends OutputStream {
 
     private static final Pattern CONTINUATION = Pattern.compile(
             "\\s+at \\S.*|\\s*\\.\\.\\. \\d+ more|\\s*(Caused by|Suppressed): .*|\\s*Nested Exception:\\s*");
@@ -29,7 +30,7 @@ public final class StackTraceFolding extends OutputStream {
     }
 
     /** {@code target}, stack traces folded, flushed at each line; text is encoded in the platform's charset. */
-    public static PrintStream around(PrintStream target) {
+    static PrintStream around(PrintStream target) {
         return new PrintStream(new StackTraceFolding(target), true, Charset.defaultCharset());
     }
 
