@@ -53,7 +53,7 @@ class CommandLineTest {
                 """);
         Path trace = folder.resolve("trace.jsonl");
         try (MaslProcess masl = MaslProcess.start(folder.resolve("journal.txt").toFile(), "run", program.toString(),
-                "--trace", trace.toString())) {
+                "--trace", trace.toString(), "--quiet")) {
             awaitRecords(trace, masl);
             masl.terminate();
             assertEquals(143, masl.awaitExit(), masl::toString);
@@ -77,7 +77,7 @@ class CommandLineTest {
     void aJournalThatCannotBeWrittenFailsTheRun() throws Exception {
         File full = new File("/dev/full");
         assertTrue(full.exists(), "this test needs Linux's /dev/full");
-        try (MaslProcess masl = MaslProcess.start(full, "run", "missions/hello.masl")) {
+        try (MaslProcess masl = MaslProcess.start(full, "run", "missions/hello.masl", "--quiet")) {
             assertEquals(2, masl.awaitExit(), masl::toString);
             assertEquals("masl: cannot write the journal to standard output\n", masl.err());
         }
@@ -87,7 +87,7 @@ class CommandLineTest {
     @Test
     void joiningAPlatformWhoseMainContainerIsNotThereIsOneLine() throws Exception {
         int port = freePort();
-        try (MaslProcess masl = MaslProcess.start(folder.resolve("journal.txt").toFile(), "run", "missions/hello.masl",
+        try (MaslProcess masl = MaslProcess.start(folder.resolve("journal.txt").toFile(), "run", "missions/hello.masl", "--quiet",
                 "--platform", "jade", "--main-host", "127.0.0.1", "--main-port", String.valueOf(port))) {
             assertEquals(2, masl.awaitExit(), masl::toString);
             assertEquals("masl: cannot join the JADE platform at 127.0.0.1:" + port + " (is its main container running?)\n",
@@ -110,7 +110,7 @@ class CommandLineTest {
                 "--name", "c2", "--agent-path", "src/test/resources/faults/agents", "--timeout", "60",
                 "--secret-file", secret);
                 MaslProcess run = MaslProcess.start(folder.resolve("journal.txt").toFile(), "run",
-                        "src/test/resources/faults/home_only.masl", "--platform", "jade", "--port", port, "--place", "b=c2",
+                        "src/test/resources/faults/home_only.masl", "--quiet", "--platform", "jade", "--port", port, "--place", "b=c2",
                         "--timeout", "60", "--secret-file", secret)) {
             assertEquals(2, run.awaitExit(), run::toString);
             assertEquals("masl: platform ready: host=127.0.0.1 port=" + port + " platform=127.0.0.1:" + port + "/JADE\n"

@@ -20,7 +20,8 @@ import masl.cli.Main;
  * The {@code masl} command as a process of its own ({@code java -cp CLASSPATH masl.cli.Main …}, the
  * class path this test runs with), for what only a real process shows: signals, standard output
  * that fails, a line another JVM waits for. Its standard error is read line by line as it comes
- * ({@link #awaitErrLine}); {@link #close()} ends it in any case.
+ * ({@link #awaitErrLine}); {@link #close()} ends it in any case. A test that reads standard error as
+ * the diagnostics alone runs with {@code --quiet} (no progress lines).
  */
 final class MaslProcess implements AutoCloseable {
 

@@ -28,7 +28,7 @@ class ReadinessLineTest {
         Path secretFile = Files.createTempDirectory("masl-mission").resolve("secret");
         Path journal = secretFile.resolveSibling("journal.txt");
         try (MaslProcess run = MaslProcess.start(journal.toFile(), "run", "src/test/resources/examples/e2_shared_and_local.masl",
-                "--platform", "jade", "--place", "b=c2,d=c2", "--timeout", "60", "--secret-file",
+                "--quiet", "--platform", "jade", "--place", "b=c2,d=c2", "--timeout", "60", "--secret-file",
                 secretFile.toString())) {
             Optional<Readiness> platform = run.awaitErrLine(Readiness::parse, WITHIN);
             assertTrue(platform.isPresent(), run.toString());

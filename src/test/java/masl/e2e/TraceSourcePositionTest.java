@@ -22,7 +22,7 @@ import org.junit.jupiter.api.io.TempDir;
 @Timeout(120)
 class TraceSourcePositionTest {
 
-    private static final Set<String> MISSION_WIDE = Set.of("wave-started", "wave-ended", "barrier-tripped", "mission-ended");
+    private static final Set<String> MISSION_WIDE = Set.of("mission-started", "wave-started", "wave-ended", "barrier-tripped", "mission-ended");
 
     @TempDir
     Path folder;

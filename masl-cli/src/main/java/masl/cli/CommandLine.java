@@ -13,14 +13,14 @@ final class CommandLine {
 
     /** The options each command accepts; those in {@link #FLAGS} take no value. */
     private static final Map<String, Set<String>> OPTIONS = Map.of(
-            "check", Set.of("--agent-path"),
-            "compile", Set.of("--agent-path", "-d"),
-            "run", Set.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--platform", "--main-host",
+            "check", Set.of("--agent-path", "--quiet"),
+            "compile", Set.of("--agent-path", "-d", "--quiet"),
+            "run", Set.of("--agent-path", "--threads", "--quiet", "--seed", "--timeout", "--call-timeout", "--trace", "--platform", "--main-host",
                     "--main-port", "--sim", "--out", "--place", "--port", "--secret-file"),
             "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout", "--secret-file"),
             "timeline", Set.of("-o"),
             "lsp", Set.of("--agent-path"));
-    private static final Set<String> FLAGS = Set.of("--threads");
+    private static final Set<String> FLAGS = Set.of("--threads", "--quiet");
     /**
      * The longest {@code --timeout}: ten years, within the nanosecond arithmetic of deadlines
      * ({@code Long.MAX_VALUE} ns is 292 years), and longer than any mission.
@@ -35,6 +35,8 @@ final class CommandLine {
     String outputFolder;
     String outputFile;
     boolean threads;
+    /** No progress lines on standard error ({@link Progress}). */
+    boolean quiet;
     Long seed;
     Long timeoutSeconds;
     Long callTimeoutMillis;
@@ -73,7 +75,11 @@ final class CommandLine {
                 if (arg.contains("=")) {
                     throw new UsageException(name + " takes no value");
                 }
-                line.threads = true;
+                if (name.equals("--threads")) {
+                    line.threads = true;
+                } else {
+                    line.quiet = true;
+                }
                 continue;
             }
             String value;

@@ -26,15 +26,15 @@ public final class Masl {
     static final int INTERNAL_ERROR = 70;
 
     static final String USAGE_TEXT = """
-            usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE]
+            usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE] [--quiet]
                            [--call-timeout MS] [--platform inproc|jade]
                            [--main-host HOST --main-port PORT | --port PORT]
                            [--place AGENT=CONTAINER,... | --place FILE] [--secret-file FILE]
                    masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
                            [--timeout SECONDS] [--secret-file FILE]
-                   masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH]
-                   masl compile FILE -d DIR [--agent-path PATH]
-                   masl check FILE [--agent-path PATH]
+                   masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH] [--quiet]
+                   masl compile FILE -d DIR [--agent-path PATH] [--quiet]
+                   masl check FILE [--agent-path PATH] [--quiet]
                    masl timeline TRACE -o FILE.html
                    masl lsp [--agent-path PATH]
               run       translate a MASL program, compile it in memory and run its mission in this process;
@@ -46,8 +46,9 @@ public final class Masl {
               compile   translate a MASL program into Java sources under DIR (one folder per package)
               check     report every error of a MASL program and of the descriptors it imports: all that
                         compile and run would report, as they translate and compile it, without running it
-              timeline  draw a trace written by run --trace as a self-contained HTML page: one lane per
-                        agent over time, coloured by block, with barrier trips, waves, events and invocations
+              timeline  draw a trace written by run --trace (or run --sim) as a self-contained HTML page: one
+                        lane per agent over time, coloured by block, with barrier trips, waves, invocations,
+                        events and failures; zoom, pan and filter it in a browser
               lsp       serve the Language Server Protocol on standard input and output for an editor: the
                         diagnostics of check on every change, completion, hover, go to definition, outline
             options:
@@ -61,6 +62,9 @@ public final class Masl {
                                   --platform jade it also bounds each FIPA agent's call from outside the mission
                                   (default for those: 10000)
               --trace FILE        write the trace (one JSON object per line) to FILE
+              --quiet             no progress on standard error: by default, work running longer than a second
+                                  (translating, compiling, a --sim run: simulated time, real-time factor,
+                                  journal lines) is shown there, on one line rewritten on a terminal
               --platform P        inproc (default): run in this process; jade: run inside a JADE platform,
                                   one JADE agent per MASL agent, registered with the DF, answering FIPA requests
               --main-host HOST, --main-port PORT
@@ -81,6 +85,7 @@ public final class Masl {
     private final InputStream in;
     private final PrintStream out;
     private final PrintStream err;
+    private final Progress.Settings progress;
 
     public Masl(PrintStream out, PrintStream err) {
         this(System.in, out, err);
@@ -88,9 +93,23 @@ public final class Masl {
 
     /** @param in what {@code masl lsp} reads its client's messages from */
     public Masl(InputStream in, PrintStream out, PrintStream err) {
+        this(in, out, err, Progress.Settings.standard());
+    }
+
+    /**
+     * This command without progress lines, as if every run had {@code --quiet}: for a caller that
+     * reads standard error as the diagnostics alone (tests, tools embedding the command).
+     */
+    public Masl withoutProgress() {
+        return new Masl(in, out, err, progress.quiet(true));
+    }
+
+    /** @param progress how long work is reported on {@code err} (tests give their own clock) */
+    Masl(InputStream in, PrintStream out, PrintStream err, Progress.Settings progress) {
         this.in = in;
         this.out = out;
         this.err = err;
+        this.progress = progress;
     }
 
     /**
@@ -117,16 +136,9 @@ public final class Masl {
                 return OK;
             }
             CommandLine line = CommandLine.parse(args);
-            return switch (line.command) {
-                case "check" -> check(line);
-                case "compile" -> compile(line);
-                case "run" -> line.scenarioFile != null ? new SimRun(out, err).run(line)
-                        : new RunCommand(out, err).run(line, readProgram(line.singleFile()));
-                case "timeline" -> new TimelineCommand(err).run(line);
-                case "container" -> new ContainerCommand(out, err).run(line);
-                case "lsp" -> new LspCommand(in, out, err).run(line);
-                default -> throw new UsageException("unknown command '" + line.command + "'");
-            };
+            try (Progress shown = new Progress(err, progress.quiet(line.quiet))) {
+                return dispatch(line, shown);
+            }
         } catch (UsageException usage) {
             err.println("masl: " + usage.getMessage());
             err.print(USAGE_TEXT);
@@ -141,6 +153,19 @@ public final class Masl {
         }
     }
 
+    private int dispatch(CommandLine line, Progress progress) throws UsageException {
+        return switch (line.command) {
+            case "check" -> check(line, progress);
+            case "compile" -> compile(line, progress);
+            case "run" -> line.scenarioFile != null ? new SimRun(out, err, progress).run(line)
+                    : new RunCommand(out, err, progress).run(line, readProgram(line.singleFile()));
+            case "timeline" -> new TimelineCommand(err).run(line);
+            case "container" -> new ContainerCommand(out, err).run(line);
+            case "lsp" -> new LspCommand(in, out, err).run(line);
+            default -> throw new UsageException("unknown command '" + line.command + "'");
+        };
+    }
+
     /** Keeps javac's messages for the bug report in a file, since the user is not meant to read them. */
     private static String savedReport(GeneratedCodeException bug) {
         try {
@@ -152,17 +177,17 @@ public final class Masl {
         }
     }
 
-    private int check(CommandLine line) throws UsageException {
+    private int check(CommandLine line, Progress progress) throws UsageException {
         SourceFile source = readProgram(line.singleFile());
-        return Pipeline.load(source, AgentPath.parse(line.agentPath), err) == null ? PROGRAM_ERRORS : OK;
+        return Pipeline.load(source, AgentPath.parse(line.agentPath), err, progress) == null ? PROGRAM_ERRORS : OK;
     }
 
-    private int compile(CommandLine line) throws UsageException {
+    private int compile(CommandLine line, Progress progress) throws UsageException {
         SourceFile source = readProgram(line.singleFile());
         if (line.outputFolder == null) {
             throw new UsageException("masl compile needs -d DIR, the folder to write the Java sources into");
         }
-        Pipeline.Loaded loaded = Pipeline.load(source, AgentPath.parse(line.agentPath), err);
+        Pipeline.Loaded loaded = Pipeline.load(source, AgentPath.parse(line.agentPath), err, progress);
         if (loaded == null) {
             return PROGRAM_ERRORS;
         }

@@ -25,13 +25,29 @@ final class Pipeline {
     private Pipeline() {
     }
 
-    /** Runs the pipeline on {@code source}, its diagnostics to {@code err}; null when it has errors. */
-    static Loaded load(SourceFile source, AgentPath agentPath, PrintStream err) {
-        Translation translation = new Translator(agentPath).translate(source);
+    /**
+     * Runs the pipeline on {@code source}, its diagnostics to {@code err}; null when it has errors.
+     * Translating and compiling each say so through {@code progress} when they take long.
+     */
+    static Loaded load(SourceFile source, AgentPath agentPath, PrintStream err, Progress progress) {
+        Translation translation;
+        progress.begin(elapsed -> "masl: translating " + source.name() + " (" + Progress.seconds(elapsed) + ")");
+        try {
+            translation = new Translator(agentPath).translate(source);
+        } finally {
+            progress.end();
+        }
         new DiagnosticPrinter(Map.of(source.name(), source.text())).print(translation.diagnostics().sorted(), err);
         if (!translation.succeeded()) {
             return null;
         }
-        return new Loaded(translation, MissionLoader.load(translation, agentPath));
+        int classes = translation.javaSources().size();
+        progress.begin(elapsed -> "masl: compiling the Java generated for " + source.name() + " (" + classes
+                + (classes == 1 ? " class, " : " classes, ") + Progress.seconds(elapsed) + ")");
+        try {
+            return new Loaded(translation, MissionLoader.load(translation, agentPath));
+        } finally {
+            progress.end();
+        }
     }
 }

@@ -33,10 +33,12 @@ final class RunCommand {
 
     private final PrintStream out;
     private final PrintStream err;
+    private final Progress progress;
 
-    RunCommand(PrintStream out, PrintStream err) {
+    RunCommand(PrintStream out, PrintStream err, Progress progress) {
         this.out = out;
         this.err = err;
+        this.progress = progress;
     }
 
     int run(CommandLine line, SourceFile source) throws UsageException {
@@ -57,7 +59,7 @@ final class RunCommand {
 
     private int translateAndRun(CommandLine line, SourceFile source, StopOnSignal signals) throws UsageException {
         AgentPath agentPath = AgentPath.parse(line.agentPath);
-        Pipeline.Loaded compiled = Pipeline.load(source, agentPath, err);
+        Pipeline.Loaded compiled = Pipeline.load(source, agentPath, err, progress);
         if (compiled == null) {
             return Masl.PROGRAM_ERRORS;
         }

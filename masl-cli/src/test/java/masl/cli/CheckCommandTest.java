@@ -24,11 +24,17 @@ class CheckCommandTest {
 
     /** One run of the command, with what it printed. */
     record Run(int status, String out, String err) {
+        /** A run without progress lines: standard error holds the diagnostics alone, however slow the machine. */
         static Run of(String... args) {
+            return with(Progress.Settings.standard().quiet(true), args);
+        }
+
+        /** A run whose progress lines follow {@code progress} (its clock, its terminal or not). */
+        static Run with(Progress.Settings progress, String... args) {
             ByteArrayOutputStream out = new ByteArrayOutputStream();
             ByteArrayOutputStream err = new ByteArrayOutputStream();
-            int status = new Masl(new PrintStream(out, true, StandardCharsets.UTF_8),
-                    new PrintStream(err, true, StandardCharsets.UTF_8)).run(args);
+            int status = new Masl(System.in, new PrintStream(out, true, StandardCharsets.UTF_8),
+                    new PrintStream(err, true, StandardCharsets.UTF_8), progress).run(args);
             return new Run(status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
         }
     }

@@ -1,11 +1,13 @@
 package masl.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import masl.cli.CheckCommandTest.Run;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -43,6 +45,57 @@ class SimRunTest {
                   <agent name="k" model="wheeled"><pose x="0" y="0" heading="0"/></agent>
                   <mission file="drive.masl"/>
                 </scenario>""");
+    }
+
+    /** A clock that moves a quarter of a second each time it is read: every run looks long. */
+    private static Progress.Settings slowClock(boolean terminal) {
+        java.util.concurrent.atomic.AtomicLong now = new java.util.concurrent.atomic.AtomicLong();
+        return new Progress.Settings(() -> now.addAndGet(250_000_000L), java.time.Duration.ofSeconds(1),
+                java.time.Duration.ofSeconds(5), terminal, false);
+    }
+
+    /** A clock that never moves: every run is shorter than a second. */
+    private static final Progress.Settings FROZEN_CLOCK = new Progress.Settings(() -> 0L, java.time.Duration.ofSeconds(1),
+            java.time.Duration.ofSeconds(5), false, false);
+
+    @Test
+    void aLongRunReportsSimulatedTimeRealTimeFactorAndJournalOnStandardErrorOnly() throws IOException {
+        Run run = Run.with(slowClock(false), "run", "--sim", scenario(DRIVE).toString());
+
+        assertEquals(0, run.status(), run.err());
+        assertEquals("drove\n", run.out(), "the journal alone on standard output");
+        List<String> lines = run.err().lines().filter(line -> line.startsWith("masl: simulated")).toList();
+        assertTrue(lines.size() >= 2, "a line every few seconds: " + run.err());
+        assertTrue(lines.get(0).matches("masl: simulated \\d+\\.\\d s, \\d+\\.\\d\\dx real time, journal 0 lines"), lines.get(0));
+        assertTrue(lines.get(lines.size() - 1).endsWith("journal 1 line") || lines.get(lines.size() - 1).endsWith("journal 0 lines"),
+                lines.toString());
+    }
+
+    @Test
+    void onATerminalTheLineIsRewrittenInPlaceAndErasedAtTheEnd() throws IOException {
+        Run run = Run.with(slowClock(true), "run", "--sim", scenario(DRIVE).toString());
+
+        assertEquals(0, run.status(), run.err());
+        assertEquals("drove\n", run.out());
+        assertTrue(run.err().contains("\rmasl: simulated"), run.err());
+        int erased = run.err().lastIndexOf("\r\033[K");
+        assertTrue(run.err().substring(erased + 4).matches("masl: [0-9.]+ s simulated; output in .*\n"),
+                "the line is erased before the run's summary: " + run.err());
+        assertFalse(run.err().substring(0, erased).contains("\n"), "one line, rewritten: " + run.err());
+    }
+
+    @Test
+    void quietOrShortRunsShowNoProgress() throws IOException {
+        Path scenario = scenario(DRIVE);
+        Run quiet = Run.with(slowClock(false), "run", "--sim", scenario.toString(), "--quiet");
+        Run shortRun = Run.with(FROZEN_CLOCK, "run", "--sim", scenario.toString());
+
+        for (Run run : List.of(quiet, shortRun)) {
+            assertEquals(0, run.status(), run.err());
+            assertEquals("drove\n", run.out());
+            assertEquals(1, run.err().lines().count(), run.err());
+            assertTrue(run.err().matches("masl: [0-9.]+ s simulated; output in .*\n"), run.err());
+        }
     }
 
     @Test

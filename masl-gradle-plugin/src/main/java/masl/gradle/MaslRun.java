@@ -144,7 +144,8 @@ public class MaslRun extends JavaExec {
     }
 
     private List<String> arguments(File program) {
-        List<String> arguments = new ArrayList<>(List.of("run", ProjectModel.relative(projectDir, program)));
+        // Gradle shows its own progress; masl's would reach the build's output even under -q.
+        List<String> arguments = new ArrayList<>(List.of("run", ProjectModel.relative(projectDir, program), "--quiet"));
         String path = agentPath.getFiles().stream().map(File::getPath).collect(Collectors.joining(File.pathSeparator));
         if (!path.isEmpty()) {
             arguments.addAll(List.of("--agent-path", path));

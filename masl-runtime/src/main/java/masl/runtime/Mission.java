@@ -100,6 +100,8 @@ public final class Mission {
     public static final int OUTSIDE = -1;
 
     private final List<Agent> agents;
+    /** The agents' MASL names by proxy id, for the trace. */
+    private final List<String> agentNames;
     private final Map<EntryDefinition, Entry> entries;
     private final Scheduler scheduler;
     private final Journal journal;
@@ -148,6 +150,7 @@ public final class Mission {
             created.add(declaration.create(created.size(), this));
         }
         agents = Collections.unmodifiableList(created);
+        agentNames = builder.agents.stream().map(Builder.AgentDeclaration::name).toList();
         running = new AtomicInteger(agents.size());
         coordinator.addAgents(agents);
     }
@@ -177,6 +180,7 @@ public final class Mission {
         if (agents.isEmpty()) {
             ended.countDown();
         }
+        trace.record(new TraceEvent.MissionStarted(scheduler.nanoTime(), agentNames));
         scheduler.start(agents);
         MissionOutcome.Status status = awaitEnd(timeout);
         over = true;

@@ -1,8 +1,6 @@
 package masl.cli.timeline;
 
-import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Deque;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -10,10 +8,11 @@ import java.util.Set;
 import java.util.TreeMap;
 
 /**
- * What a trace says happened, laid out for drawing: per agent, the spans of time it spent in its
- * innermost block (running, or held at the block's entry or exit barrier); barrier trips; the
- * spans of each wave of each block; and every other record of an agent (events, invocations) as a
- * marker at its time.
+ * What a trace says happened, laid out for drawing: the agents by their MASL names; per agent, the
+ * spans of time it spent in its innermost block (running, or held at the block's entry or exit
+ * barrier); barrier trips; the spans of each wave of each block; invocations from caller to callee;
+ * events from their emitter to the agents that reacted; failures; and the other records of an
+ * agent as markers.
  */
 public final class Timeline {
 
@@ -26,27 +25,64 @@ public final class Timeline {
 
     public record WaveSpan(String block, String wave, long start, long end) { }
 
-    public record Marker(long nanos, int agent, String label) { }
+    /** How an invocation ended: the callee ran it, its permeability refused it, or the trace ends first. */
+    public enum Outcome { SERVED, DENIED, PENDING }
+
+    /**
+     * {@code requester} (-1: from outside the mission) invoked {@code member} of {@code callee} at
+     * {@code made}; at {@code resolved} the callee served it or its permeability state {@code state}
+     * denied it.
+     */
+    public record Invocation(long made, long resolved, int requester, int callee, String member, Outcome outcome,
+            String state, String source) { }
+
+    public enum EventKind { EMITTED, REACTED, DROPPED }
+
+    /**
+     * A MASL event's record on an agent's lane. A reaction's {@code emission} is the index, in
+     * {@link #events()}, of the latest emission of that event before it (-1 if none); {@code detail}
+     * is an emission's message, a reaction's block.
+     */
+    public record EventMark(long nanos, int agent, String name, EventKind kind, String detail, int emission,
+            String source) { }
+
+    public record Failure(long nanos, int agent, String cause, String source) { }
+
+    /**
+     * Any other record of an agent: {@code kind} {@code first-entry} when it enters a nested block for
+     * the first time, {@code left} when it leaves its outermost block, or the record's own kind
+     * ({@code countermeasure-fired}).
+     */
+    public record Marker(long nanos, int agent, String kind, String label, String source) { }
 
     private final boolean inRecordOrder;
     private final long start;
     private final long end;
+    private final Map<Integer, String> agents;
     private final Map<Integer, List<Span>> lanes;
     private final Set<String> blocks;
     private final List<Trip> trips;
     private final List<WaveSpan> waves;
+    private final List<Invocation> invocations;
+    private final List<EventMark> events;
+    private final List<Failure> failures;
     private final List<Marker> markers;
+    private final String status;
 
-    private Timeline(boolean inRecordOrder, long start, long end, Map<Integer, List<Span>> lanes, Set<String> blocks, List<Trip> trips,
-            List<WaveSpan> waves, List<Marker> markers) {
-        this.inRecordOrder = inRecordOrder;
-        this.start = start;
-        this.end = end;
-        this.lanes = lanes;
-        this.blocks = blocks;
-        this.trips = trips;
-        this.waves = waves;
-        this.markers = markers;
+    private Timeline(TimelineBuilder built) {
+        this.inRecordOrder = built.inRecordOrder;
+        this.start = built.start;
+        this.end = built.end;
+        this.agents = built.agents;
+        this.lanes = built.lanes;
+        this.blocks = built.blocks;
+        this.trips = built.trips;
+        this.waves = built.waves;
+        this.invocations = built.invocations;
+        this.events = built.events;
+        this.failures = built.failures;
+        this.markers = built.markers;
+        this.status = built.status;
     }
 
     /**
@@ -54,58 +90,7 @@ public final class Timeline {
      * sleeps: its clock is virtual) is laid out in record order instead, one unit per record.
      */
     public static Timeline of(List<TraceRecord> records) {
-        boolean inRecordOrder = records.size() > 1 && records.stream().mapToLong(TraceRecord::nanos).distinct().count() == 1;
-        if (inRecordOrder) {
-            List<TraceRecord> ordered = new ArrayList<>();
-            for (int i = 0; i < records.size(); i++) {
-                TraceRecord record = records.get(i);
-                ordered.add(new TraceRecord(record.line(), i, record.event(), record.agent(), record.block(), record.fields()));
-            }
-            records = ordered;
-        }
-        long start = records.stream().mapToLong(TraceRecord::nanos).min().orElse(0);
-        long end = records.stream().mapToLong(TraceRecord::nanos).max().orElse(0);
-        Map<Integer, AgentLane> agents = new TreeMap<>();
-        Set<String> blocks = new LinkedHashSet<>();
-        List<Trip> trips = new ArrayList<>();
-        List<WaveSpan> waves = new ArrayList<>();
-        Map<String, Long> openWaves = new TreeMap<>();
-        List<Marker> markers = new ArrayList<>();
-        for (TraceRecord record : records) {
-            if (record.block() != null) {
-                blocks.add(record.block());
-            }
-            switch (record.event()) {
-                case "entered", "waiting-in", "released", "waiting-out", "left" ->
-                        agents.computeIfAbsent(record.agent(), id -> new AgentLane(start)).apply(record);
-                case "barrier-tripped" -> trips.add(new Trip(record.nanos(), record.field("domain"), record.field("agents")));
-                case "wave-started" -> openWaves.put(record.block() + "#" + record.field("wave"), record.nanos());
-                case "wave-ended" -> {
-                    Long opened = openWaves.remove(record.block() + "#" + record.field("wave"));
-                    waves.add(new WaveSpan(record.block(), record.field("wave"), opened == null ? start : opened, record.nanos()));
-                }
-                default -> {
-                    if (record.hasAgent()) {
-                        markers.add(new Marker(record.nanos(), record.agent(), describe(record)));
-                    }
-                }
-            }
-        }
-        openWaves.forEach((key, opened) -> waves.add(new WaveSpan(key.substring(0, key.lastIndexOf('#')),
-                key.substring(key.lastIndexOf('#') + 1), opened, end)));
-        Map<Integer, List<Span>> lanes = new TreeMap<>();
-        agents.forEach((id, lane) -> lanes.put(id, lane.close(end)));
-        return new Timeline(inRecordOrder, start, end, lanes, blocks, trips, waves, markers);
-    }
-
-    private static String describe(TraceRecord record) {
-        StringBuilder label = new StringBuilder(record.event());
-        record.fields().forEach((name, value) -> {
-            if (!name.equals("nanos") && !name.equals("event") && !name.equals("agent")) {
-                label.append(' ').append(name).append('=').append(value);
-            }
-        });
-        return label.toString();
+        return new Timeline(new TimelineBuilder(records));
     }
 
     /** Whether times are record numbers rather than nanoseconds (see {@link #of}). */
@@ -119,6 +104,14 @@ public final class Timeline {
 
     public long end() {
         return end;
+    }
+
+    /**
+     * Every agent of the run by number, with its MASL name ({@code mission-started}), or
+     * {@code agent N} for a trace that does not name it; in increasing number.
+     */
+    public Map<Integer, String> agents() {
+        return agents;
     }
 
     /** Agent number to its spans, in time order; agents in increasing number. */
@@ -139,62 +132,139 @@ public final class Timeline {
         return waves;
     }
 
+    public List<Invocation> invocations() {
+        return invocations;
+    }
+
+    public List<EventMark> events() {
+        return events;
+    }
+
+    public List<Failure> failures() {
+        return failures;
+    }
+
     public List<Marker> markers() {
         return markers;
     }
 
-    /** One agent's chain of blocks and state as its records arrive. */
-    private static final class AgentLane {
-        private final Deque<String> chain = new ArrayDeque<>();
-        private final List<Span> spans = new ArrayList<>();
-        private State state = State.RUNNING;
-        private String waitingAt;
-        private long since;
+    /** How the mission ended ({@code mission-ended}), or null if the trace does not say. */
+    public String status() {
+        return status;
+    }
 
-        AgentLane(long start) {
-            this.since = start;
+    /** Reads the records once, in order, into the timeline's parts. */
+    private static final class TimelineBuilder {
+        private final boolean inRecordOrder;
+        private final long start;
+        private final long end;
+        private final Map<Integer, String> agents = new TreeMap<>();
+        private final Map<Integer, List<Span>> lanes = new TreeMap<>();
+        private final Set<String> blocks = new LinkedHashSet<>();
+        private final List<Trip> trips = new ArrayList<>();
+        private final List<WaveSpan> waves = new ArrayList<>();
+        private final List<Invocation> invocations = new ArrayList<>();
+        private final List<EventMark> events = new ArrayList<>();
+        private final List<Failure> failures = new ArrayList<>();
+        private final List<Marker> markers = new ArrayList<>();
+        private String status;
+        private final Map<Integer, AgentLane> agentLanes = new TreeMap<>();
+        private final Map<String, Long> openWaves = new TreeMap<>();
+        private final InvocationPairs pairs = new InvocationPairs();
+        private final Map<String, Integer> lastEmission = new TreeMap<>();
+        private final Set<String> firstEntries = new java.util.HashSet<>();
+
+        TimelineBuilder(List<TraceRecord> records) {
+            inRecordOrder = records.size() > 1 && records.stream().mapToLong(TraceRecord::nanos).distinct().count() == 1;
+            if (inRecordOrder) {
+                records = renumbered(records);
+            }
+            start = records.stream().mapToLong(TraceRecord::nanos).min().orElse(0);
+            end = records.stream().mapToLong(TraceRecord::nanos).max().orElse(0);
+            for (TraceRecord record : records) {
+                read(record);
+            }
+            openWaves.forEach((key, opened) -> waves.add(new WaveSpan(key.substring(0, key.lastIndexOf('#')),
+                    key.substring(key.lastIndexOf('#') + 1), opened, end)));
+            invocations.addAll(pairs.pending());
+            agentLanes.forEach((id, lane) -> lanes.put(id, lane.close(end)));
+            agents.keySet().forEach(id -> lanes.putIfAbsent(id, List.of()));
+            lanes.keySet().forEach(id -> agents.putIfAbsent(id, "agent " + id));
         }
 
-        void apply(TraceRecord record) {
-            close(record.nanos(), false);
+        private static List<TraceRecord> renumbered(List<TraceRecord> records) {
+            List<TraceRecord> ordered = new ArrayList<>();
+            for (int i = 0; i < records.size(); i++) {
+                TraceRecord r = records.get(i);
+                ordered.add(new TraceRecord(r.line(), i, r.event(), r.agent(), r.block(), r.fields(), r.lists()));
+            }
+            return ordered;
+        }
+
+        private void read(TraceRecord record) {
+            if (record.block() != null) {
+                blocks.add(record.block());
+            }
+            String source = record.field("source");
             switch (record.event()) {
-                case "entered" -> {
-                    chain.push(record.block());
-                    state = State.RUNNING;
-                }
-                case "waiting-in" -> {
-                    state = State.WAITING_IN;
-                    waitingAt = record.block();
-                }
-                case "released" -> {
-                    // A synchronous block's members are released into it, with no "entered" record.
-                    if (!record.block().equals(chain.peek())) {
-                        chain.push(record.block());
+                case "mission-started" -> {
+                    List<String> names = record.list("agents");
+                    for (int id = 0; id < names.size(); id++) {
+                        agents.put(id, names.get(id));
                     }
-                    state = State.RUNNING;
                 }
-                case "waiting-out" -> {
-                    state = State.WAITING_OUT;
-                    waitingAt = record.block();
+                case "entered", "waiting-in", "released", "waiting-out", "left" -> membership(record, source);
+                case "barrier-tripped" -> trips.add(new Trip(record.nanos(), record.field("domain"), record.field("agents")));
+                case "wave-started" -> openWaves.put(record.block() + "#" + record.field("wave"), record.nanos());
+                case "wave-ended" -> {
+                    Long opened = openWaves.remove(record.block() + "#" + record.field("wave"));
+                    waves.add(new WaveSpan(record.block(), record.field("wave"), opened == null ? start : opened, record.nanos()));
                 }
+                case "invocation-made" -> pairs.made(record);
+                case "invocation-served" -> invocations.add(pairs.resolved(record, Outcome.SERVED));
+                case "invocation-denied" -> invocations.add(pairs.resolved(record, Outcome.DENIED));
+                case "event-emitted" -> {
+                    lastEmission.put(record.field("name"), events.size());
+                    events.add(new EventMark(record.nanos(), record.agent(), record.field("name"), EventKind.EMITTED,
+                            record.field("message"), -1, source));
+                }
+                case "event-reacted" -> events.add(new EventMark(record.nanos(), record.agent(), record.field("name"),
+                        EventKind.REACTED, record.block(), lastEmission.getOrDefault(record.field("name"), -1), source));
+                case "event-dropped" -> events.add(new EventMark(record.nanos(), record.agent(), record.field("name"),
+                        EventKind.DROPPED, null, -1, source));
+                case "agent-failed" -> failures.add(new Failure(record.nanos(), record.agent(), record.field("cause"), source));
+                case "mission-ended" -> status = record.field("status");
                 default -> {
-                    chain.remove(record.block());
-                    state = State.RUNNING;
+                    if (record.hasAgent()) {
+                        markers.add(new Marker(record.nanos(), record.agent(), record.event(), describe(record), source));
+                    }
                 }
             }
-            since = record.nanos();
         }
 
-        List<Span> close(long end) {
-            close(end, true);
-            return spans;
-        }
-
-        private void close(long at, boolean last) {
-            String block = state == State.RUNNING ? chain.peek() : waitingAt;
-            if (block != null && (at > since || last)) {
-                spans.add(new Span(since, Math.max(at, since), block, state));
+        private void membership(TraceRecord record, String source) {
+            AgentLane lane = agentLanes.computeIfAbsent(record.agent(), id -> new AgentLane(start));
+            boolean nested = lane.depth() > 0;
+            lane.apply(record);
+            boolean entering = record.event().equals("entered") || record.event().equals("released");
+            // Entering the outermost block is where the lane begins: only nested blocks are marked.
+            if (entering && nested && firstEntries.add(record.agent() + ">" + record.block())) {
+                markers.add(new Marker(record.nanos(), record.agent(), "first-entry", "enters " + record.block(), source));
             }
+            if (record.event().equals("left") && lane.outside()) {
+                markers.add(new Marker(record.nanos(), record.agent(), "left",
+                        "left " + record.block() + " (" + record.field("cause") + ")", source));
+            }
+        }
+
+        private static String describe(TraceRecord record) {
+            StringBuilder label = new StringBuilder(record.event());
+            record.fields().forEach((name, value) -> {
+                if (!List.of("nanos", "event", "agent", "line", "source").contains(name)) {
+                    label.append(' ').append(name).append('=').append(value);
+                }
+            });
+            return label.toString();
         }
     }
 }

@@ -15,8 +15,10 @@ import java.util.Map;
 
 /**
  * Reads a trace written by {@code masl run --trace FILE}: one JSON object per line, each with at
- * least {@code nanos} (a number) and {@code event} (a string). Blank lines are skipped; anything
- * else is an error naming the file, line and column.
+ * least {@code nanos} (a number) and {@code event} (a string). A field whose value is JSON
+ * {@code null} (the block of a system event) is absent, not the text {@code "null"}; arrays (the
+ * agents' names of {@code mission-started}) are lists. Blank lines are skipped; anything else is
+ * an error naming the file, line and column.
  */
 public final class TraceReader {
 
@@ -62,12 +64,19 @@ public final class TraceReader {
             throw new TraceFormatException(file, line, 1, "\"agent\" must be an agent's number");
         }
         Map<String, String> fields = new LinkedHashMap<>();
+        Map<String, List<String>> lists = new LinkedHashMap<>();
         for (Iterator<Map.Entry<String, JsonNode>> all = node.fields(); all.hasNext(); ) {
             Map.Entry<String, JsonNode> field = all.next();
-            fields.put(field.getKey(), field.getValue().isTextual() ? field.getValue().asText() : field.getValue().toString());
+            JsonNode value = field.getValue();
+            if (value.isArray()) {
+                List<String> items = new ArrayList<>();
+                value.forEach(item -> items.add(item.isTextual() ? item.asText() : item.toString()));
+                lists.put(field.getKey(), items);
+            } else if (!value.isNull()) {
+                fields.put(field.getKey(), value.isTextual() ? value.asText() : value.toString());
+            }
         }
-        JsonNode block = node.get("block");
         return new TraceRecord(line, nanos.asLong(), event.asText(), agent == null ? TraceRecord.NO_AGENT : agent.asInt(),
-                block == null ? null : block.asText(), fields);
+                fields.get("block"), fields, lists);
     }
 }

@@ -21,7 +21,7 @@ class TimelineTest {
             {"nanos":2000,"event":"released","agent":0,"block":"main","wave":1}
             {"nanos":2000,"event":"released","agent":1,"block":"main","wave":1}
             {"nanos":3000,"event":"entered","agent":0,"block":"work <&>"}
-            {"nanos":4000,"event":"event-emitted","agent":0,"block":"work <&>","event-name":"alarm"}
+            {"nanos":4000,"event":"event-emitted","agent":0,"block":"work <&>","name":"alarm"}
             {"nanos":5000,"event":"left","agent":0,"block":"work <&>","cause":"end"}
             {"nanos":6000,"event":"barrier-tripped","domain":"main","agents":2}
 
@@ -46,8 +46,8 @@ class TimelineTest {
                 new Span(2000, 8000, "main", State.RUNNING)), timeline.lanes().get(1));
         assertEquals(List.of(new Timeline.Trip(6000, "main", "2")), timeline.trips());
         assertEquals(List.of(new Timeline.WaveSpan("main", "1", 2000, 8000)), timeline.waves());
-        assertEquals(1, timeline.markers().size());
-        assertTrue(timeline.markers().get(0).label().contains("event-name=alarm"));
+        assertEquals(List.of(new Timeline.EventMark(4000, 0, "alarm", Timeline.EventKind.EMITTED, null, -1, null)),
+                timeline.events());
         assertFalse(timeline.inRecordOrder());
     }
 
@@ -61,14 +61,49 @@ class TimelineTest {
 
     @Test
     void thePageIsSelfContainedAndEscapesNames() throws Exception {
-        String page = new TimelineHtml(Timeline.of(read(TRACE)), "trace <1>").render();
+        String page = new TimelineHtml(Timeline.of(read(TRACE.replace("work <&>", "</script><b>x"))), "trace <1>").render();
 
         assertTrue(page.startsWith("<!DOCTYPE html>"));
-        assertTrue(page.contains("work &lt;&amp;&gt;"));
-        assertFalse(page.contains("work <&>"));
-        assertFalse(page.contains("<script"), "no script");
+        assertTrue(page.contains("<title>trace &lt;1&gt;</title>"));
+        assertTrue(page.contains("<\\/script><b>x"), "a name in the data cannot end its script");
+        assertEquals(2, page.split("</script>", -1).length - 1, "the data's and the drawing's scripts only");
+        assertFalse(page.contains("<script src"), "no external script");
         assertFalse(page.contains("<link"), "no external style");
-        assertFalse(page.replace("xmlns=\"http://www.w3.org/2000/svg\"", "").contains("http"), "nothing fetched");
+        assertFalse(page.replace("http://www.w3.org/2000/svg", "").contains("http"), "nothing fetched");
+    }
+
+    private static final String E5_LIKE = """
+            {"nanos":0,"event":"mission-started","agents":["a","b"]}
+            {"nanos":10,"event":"entered","agent":0,"block":"main"}
+            {"nanos":10,"event":"entered","agent":1,"block":"main"}
+            {"nanos":20,"event":"invocation-made","requester":0,"callee":1,"member":"getProxyID","line":8,"source":"e5.masl:8: seen = b.getProxyID();"}
+            {"nanos":30,"event":"invocation-denied","requester":0,"callee":1,"member":"getProxyID","state":"nothing"}
+            {"nanos":40,"event":"event-emitted","agent":0,"name":"timeout","block":null,"message":"getProxyID","receivers":1}
+            {"nanos":50,"event":"event-reacted","agent":0,"name":"timeout","block":"main","reaction":"timeout"}
+            {"nanos":60,"event":"entered","agent":1,"block":"tick"}
+            {"nanos":60,"event":"left","agent":1,"block":"tick","cause":"end"}
+            {"nanos":70,"event":"left","agent":1,"block":"main","cause":"failed"}
+            {"nanos":70,"event":"agent-failed","agent":1,"cause":"java.lang.ArithmeticException: / by zero"}
+            {"nanos":80,"event":"mission-ended","status":"failed"}
+            """;
+
+    @Test
+    void agentsAreNamedInvocationsPairedAndSystemEventsNamedNoBlock() throws Exception {
+        Timeline timeline = Timeline.of(read(E5_LIKE));
+
+        assertEquals(java.util.Map.of(0, "a", 1, "b"), timeline.agents());
+        assertEquals(List.of("main", "tick"), List.copyOf(timeline.blocks()), "the system event timeout is no block");
+        assertEquals(List.of(new Timeline.Invocation(20, 30, 0, 1, "getProxyID", Timeline.Outcome.DENIED, "nothing",
+                "e5.masl:8: seen = b.getProxyID();")), timeline.invocations());
+        assertEquals(0, timeline.events().get(1).emission(), "the reaction answers the emission");
+        assertEquals(List.of(new Timeline.Failure(70, 1, "java.lang.ArithmeticException: / by zero", null)), timeline.failures());
+        assertTrue(timeline.lanes().get(1).contains(new Span(60, 60, "tick", State.RUNNING)),
+                "a block entered and left at one time is kept: " + timeline.lanes().get(1));
+        assertEquals(new Timeline.Marker(60, 1, "first-entry", "enters tick", null), timeline.markers().get(0));
+        assertEquals(new Timeline.Marker(70, 1, "left", "left main (failed)", null), timeline.markers().get(1));
+        assertEquals("failed", timeline.status());
+        String page = new TimelineHtml(timeline, "e5").render();
+        assertFalse(page.contains("\"null\""), "no block named null");
     }
 
     @Test

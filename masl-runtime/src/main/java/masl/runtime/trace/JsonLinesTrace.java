@@ -34,7 +34,10 @@ public final class JsonLinesTrace implements Trace, Flushable {
             return;
         }
         String line;
-        if (event instanceof TraceEvent.MissionEnded e) {
+        if (event instanceof TraceEvent.MissionStarted e) {
+            line = head(e.nanos(), "mission-started") + ",\"agents\":["
+                    + String.join(",", e.agents().stream().map(JsonLinesTrace::string).toList()) + "]";
+        } else if (event instanceof TraceEvent.MissionEnded e) {
             ended = true;
             line = head(e.nanos(), "mission-ended") + ",\"status\":" + string(e.status())
                     + (e.reason() == null ? "" : ",\"reason\":" + string(e.reason()));

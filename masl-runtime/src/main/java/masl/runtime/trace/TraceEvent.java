@@ -16,6 +16,17 @@ public sealed interface TraceEvent {
         return null;
     }
 
+    /**
+     * The mission starts with these agents: {@code agents.get(id)} is the MASL name of the agent
+     * whose proxy id is {@code id}. The first record of a trace.
+     */
+    record MissionStarted(long nanos, java.util.List<String> agents) implements TraceEvent {
+
+        public MissionStarted {
+            agents = java.util.List.copyOf(agents);
+        }
+    }
+
     /** The agent passed the test of an asynchronous or scalar block and is an active member. */
     record Entered(long nanos, int agent, String block, String source) implements TraceEvent { }
 

@@ -31,6 +31,13 @@ class JsonLinesTraceTest {
     }
 
     @Test
+    void startsWithTheAgentsMaslNamesByProxyId() {
+        StringWriter out = new StringWriter();
+        new JsonLinesTrace(out).record(new TraceEvent.MissionStarted(0, java.util.List.of("leader", "w\"1")));
+        assertEquals("{\"nanos\":0,\"event\":\"mission-started\",\"agents\":[\"leader\",\"w\\\"1\"]}\n", out.toString());
+    }
+
+    @Test
     void writesEventsWithTheMaslEventsNameUnderName() {
         StringWriter out = new StringWriter();
         JsonLinesTrace trace = new JsonLinesTrace(out);

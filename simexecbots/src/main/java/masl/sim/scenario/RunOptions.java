@@ -5,6 +5,7 @@ import java.time.Duration;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.function.Consumer;
+import java.util.function.DoubleConsumer;
 import masl.runtime.Mission;
 import masl.runtime.trace.Trace;
 
@@ -21,43 +22,50 @@ import masl.runtime.trace.Trace;
  *                  for the mission program's own class loader
  * @param ready     given the mission once it is built, before it runs: whoever may stop it early
  *                  (on a signal, say) keeps it
+ * @param progress  told the simulated time, in seconds, after every physics step (on the stepping
+ *                  thread: it must be quick), for a progress report
  */
 public record RunOptions(Duration timeout, Appendable journal, Trace trace, Optional<Path> output, ClassLoader classes,
-        Consumer<Mission> ready) {
+        Consumer<Mission> ready, DoubleConsumer progress) {
 
     public RunOptions {
         Objects.requireNonNull(timeout, "timeout");
         Objects.requireNonNull(trace, "trace");
         Objects.requireNonNull(output, "output");
         Objects.requireNonNull(ready, "ready");
+        Objects.requireNonNull(progress, "progress");
     }
 
-    /** Ten minutes, no journal sink, no trace, no output files, the program's class loader. */
+    /** Ten minutes, no journal sink, no trace, no output files, the program's class loader, no progress. */
     public static RunOptions defaults() {
-        return new RunOptions(Duration.ofMinutes(10), null, Trace.NONE, Optional.empty(), null, mission -> { });
+        return new RunOptions(Duration.ofMinutes(10), null, Trace.NONE, Optional.empty(), null, mission -> { }, seconds -> { });
     }
 
     public RunOptions whenReady(Consumer<Mission> action) {
-        return new RunOptions(timeout, journal, trace, output, classes, action);
+        return new RunOptions(timeout, journal, trace, output, classes, action, progress);
     }
 
     public RunOptions withTimeout(Duration newTimeout) {
-        return new RunOptions(newTimeout, journal, trace, output, classes, ready);
+        return new RunOptions(newTimeout, journal, trace, output, classes, ready, progress);
     }
 
     public RunOptions withJournal(Appendable sink) {
-        return new RunOptions(timeout, sink, trace, output, classes, ready);
+        return new RunOptions(timeout, sink, trace, output, classes, ready, progress);
     }
 
     public RunOptions withTrace(Trace newTrace) {
-        return new RunOptions(timeout, journal, newTrace, output, classes, ready);
+        return new RunOptions(timeout, journal, newTrace, output, classes, ready, progress);
     }
 
     public RunOptions withOutput(Path folder) {
-        return new RunOptions(timeout, journal, trace, Optional.of(folder), classes, ready);
+        return new RunOptions(timeout, journal, trace, Optional.of(folder), classes, ready, progress);
     }
 
     public RunOptions withClasses(ClassLoader loader) {
-        return new RunOptions(timeout, journal, trace, output, loader, ready);
+        return new RunOptions(timeout, journal, trace, output, loader, ready, progress);
+    }
+
+    public RunOptions withProgress(DoubleConsumer simulatedSeconds) {
+        return new RunOptions(timeout, journal, trace, output, classes, ready, simulatedSeconds);
     }
 }

@@ -133,6 +133,7 @@ public final class ScenarioRunner {
         // The recorder first: events of a step's listeners are stamped with that step's time.
         world.addStepListener(recorder);
         world.addStepListener(new FaultInjector(simulation, recorder));
+        world.addStepListener(stepped -> options.progress().accept(stepped.simulatedTime()));
         if (scenario.duration() > 0) {
             AtomicBoolean stopped = new AtomicBoolean();
             world.addStepListener(stepped -> {

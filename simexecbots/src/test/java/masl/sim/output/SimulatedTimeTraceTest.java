@@ -29,7 +29,7 @@ class SimulatedTimeTraceTest {
         }
     }
 
-    /** An event of {@code kind} with distinct values: nanos 7, numbers 3, strings and enum constants named. */
+    /** An event of {@code kind} with distinct values: nanos 7, numbers 3, strings, lists and enum constants named. */
     private static TraceEvent sample(Class<?> kind) throws Exception {
         RecordComponent[] components = kind.getRecordComponents();
         Class<?>[] types = new Class<?>[components.length];
@@ -45,6 +45,8 @@ class SimulatedTimeTraceTest {
                 values[i] = true;
             } else if (type == String.class) {
                 values[i] = components[i].getName();
+            } else if (type == List.class) {
+                values[i] = List.of(components[i].getName());
             } else if (type.isEnum()) {
                 values[i] = type.getEnumConstants()[0];
             } else {
