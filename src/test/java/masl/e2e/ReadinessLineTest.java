@@ -15,8 +15,9 @@ import org.junit.jupiter.api.Timeout;
 /**
  * Another JVM knows when and where to join without polling: {@code masl run --platform jade} (no
  * {@code --port}: a free one) runs in a child JVM; this JVM waits for its readiness line on standard
- * error, reads the address from it, and joins there with {@code masl container}, which says in turn, in
- * one line, that it hosts its bodies. The mission (E2, two bodies placed on the container) completes.
+ * error, reads the address from it, and starts {@code masl container} in another child JVM joining
+ * there, which says in turn, in one line, that it hosts its bodies. The mission (E2, two bodies placed
+ * on the container) completes. No JADE runs in this JVM.
  */
 @Timeout(120)
 class ReadinessLineTest {
@@ -27,6 +28,7 @@ class ReadinessLineTest {
     void aSecondJvmJoinsThePlatformAtTheAddressOfItsReadinessLine() throws Exception {
         Path secretFile = Files.createTempDirectory("masl-mission").resolve("secret");
         Path journal = secretFile.resolveSibling("journal.txt");
+        Path containerOut = secretFile.resolveSibling("container.txt");
         try (MaslProcess run = MaslProcess.start(journal.toFile(), "run", "src/test/resources/examples/e2_shared_and_local.masl",
                 "--quiet", "--platform", "jade", "--place", "b=c2,d=c2", "--timeout", "60", "--secret-file",
                 secretFile.toString())) {
@@ -36,15 +38,15 @@ class ReadinessLineTest {
             assertEquals("127.0.0.1", platform.get().host());
             assertTrue(platform.get().platform().endsWith(":" + platform.get().port() + "/JADE"), run.toString());
 
-            MaslCommand container = MaslCommand.run("container", "--main-host", platform.get().host(), "--main-port",
-                    String.valueOf(platform.get().port()), "--name", "c2", "--timeout", "60", "--secret-file",
-                    secretFile.toString());
-
-            assertEquals(0, container.status(), container + "\n" + run);
-            Readiness placed = Readiness.parse(container.err().strip()).orElseThrow(() ->
-                    new AssertionError("not one readiness line:\n" + container));
-            assertEquals(new Readiness(Optional.of("c2"), platform.get().host(), platform.get().port(),
-                    platform.get().platform(), List.of("b", "d")), placed);
+            try (MaslProcess container = MaslProcess.start(containerOut.toFile(), "container", "--main-host",
+                    platform.get().host(), "--main-port", String.valueOf(platform.get().port()), "--name", "c2",
+                    "--timeout", "60", "--secret-file", secretFile.toString())) {
+                Optional<Readiness> placed = container.awaitErrLine(Readiness::parse, WITHIN);
+                assertEquals(Optional.of(new Readiness(Optional.of("c2"), platform.get().host(), platform.get().port(),
+                        platform.get().platform(), List.of("b", "d"))), placed, container.toString());
+                assertEquals(0, container.awaitExit(), container.toString());
+                assertEquals("masl-ended hosted b,d\n", Files.readString(containerOut));
+            }
             assertEquals(0, run.awaitExit(), run.toString());
             assertEquals("n=5\n" + "mine=1\n".repeat(5), Files.readString(journal));
             assertEquals(List.of("masl: platform ready: host=127.0.0.1 port=" + platform.get().port() + " platform="
@@ -52,6 +54,7 @@ class ReadinessLineTest {
         } finally {
             Files.deleteIfExists(secretFile);
             Files.deleteIfExists(journal);
+            Files.deleteIfExists(containerOut);
             Files.delete(secretFile.getParent());
         }
     }
