@@ -774,6 +774,12 @@ public final class Agent implements AgentContext, AgentTask {
         return true;
     }
 
+    /** Whether the current state lets an agent outside the mission read {@code attribute} (its r bit for o). */
+    boolean othersMayRead(String attribute) {
+        return Permeability.allows(permeability.current(), permeability.attributeId(attribute),
+                PermeabilityState.Requester.OTHER, PermeabilityState.READ);
+    }
+
     /** This agent's permeability: its type, current state and what that state allows. */
     public Permeability permeability() {
         return permeability;
