@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.util.Arrays;
 import java.util.List;
 import masl.jade.JadePlatform;
+import masl.jade.Readiness;
 import masl.jade.testing.JadePlatformExtension;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -78,12 +79,12 @@ class JadeExamplesTest {
         }
     }
 
-    /** The journal of {@code masl run} on an example; fails unless the run succeeds silently. */
+    /** The journal of {@code masl run} on an example; fails unless the run succeeds, saying only that it is ready. */
     private static String maslJoined(String example) {
         JadePlatform platform = JADE.platform();
         MaslCommand run = MaslCommand.run("run", "src/test/resources/examples/" + example, "--platform", "jade",
                 "--main-host", platform.host(), "--main-port", String.valueOf(platform.port()), "--timeout", "60");
-        assertEquals("", run.err());
+        assertEquals(Readiness.platform(platform) + "\n", run.err());
         assertEquals(0, run.status());
         return run.out();
     }

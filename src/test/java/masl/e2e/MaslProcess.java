@@ -1,29 +1,42 @@
 package masl.e2e;
 
+import java.io.BufferedReader;
 import java.io.File;
 import java.io.IOException;
-import java.nio.file.Files;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Function;
 import masl.cli.Main;
 
 /**
  * The {@code masl} command as a process of its own ({@code java -cp CLASSPATH masl.cli.Main …}, the
  * class path this test runs with), for what only a real process shows: signals, standard output
- * that fails. Its standard error goes to a file; {@link #close()} ends it in any case. A test that
- * reads standard error as the diagnostics alone runs with {@code --quiet} (no progress lines).
+ * that fails, a line another JVM waits for. Its standard error is read line by line as it comes
+ * ({@link #awaitErrLine}); {@link #close()} ends it in any case. A test that reads standard error as
+ * the diagnostics alone runs with {@code --quiet} (no progress lines).
  */
 final class MaslProcess implements AutoCloseable {
 
-    private final Process process;
-    private final Path err;
+    private static final String END = new String("end of standard error");
 
-    private MaslProcess(Process process, Path err) {
+    private final Process process;
+    private final StringBuffer err = new StringBuffer();
+    private final LinkedBlockingQueue<String> errLines = new LinkedBlockingQueue<>();
+    private final Thread errReader;
+
+    private MaslProcess(Process process) {
         this.process = process;
-        this.err = err;
+        this.errReader = new Thread(this::readErr, "masl-process-stderr");
+        errReader.setDaemon(true);
+        errReader.start();
     }
 
     /** Starts {@code masl ARGUMENTS} with standard output written to {@code out}. */
@@ -36,47 +49,78 @@ final class MaslProcess implements AutoCloseable {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), Main.class.getName()));
         command.addAll(List.of(arguments));
-        Path err = Files.createTempFile("masl-stderr-", ".txt");
-        ProcessBuilder builder = new ProcessBuilder(command).redirectOutput(out).redirectError(err.toFile());
+        ProcessBuilder builder = new ProcessBuilder(command).redirectOutput(out);
         builder.environment().putAll(environment);
-        Process process = builder.start();
-        return new MaslProcess(process, err);
+        return new MaslProcess(builder.start());
+    }
+
+    private void readErr() {
+        try (BufferedReader reader = new BufferedReader(new InputStreamReader(process.getErrorStream(),
+                StandardCharsets.UTF_8))) {
+            for (String line = reader.readLine(); line != null; line = reader.readLine()) {
+                err.append(line).append('\n');
+                errLines.add(line);
+            }
+        } catch (IOException closed) {
+            // The process was ended: what it wrote so far is kept.
+        } finally {
+            errLines.add(END);
+        }
     }
 
     Process process() {
         return process;
     }
 
-    /** Waits until it ends, at most a minute; its exit status. */
+    /**
+     * Sends it SIGTERM, as {@link Process#destroy()} does, but through its {@link ProcessHandle}:
+     * {@code destroy()} also closes the pipe its standard error is read from, losing what it says as it ends.
+     */
+    void terminate() {
+        process.toHandle().destroy();
+    }
+
+    /**
+     * The first line of standard error, from the next one not taken yet, that {@code reading} makes
+     * something of; empty if standard error closed or {@code timeout} elapsed first.
+     */
+    <T> Optional<T> awaitErrLine(Function<String, Optional<T>> reading, Duration timeout) throws InterruptedException {
+        long deadline = System.nanoTime() + timeout.toNanos();
+        while (true) {
+            String line = errLines.poll(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+            if (line == null || line == END) {
+                return Optional.empty();
+            }
+            Optional<T> read = reading.apply(line);
+            if (read.isPresent()) {
+                return read;
+            }
+        }
+    }
+
+    /** Waits until it ends, at most a minute, and its standard error is read; its exit status. */
     int awaitExit() throws InterruptedException {
         if (!process.waitFor(60, TimeUnit.SECONDS)) {
             throw new AssertionError("masl did not end within a minute");
         }
+        errReader.join(TimeUnit.SECONDS.toMillis(60));
         return process.exitValue();
     }
 
-    String err() throws IOException {
-        return Files.readString(err);
+    /** What it printed on standard error so far (all of it after {@link #awaitExit()}). */
+    String err() {
+        return err.toString();
     }
 
     /** What it printed on standard error, for assertion messages. */
     @Override
     public String toString() {
-        try {
-            return "standard error:\n" + err();
-        } catch (IOException unreadable) {
-            return "standard error unreadable: " + unreadable;
-        }
+        return "standard error:\n" + err();
     }
 
     @Override
-    public void close() throws IOException {
+    public void close() throws InterruptedException {
         process.destroyForcibly();
-        try {
-            process.waitFor(10, TimeUnit.SECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        Files.deleteIfExists(err);
+        process.waitFor(10, TimeUnit.SECONDS);
     }
 }

@@ -18,6 +18,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import masl.jade.JadePlatform;
+import masl.jade.Readiness;
 import masl.jade.testing.JadePlatformExtension;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -63,7 +64,7 @@ class OutsideRequestsJadeTest {
         MaslCommand done = run.get(60, TimeUnit.SECONDS);
         assertEquals(0, done.status(), done::toString);
         assertEquals("outsider\ndone\n", done.out());
-        assertEquals("", done.err());
+        assertEquals(Readiness.platform(platform) + "\n", done.err());
     }
 
     private static DFAgentDescription sleepService() {

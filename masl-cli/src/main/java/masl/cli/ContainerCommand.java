@@ -17,7 +17,8 @@ import masl.runtime.descriptor.DescriptorLoader;
  * ends when the coordinator says the mission ended. The main container may start later: it is
  * waited for for {@value #JOIN_SECONDS} s. Standard output shows each shared event the coordinator
  * sends ({@code masl-event {"event": …}}) and, at the end, the bodies hosted
- * ({@code masl-ended hosted b,d}); exit 0 once the mission ended, 2 if {@code --timeout} elapsed first, the
+ * ({@code masl-ended hosted b,d}); standard error, once the bodies are placed, the line
+ * {@code masl: container ready: name=C host=H port=P platform=… agents=b,d} ({@link masl.jade.Readiness}); exit 0 once the mission ended, 2 if {@code --timeout} elapsed first, the
  * platform cannot be joined, or the coordinator or the main container disappeared (noticed within a second).
  * It obeys only the platform's coordinator, and only messages signed with the secret {@code masl run}
  * wrote to {@code --secret-file} (read when the coordinator first writes); each message refused is one
@@ -45,8 +46,13 @@ final class ContainerCommand {
         }
         DescriptorLoader descriptors = new DescriptorLoader(AgentPath.parse(line.agentPath));
         Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
+        long deadline = System.nanoTime() + timeout.toNanos();
         try (MaslContainer container = join(line, descriptors)) {
-            boolean ended = container.awaitMissionEnd(timeout);
+            if (container.awaitBodies(timeout)) {
+                err.println(container.readiness());
+                err.flush();
+            }
+            boolean ended = container.awaitMissionEnd(Duration.ofNanos(Math.max(0, deadline - System.nanoTime())));
             if (!ended) {
                 err.println("masl: container " + line.containerName + ": no mission ended within " + timeout.toSeconds()
                         + " s");

@@ -1,6 +1,7 @@
 package masl.cli;
 
 import java.io.IOException;
+import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -11,8 +12,10 @@ import java.util.Optional;
 import masl.jade.JadeException;
 import masl.jade.JadeLauncher;
 import masl.jade.JadeOptions;
+import masl.jade.JadePlatform;
 import masl.jade.MissionSecret;
 import masl.jade.Placement;
+import masl.jade.Readiness;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
 import masl.runtime.descriptor.AgentPath;
@@ -27,7 +30,8 @@ import masl.translator.source.SourceFile;
  * {@code --main-host}/{@code --main-port}; with {@code --place}, the bodies of the agents named run in
  * the containers named ({@code masl container}), their programs here. The journal, timeout, trace,
  * signals and outcome are those of an in-process run; a platform that cannot start or be joined, or a
- * container that does not join, ends the run as a failed mission.
+ * container that does not join, ends the run as a failed mission. Once the platform accepts containers,
+ * one line on standard error says where ({@link Readiness#platform}).
  */
 final class JadeRun {
 
@@ -38,13 +42,14 @@ final class JadeRun {
     private final JournalOutput journal;
     private final Path secretFile;
     private final Duration callTimeout;
+    private final PrintStream err;
 
     /**
      * @throws UsageException if the command line asks for something JADE runs cannot do: a scheduler
      *                        of its own ({@code --threads}, {@code --seed}), or half a main address
      */
-    JadeRun(CommandLine line, SourceFile source, AgentPath agentPath, MissionLoader loaded, JournalOutput journal)
-            throws UsageException {
+    JadeRun(CommandLine line, SourceFile source, AgentPath agentPath, MissionLoader loaded, JournalOutput journal,
+            PrintStream err) throws UsageException {
         if (line.threads || line.seed != null) {
             throw new UsageException("--platform jade runs each agent in a JADE behaviour of its own:"
                     + " --threads and --seed are for --platform inproc");
@@ -68,6 +73,7 @@ final class JadeRun {
         }
         this.secretFile = Path.of(line.secretFile == null ? CommandLine.DEFAULT_SECRET_FILE : line.secretFile);
         this.callTimeout = line.callTimeoutMillis == null ? null : Duration.ofMillis(line.callTimeoutMillis);
+        this.err = err;
     }
 
     /** {@code --place}: pairs or a file, naming agents the program declares. */
@@ -108,6 +114,7 @@ final class JadeRun {
                 .implementations(loaded::newImplementation)
                 .place(placement)
                 .journal(journal)
+                .problems(problem -> err.println("masl: " + problem))
                 .trace(trace == null ? Trace.NONE : trace)
                 .whenReady(mission -> {
                     journal.whenFailed(() -> mission.stop(RunCommand.JOURNAL_LOST));
@@ -122,7 +129,11 @@ final class JadeRun {
             if (!placement.isEmpty()) {
                 launcher.secret(shareSecret());
             }
-            return launcher.run(options, timeout);
+            try (JadePlatform platform = JadePlatform.start(options)) {
+                err.println(Readiness.platform(platform));
+                err.flush();
+                return launcher.run(platform, timeout);
+            }
         } catch (IOException unwritable) {
             return failed(new PlatformFailure("cannot write the mission's secret for its containers to " + secretFile
                     + ": " + unwritable.getMessage()), MissionOutcome.Status.FAILED);

@@ -70,7 +70,7 @@ final class RunCommand {
         Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
         JournalOutput journal = new JournalOutput(out);
         if (line.platform.equals("jade")) {
-            JadeRun jade = new JadeRun(line, source, agentPath, loaded, journal);
+            JadeRun jade = new JadeRun(line, source, agentPath, loaded, journal, err);
             Writer trace = openTrace(line.traceFile);
             try {
                 return report(jade.run(trace == null ? null : new JsonLinesTrace(trace), timeout, signals), null,

@@ -57,6 +57,8 @@ final class ContainerHost extends Agent {
     private final transient Consumer<String> refusals;
     private final transient CountDownLatch ready = new CountDownLatch(1);
     private final transient CountDownLatch ended = new CountDownLatch(1);
+    /** Down once the bodies are placed here, or the mission ended before they were. */
+    private final transient CountDownLatch settled = new CountDownLatch(1);
     private final transient List<AgentController> controllers = new ArrayList<>();
     private final transient List<BodyAgent> bodies = new ArrayList<>();
     private transient ExecutorService primitiveThreads;
@@ -67,6 +69,8 @@ final class ContainerHost extends Agent {
     private transient MissionSecret secret;
     private final transient ReplayWindow taken = new ReplayWindow();
     private transient volatile boolean placed;
+    /** Whether the bodies placed here exist and are registered. */
+    private transient volatile boolean bodiesReady;
     private transient volatile String lost;
     private transient volatile String unhosted;
 
@@ -136,6 +140,14 @@ final class ContainerHost extends Agent {
         return ended;
     }
 
+    CountDownLatch settled() {
+        return settled;
+    }
+
+    boolean bodiesReady() {
+        return bodiesReady;
+    }
+
     /** Why the mission ended without the coordinator saying so: its coordinator or the platform is gone; null if not. */
     String lost() {
         return lost;
@@ -159,6 +171,7 @@ final class ContainerHost extends Agent {
                         : "the platform's main container is gone";
                 deleteBodies();
                 ended.countDown();
+                settled.countDown();
             }
         } else if (isControl(message)) {
             String refusal = refusal(message);
@@ -198,6 +211,7 @@ final class ContainerHost extends Agent {
                 deleteBodies();
                 send(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)));
                 ended.countDown();
+                settled.countDown();
             }
             default -> events.accept(message);
         }
@@ -270,6 +284,8 @@ final class ContainerHost extends Agent {
                     throw new JadeException("the DF refused to register " + agent.getLocalName());
                 }
             }
+            bodiesReady = true;
+            settled.countDown();
             return AclInvocations.reply(request, Reply.Kind.RESULT, JsonContent.result(null));
         } catch (ContentException | StaleProxyException | ReflectiveOperationException | RuntimeException
                 | LinkageError problem) {

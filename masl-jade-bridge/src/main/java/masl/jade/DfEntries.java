@@ -4,6 +4,7 @@ import jade.core.AID;
 import jade.domain.FIPAAgentManagement.DFAgentDescription;
 import jade.domain.FIPAAgentManagement.Property;
 import jade.domain.FIPAAgentManagement.ServiceDescription;
+import jade.domain.FIPANames;
 import masl.jade.acl.AclInvocations;
 import masl.runtime.descriptor.Primitive;
 
@@ -22,7 +23,10 @@ final class DfEntries {
     private DfEntries() {
     }
 
-    /** A MASL agent: its type and one service per primitive, invocable with JSON requests. */
+    /**
+     * A MASL agent: its type and one service per primitive, each answering fipa-request in language
+     * json, ontology masl (the type's service also QUERY_REF of attributes and SUBSCRIBE to events).
+     */
     static DFAgentDescription maslAgent(AID agent, PrimitiveTable primitives) {
         DFAgentDescription description = new DFAgentDescription();
         description.setName(agent);
@@ -30,17 +34,24 @@ final class DfEntries {
         type.setType(TYPE_SERVICE);
         type.setName(primitives.type().shortName());
         type.addProperties(new Property("class", primitives.type().fullClassName()));
+        speaksMasl(type);
         description.addServices(type);
         for (Primitive primitive : primitives.primitives()) {
             ServiceDescription service = new ServiceDescription();
             service.setType(PRIMITIVE_SERVICE);
             service.setName(primitive.name());
-            service.addLanguages(AclInvocations.LANGUAGE);
-            service.addOntologies(AclInvocations.ONTOLOGY);
+            speaksMasl(service);
             service.addProperties(new Property("signature", primitive.signature()));
             description.addServices(service);
         }
         return description;
+    }
+
+    /** What a FIPA agent needs to talk to the service: protocol fipa-request, language json, ontology masl. */
+    private static void speaksMasl(ServiceDescription service) {
+        service.addProtocols(FIPANames.InteractionProtocol.FIPA_REQUEST);
+        service.addLanguages(AclInvocations.LANGUAGE);
+        service.addOntologies(AclInvocations.ONTOLOGY);
     }
 
     /** One service of {@code serviceType} named {@code name}: a search template too. */

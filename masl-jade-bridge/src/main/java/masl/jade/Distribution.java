@@ -148,8 +148,9 @@ final class Distribution {
         return event -> {
             trace.record(event);
             if (event instanceof TraceEvent.EventEmitted emitted && emitted.block() != null && !containers.isEmpty()) {
-                String content = JsonContent.event(emitted.event(), emitted.block(), names.get(emitted.agent()),
-                        emitted.message());
+                // An event a FIPA agent raised has no emitter among the mission's agents.
+                String content = JsonContent.event(emitted.event(), emitted.block(),
+                        emitted.agent() == Mission.OUTSIDE ? null : names.get(emitted.agent()), emitted.message());
                 for (AID container : containers.values()) {
                     ACLMessage inform = new ACLMessage(ACLMessage.INFORM);
                     inform.setConversationId(CoordinatorAgent.EVENT);

@@ -53,6 +53,7 @@ public final class JadeLauncher {
     private Map<String, String> placement = Map.of();
     private MissionSecret secret;
     private Duration callTimeout;
+    private Consumer<String> problems = line -> System.err.println("masl: " + line);
 
     private JadeLauncher(MissionProgram program) {
         this.program = Objects.requireNonNull(program, "program");
@@ -108,6 +109,15 @@ public final class JadeLauncher {
             throw new IllegalArgumentException("a call timeout must be positive: " + timeout);
         }
         this.callTimeout = timeout;
+        return this;
+    }
+
+    /**
+     * Told one line for each answer of an external FIPA agent ({@code <Fipa>} types) whose content
+     * cannot be used; by default standard error, after {@code masl: }.
+     */
+    public JadeLauncher problems(Consumer<String> sink) {
+        this.problems = Objects.requireNonNull(sink, "sink");
         return this;
     }
 
@@ -171,9 +181,11 @@ public final class JadeLauncher {
                 : new Distribution(platform, placement, secret, AGENTS_TIMEOUT);
         List<AgentController> controllers = new ArrayList<>();
         List<MaslJadeAgent> locals = new ArrayList<>();
-        OutsideCalls outside = new OutsideCalls(callTimeout == null ? OutsideCalls.DEFAULT_LIMIT : callTimeout);
+        Duration limit = callTimeout == null ? OutsideCalls.DEFAULT_LIMIT : callTimeout;
+        OutsideCalls outside = new OutsideCalls(limit);
+        ExternalAgents externals = new ExternalAgents(limit, AGENTS_TIMEOUT, problems);
         try {
-            return run(platform, timeout, specs, names, distribution, outside, controllers, locals);
+            return run(platform, timeout, specs, names, distribution, outside, externals, controllers, locals);
         } catch (StaleProxyException e) {
             throw new JadeException("the JADE container ended before the mission", e);
         } finally {
@@ -184,19 +196,21 @@ public final class JadeLauncher {
             } finally {
                 outside.close();
                 delete(controllers, locals);
+                externals.close();
             }
         }
     }
 
     private MissionOutcome run(JadePlatform platform, Duration timeout, List<AgentSpec> specs, List<String> names,
-            Distribution distribution, OutsideCalls outside, List<AgentController> controllers,
-            List<MaslJadeAgent> locals)
+            Distribution distribution, OutsideCalls outside, ExternalAgents externals,
+            List<AgentController> controllers, List<MaslJadeAgent> locals)
             throws InterruptedException, StaleProxyException {
         List<AgentImplementation> created = new ArrayList<>();
         ThreadedBehaviourScheduler scheduler = new ThreadedBehaviourScheduler();
         // FIPA agents may invoke primitives at any time: a busy-wait may end on a request.
+        EventSubscribers subscribers = new EventSubscribers(names);
         Mission.Builder builder = Mission.builder().scheduler(scheduler).openToOutsideInvocations()
-                .trace(distribution == null ? trace : distribution.sendingEvents(trace, names));
+                .trace(subscribers.forwarding(distribution == null ? trace : distribution.sendingEvents(trace, names)));
         if (journal != null) {
             builder.journal(journal);
         }
@@ -206,7 +220,15 @@ public final class JadeLauncher {
         program.configure(builder, spec -> {
             AgentImplementation implementation = implementations.create(spec);
             String container = distribution == null ? null : distribution.containerOf(spec.name());
-            if (container != null) {
+            AgentType type = types.apply(spec);
+            if (ExternalAgents.isExternal(type)) {
+                if (container != null) {
+                    throw new JadeException("cannot place " + spec.name() + ": an external FIPA agent answers its"
+                            + " primitives (its type " + type.shortName() + " has <Fipa>)");
+                }
+                // Its primitives are requests to an external FIPA agent; its program runs here.
+                implementation = externals.stub(created.size(), spec.name(), type, implementation.getClass());
+            } else if (container != null) {
                 // Its body lives in that container; here, a stub whose primitives are requests to it.
                 implementation = distribution.stub(created.size(), spec.name(), container, types.apply(spec),
                         implementation.getClass());
@@ -224,13 +246,18 @@ public final class JadeLauncher {
             tables.add(new PrimitiveTable(types.apply(specs.get(id)), created.get(id).getClass()));
         }
         List<Agent> hosts = new ArrayList<>();
-        CountDownLatch ready = new CountDownLatch(specs.size() - placement.size());
+        CountDownLatch ready = new CountDownLatch(specs.size() - placement.size() - externals.count());
         for (int id = 0; id < specs.size(); id++) {
             if (placement.containsKey(names.get(id))) {
                 hosts.add(distribution.coordinator()); // runs the program; the body is elsewhere
                 continue;
             }
-            MaslJadeAgent host = new MaslJadeAgent(id, created.get(id), tables.get(id), mission, outside, ready);
+            if (externals.hosts(id)) {
+                hosts.add(externals.host(id));
+                continue;
+            }
+            MaslJadeAgent host = new MaslJadeAgent(id, created.get(id), tables.get(id), mission, outside, subscribers,
+                    ready);
             controllers.add(create(platform, names.get(id), host));
             locals.add(host);
             hosts.add(host);
@@ -249,6 +276,7 @@ public final class JadeLauncher {
                         + host.registrationFailure().getMessage(), host.registrationFailure());
             }
         }
+        externals.start(platform);
         if (distribution != null) {
             distribution.place(mission, names, tables, created, outside);
         }

@@ -181,6 +181,16 @@ public final class JadePlatform implements AutoCloseable {
         return port;
     }
 
+    /** The address of the platform's main container: where containers join it. */
+    public String mainHost() {
+        return isMain() ? host() : options.mainHost();
+    }
+
+    /** The port of the platform's main container: where containers join it. */
+    public int mainPort() {
+        return isMain() ? port : options.mainPort();
+    }
+
     /** The address of the HTTP transport ({@code http://127.0.0.1:PORT/acc}) if it was asked for. */
     public Optional<String> httpAddress() {
         return Optional.ofNullable(httpAddress);

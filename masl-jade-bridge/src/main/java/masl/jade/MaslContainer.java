@@ -29,10 +29,12 @@ public final class MaslContainer implements AutoCloseable {
 
     private static final Duration START_TIMEOUT = Duration.ofSeconds(30);
 
+    private final String name;
     private final JadePlatform platform;
     private final ContainerHost host;
 
-    private MaslContainer(JadePlatform platform, ContainerHost host) {
+    private MaslContainer(String name, JadePlatform platform, ContainerHost host) {
+        this.name = name;
         this.platform = platform;
         this.host = host;
     }
@@ -68,7 +70,7 @@ public final class MaslContainer implements AutoCloseable {
             if (!host.ready().await(START_TIMEOUT.toMillis(), TimeUnit.MILLISECONDS)) {
                 throw new JadeException("container " + name + " did not register within " + START_TIMEOUT);
             }
-            return new MaslContainer(platform, host);
+            return new MaslContainer(name, platform, host);
         } catch (StaleProxyException e) {
             platform.close();
             throw new JadeException("cannot start the agent of container " + name + " (is the name taken?)", e);
@@ -88,6 +90,20 @@ public final class MaslContainer implements AutoCloseable {
      */
     public boolean awaitMissionEnd(Duration timeout) throws InterruptedException {
         return host.ended().await(timeout.toMillis(), TimeUnit.MILLISECONDS);
+    }
+
+    /**
+     * Waits until the coordinator has placed this container's bodies (and they are registered), or the
+     * mission ended before it did; true if the bodies are placed, false if not (ended, or {@code timeout}
+     * elapsed).
+     */
+    public boolean awaitBodies(Duration timeout) throws InterruptedException {
+        return host.settled().await(timeout.toMillis(), TimeUnit.MILLISECONDS) && host.bodiesReady();
+    }
+
+    /** The line saying this container's bodies are placed ({@link Readiness#container}). */
+    public String readiness() {
+        return Readiness.container(name, platform, hostedAgents());
     }
 
     /**

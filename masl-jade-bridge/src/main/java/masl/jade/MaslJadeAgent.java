@@ -4,6 +4,9 @@ import jade.core.behaviours.Behaviour;
 import jade.core.behaviours.CyclicBehaviour;
 import jade.lang.acl.ACLMessage;
 import java.util.concurrent.CountDownLatch;
+import masl.jade.acl.AclInvocations;
+import masl.jade.acl.ContentException;
+import masl.jade.acl.EventContent;
 import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 
@@ -20,7 +23,11 @@ import masl.runtime.Mission;
  * running, at its next step boundary, on the program's thread. Then it is {@code REFUSE} if the
  * agent's permeability state denies it to an <em>other</em>, else the primitive runs, within the
  * limit of calls from outside the mission ({@link OutsideCalls}), and the answer is {@code INFORM}
- * with its result or {@code FAILURE} with what it threw (or that it ran past the limit).
+ * with its result or {@code FAILURE} with what it threw (or that it ran past the limit). A
+ * {@code SUBSCRIBE} subscribes its sender to the mission's shared events, a {@code CANCEL} ends that
+ * ({@link EventSubscribers}); an {@code INFORM} of conversation {@value CoordinatorAgent#EVENT}
+ * raises the shared event it names ({@link EventContent}); a {@code QUERY_REF} reads an attribute
+ * ({@link AttributeQueries}).
  */
 final class MaslJadeAgent extends RegisteredMaslAgent {
     private static final long serialVersionUID = 1L;
@@ -29,14 +36,16 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
     private final transient AgentImplementation implementation;
     private final transient Mission mission;
     private final transient OutsideCalls outside;
+    private final transient EventSubscribers subscribers;
 
     MaslJadeAgent(int proxyId, AgentImplementation implementation, PrimitiveTable primitives, Mission mission,
-            OutsideCalls outside, CountDownLatch ready) {
+            OutsideCalls outside, EventSubscribers subscribers, CountDownLatch ready) {
         super(primitives, ready);
         this.proxyId = proxyId;
         this.implementation = implementation;
         this.mission = mission;
         this.outside = outside;
+        this.subscribers = subscribers;
     }
 
     @Override
@@ -45,6 +54,17 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
     }
 
     private void serve(ACLMessage message) {
+        if (subscribers.take(message, this)) {
+            return;
+        }
+        if (message.getPerformative() == ACLMessage.INFORM && CoordinatorAgent.EVENT.equals(message.getConversationId())) {
+            raise(message);
+            return;
+        }
+        if (message.getPerformative() == ACLMessage.QUERY_REF) {
+            answer(AttributeQueries.answer(message, mission, proxyId, table(), implementation, getLocalName()));
+            return;
+        }
         PrimitiveTable.Call call = requestedCall(message);
         if (call == null) {
             return;
@@ -55,6 +75,19 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
         mission.serveOrQueueInvocation(proxyId, primitive,
                 () -> answer(outside.answer(message, call, implementation, getLocalName())),
                 () -> answer(Answers.refusal(message, getLocalName(), primitive)));
+    }
+
+    /** A FIPA agent raising a shared event of the mission; answered only when it cannot be raised. */
+    private void raise(ACLMessage message) {
+        try {
+            EventContent event = EventContent.parse(message.getContent());
+            if (mission.emitFromOutside(event.event(), event.message()) == 0) {
+                answer(AclInvocations.notUnderstood(message, new ContentException("no agent of the mission"
+                        + " perceives a shared event named " + event.event() + " now")));
+            }
+        } catch (ContentException problem) {
+            answer(AclInvocations.notUnderstood(message, problem));
+        }
     }
 
     /** Takes every message addressed to this agent. */

@@ -27,6 +27,11 @@ abstract class RegisteredMaslAgent extends Agent {
         this.ready = ready;
     }
 
+    /** The agent's type's primitives, bound to its implementation. */
+    final PrimitiveTable table() {
+        return primitives;
+    }
+
     /** The cyclic behaviour that reads this agent's messages. */
     abstract Behaviour requestServer();
 

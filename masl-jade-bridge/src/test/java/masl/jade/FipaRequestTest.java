@@ -11,6 +11,7 @@ import jade.domain.FIPAAgentManagement.ServiceDescription;
 import jade.lang.acl.ACLMessage;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.Iterator;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
@@ -166,8 +167,9 @@ class FipaRequestTest {
                     raw(ACLMessage.REQUEST, "{\"primitive\":\"add\",\"args\":[1]}"));
             assertNotUnderstood("content:1:30: error: argument 2 of add: expected an int, got \"two\"",
                     raw(ACLMessage.REQUEST, "{\"primitive\":\"add\",\"args\":[1,\"two\"]}"));
-            assertNotUnderstood("message: error: performative INFORM is not understood: a MASL agent answers "
-                    + "REQUEST only", raw(ACLMessage.INFORM, "{\"primitive\":\"nop\"}"));
+            assertNotUnderstood("message: error: performative INFORM is not understood: a MASL agent answers REQUEST"
+                    + " (invocations), QUERY_REF (attributes), SUBSCRIBE and CANCEL (events) and INFORM masl-event",
+                    raw(ACLMessage.INFORM, "{\"primitive\":\"nop\"}"));
             // A NOT_UNDERSTOOD is never answered (two agents would echo forever): the next answer
             // the probe gets is the one to the request after it.
             probe.sendMessage(request(ACLMessage.NOT_UNDERSTOOD, "{}", "ignored"));
@@ -180,8 +182,37 @@ class FipaRequestTest {
         runWhile(() -> {
             assertEquals(List.of("b"), providers(DfEntries.PRIMITIVE_SERVICE, "divide"));
             assertEquals(List.of("b"), providers(DfEntries.TYPE_SERVICE, "ServiceAgent"));
+            DFAgentDescription entry = DFService.search(probe, template(DfEntries.TYPE_SERVICE, "ServiceAgent"))[0];
+            Iterator<?> services = entry.getAllServices();
+            while (services.hasNext()) {
+                ServiceDescription service = (ServiceDescription) services.next();
+                assertEquals(List.of("fipa-request"), list(service.getAllProtocols()), service::toString);
+                assertEquals(List.of("json"), list(service.getAllLanguages()), service::toString);
+                assertEquals(List.of("masl"), list(service.getAllOntologies()), service::toString);
+            }
         });
         assertEquals(List.of(), providers(DfEntries.PRIMITIVE_SERVICE, "divide"), "deregistered at the end");
+    }
+
+    @Test
+    void queryRefReadsAnAttributeOnlyIfThePermeabilityLetsOthersRead() throws Exception {
+        runWhile(() -> {
+            ACLMessage battery = raw(ACLMessage.QUERY_REF, "{\"attribute\":\"battery\"}");
+            assertEquals(ACLMessage.INFORM, battery.getPerformative(), battery::toString);
+            assertEquals("{\"result\":80}", battery.getContent());
+            ACLMessage secret = raw(ACLMessage.QUERY_REF, "{\"attribute\":\"secret\"}");
+            assertEquals(ACLMessage.REFUSE, secret.getPerformative(), secret::toString);
+            assertEquals("{\"reason\":\"the permeability of b denies others reading secret\"}", secret.getContent());
+            assertNotUnderstood("content:1:1: error: b (ServiceAgent) has no attribute fuel",
+                    raw(ACLMessage.QUERY_REF, "{\"attribute\":\"fuel\"}"));
+            assertNotUnderstood("content:1:1: error: expected {\"attribute\": name}", raw(ACLMessage.QUERY_REF, "[]"));
+        });
+    }
+
+    private static List<Object> list(Iterator<?> values) {
+        List<Object> list = new ArrayList<>();
+        values.forEachRemaining(list::add);
+        return list;
     }
 
     /** What the test does while the mission runs; may throw. */

@@ -17,6 +17,11 @@ public class ServiceAgent extends TestAgent {
 
     static volatile Gate gate = new Gate();
 
+    /** Others may read it (QUERY_REF). */
+    public int battery = 80;
+    /** Others may not read it. */
+    public String secret = "hidden";
+
     private final CompletableFuture<Void> released = new CompletableFuture<>();
 
     public int add(int a, int b) {

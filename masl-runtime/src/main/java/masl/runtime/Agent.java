@@ -2,30 +2,31 @@ package masl.runtime;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Queue;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionStage;
-import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.BooleanSupplier;
+import java.util.function.Consumer;
 import java.util.function.Supplier;
 import masl.runtime.descriptor.AgentType;
-import masl.runtime.descriptor.PermeabilityState.Requester;
 import masl.runtime.descriptor.PermeabilityState;
+import masl.runtime.descriptor.PermeabilityState.Requester;
 import masl.runtime.entry.Entry;
 import masl.runtime.entry.EntryCoordinator;
 import masl.runtime.entry.Membership;
 import masl.runtime.entry.SynchronisationBarrier;
 import masl.runtime.entry.Wave;
 import masl.runtime.event.EventOccurrence;
-import masl.runtime.event.EventQueue;
+import masl.runtime.event.EventPlanner;
 import masl.runtime.event.ReactionPlan;
 import masl.runtime.event.ReactionRun;
 import masl.runtime.invocation.Countermeasure;
+import masl.runtime.invocation.Countermeasures;
+import masl.runtime.invocation.InvocationServing;
 import masl.runtime.invocation.PendingInvocation;
 import masl.runtime.invocation.Permeability;
 import masl.runtime.scheduling.AgentTask;
+import masl.runtime.scheduling.RunState;
 import masl.runtime.scheduling.Scheduler;
 import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.TraceEvent;
@@ -33,83 +34,62 @@ import masl.runtime.trace.TraceEvent;
 /**
  * A MASL agent at run time: an active object with its own program counter (in its
  * {@link AgentProgram}), memberships, event and invocation queues, run slice by slice by the
- * mission's {@link Scheduler}. It is the {@link AgentContext} its program calls.
+ * mission's {@link Scheduler}. It is the {@link AgentContext} its program calls, and ties together
+ * four state machines, each a class of its own:
  *
- * <p><b>Scheduling state machine.</b> {@code SCHEDULED → RUNNING} when a slice starts. A runtime
- * call that must wait issues a park <em>ticket</em> ({@link #prepareToPark()}) and the program
- * returns; the slice then ends {@code RUNNING → PARKED}. Whoever ends the wait calls
- * {@link #unpark(long)} with that ticket: the first unpark of the current ticket wins, a stale or
- * repeated one is ignored. {@code PARKED → SCHEDULED} hands the agent to the scheduler; an unpark
- * that comes while the slice is still running turns {@code RUNNING → RUNNING_WOKEN}, and the slice
- * reschedules the agent when it returns. A program that has finished leaves the agent
- * {@code DONE}.
- *
- * <p><b>Serving while blocked</b> (MASL §5). An invocation queued for a {@code PARKED} or
- * {@code DONE} agent turns it {@code SERVING} and schedules a slice that runs the pending
- * invocations on its behalf, without running its program, then returns it to where it was. An
- * unpark that comes meanwhile turns {@code SERVING → SERVING_WOKEN}, and the serving slice then
- * schedules the program. So an agent is never run by two threads at once, its program and the
- * invocations it serves never overlap, and no wake-up or invocation is lost. An invocation from
- * outside the mission that its requester lets be served inline
- * ({@link #submitInvocationServingInline}, the JADE bridge's FIPA requests) takes the same
- * {@code SERVING} state but is served at once on the submitting thread, saving the hop to the
- * agent's thread; invocations between the mission's agents ({@link #invoke}) are served by a
- * scheduled slice, so that the order of slices stays the scheduler's (a seeded run replays).
- *
- * <p><b>Events</b> (MASL §8). Emitters push occurrences onto the agent's lock-free
- * {@link EventQueue}, and unpark it if it is parked in a busy-wait (§5). At a step boundary or
- * loop iteration the agent takes the whole queue and plans the reactions ({@link ReactionPlan}).
- * If there are any, it <em>redirects</em> its program: it saves {@code pc} (where the interrupted
- * boundary continues), sets {@code pc} to the first reaction's code, and the boundary call returns
- * {@code false}; the slice then calls {@code resume} again at once. Each reaction ends with
- * {@link #endReaction()}, which redirects to the next one, or lets the last one apply its ending
- * (§8: the last reaction decides): {@link #resumeInterrupted()}, or a break, restart or reelect.
- *
- * <p><b>Invocations and permeability</b> (MASL §9, §11). An external invocation is a
- * {@link PendingInvocation} in the callee's queue; whoever serves it (the callee at a boundary, or
- * a serving slice on its behalf) decides at that moment, from the callee's current state and the
- * requester's relation to it, whether it runs or is denied. While the agent is in
- * {@code wait(state)} it is <em>attentive</em>: a serving slice runs only the first pending
- * invocation that state allows, which ends the wait; the others stay queued.
+ * <ul>
+ * <li><b>Scheduling</b> ({@link RunState}): {@code SCHEDULED → RUNNING → PARKED → SCHEDULED}, with
+ * park tickets; a slice runs the program ({@link #runSlice}), a wait issues a ticket
+ * ({@link #prepareToPark()}) and whoever ends it calls {@link #unpark(long)} with it. An
+ * invocation queued for a parked or finished agent turns it {@code SERVING}: a slice then serves
+ * it on the agent's behalf without running its program (MASL §5).</li>
+ * <li><b>Events</b> ({@link EventPlanner}, MASL §8): emitters push occurrences from any thread and
+ * unpark the agent if it is parked in a busy-wait (§5). At a step boundary or loop iteration the
+ * agent plans the reactions; if there are any, it <em>redirects</em> its program: it saves
+ * {@code pc} (where the interrupted boundary continues), sets {@code pc} to the first reaction's
+ * code, and the boundary call returns {@code false}; the slice then calls {@code resume} again at
+ * once. Each reaction ends with {@link #endReaction()}, which redirects to the next one, or lets
+ * the last one apply its ending (§8: the last reaction decides): {@link #resumeInterrupted()}, or
+ * a break, restart or reelect.</li>
+ * <li><b>Invocations</b> ({@link InvocationServing}, MASL §9): an external invocation waits in the
+ * callee's queue until the callee's next boundary, or a serving slice, serves it; in
+ * {@code wait(state)} the agent is attentive and serves only what that state allows.
+ * Invocations between the mission's agents ({@link #invoke}) are served by a scheduled slice, so
+ * that the order of slices stays the scheduler's (a seeded run replays); one from outside the
+ * mission may be served inline ({@link #submitInvocationServingInline}, the JADE bridge's FIPA
+ * requests), on the submitting thread, in the same {@code SERVING} state.</li>
+ * <li><b>Permeability</b> ({@link Permeability}, MASL §11): the current state, and whether it
+ * lets a requester invoke a primitive or read or write an attribute, decided when it is served;
+ * with the countermeasures armed by launches ({@link Countermeasures}).</li>
+ * </ul>
  *
  * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
  * friend packages), and may change without notice.
  */
 public final class Agent implements AgentContext, AgentTask {
 
-    private static final int SCHEDULED = 0;
-    private static final int RUNNING = 1;
-    private static final int RUNNING_WOKEN = 2;
-    private static final int PARKED = 3;
-    private static final int SERVING = 4;
-    private static final int SERVING_WOKEN = 5;
-    private static final int DONE = 6;
-
     private final int id;
     private final String name;
     public final AgentImplementation implementation;
     private final AgentProgram program;
     private final Mission mission;
-    private final AtomicInteger state = new AtomicInteger(SCHEDULED);
-    /** The ticket of the pending park, 0 if none. */
-    private final AtomicLong wakeTicket = new AtomicLong();
-    private final EventQueue events = new EventQueue();
+    private final RunState run;
+    private final EventPlanner events = new EventPlanner();
+    private final Permeability permeability;
+    private final InvocationServing invocations;
+    private final Countermeasures countermeasures = new Countermeasures();
+    // Made once: the hot paths that take them allocate nothing.
+    private final BooleanSupplier servable;
+    private final BooleanSupplier attentive;
+    private final Consumer<Countermeasure> fire = this::fire;
+    private final Consumer<EventOccurrence> dropped = this::traceDropped;
     /** The ticket of the agent's latest busy-wait park: an event perceived then wakes it (§5). */
     private volatile long busyWaitTicket;
     /** Whether the agent's latest park is a busy-wait's: for the deadlock watchdog (Mission). */
     private volatile boolean busyWaitPark;
-    private final Queue<PendingInvocation> invocations = new ConcurrentLinkedQueue<>();
-    private final Permeability permeability;
-    /** The ticket of the park of a pending {@code wait(state)}, 0 if none: who zeroes it ends the wait. */
-    private final AtomicLong attentiveTicket = new AtomicLong();
-    /** The state of the pending {@code wait(state)}; read only while {@link #attentiveTicket} is set. */
-    private volatile PermeabilityState attentiveState;
-    /** Countermeasures armed by this agent's launches, in arming order; confined to its slices. */
-    private final List<Countermeasure> armed = new ArrayList<>();
     private volatile boolean finished;
 
     // Confined to the thread running the current slice (successive slices are ordered).
-    private long lastTicket;
     private boolean suspended;
     private int stepsThisSlice;
     /** Step boundaries and plain loop iterations passed: "ran an instruction" for busy-waits. */
@@ -118,10 +98,6 @@ public final class Agent implements AgentContext, AgentTask {
     private long busyWaitProgress = -1;
     /** The program's pc was set to other code: resume it at once, in this slice. */
     private boolean redirected;
-    /** The event processing whose reactions are running; null outside reactions. */
-    private ReactionRun reacting;
-    /** The processing whose last reaction has ended and is applying its ending (resume, break, …). */
-    private ReactionRun ending;
     /**
      * The resumption point whose MASL statement the agent is at, for trace records and reports: the
      * case making the current runtime call. A suspending call comes after {@code pc} was set to the
@@ -131,9 +107,6 @@ public final class Agent implements AgentContext, AgentTask {
     private int statementPc;
     /** Whether {@link #statementPc} is a loop's head, whose statement is the loop, not the last one of its body. */
     private boolean statementIsLoop;
-    /** {@link #statementPc} of the boundary whose events are being reacted to. */
-    private int interruptedStatementPc;
-    private boolean interruptedStatementIsLoop;
 
     // Guarded by the EntryCoordinator's lock (see its invariant for the agent's own reads).
     public final List<Membership> memberships = new ArrayList<>();
@@ -154,11 +127,15 @@ public final class Agent implements AgentContext, AgentTask {
     Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
             Mission mission) {
         this.id = id;
-        this.permeability = new Permeability(type);
         this.name = name;
         this.implementation = implementation;
         this.program = program;
         this.mission = mission;
+        this.run = new RunState(this::describe, mission::countSchedule);
+        this.permeability = new Permeability(type, this, mission.coordinator());
+        this.invocations = new InvocationServing(this, permeability, mission.trace(), this::now);
+        this.servable = invocations::hasServable;
+        this.attentive = invocations::isAttentive;
     }
 
     // ---- AgentTask -----------------------------------------------------------------------------
@@ -170,14 +147,13 @@ public final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void runSlice() {
-        int current = state.get();
-        if (current == SERVING || current == SERVING_WOKEN) {
+        if (run.isServing()) {
             serveWhileBlocked();
             return;
         }
-        if (!state.compareAndSet(SCHEDULED, RUNNING)) {
+        if (!run.startSlice()) {
             // A runtime bug, not the program's: fail the mission rather than the scheduler's thread.
-            mission.agentFailed(this, new IllegalStateException(describe() + " scheduled in state " + current));
+            mission.agentFailed(this, new IllegalStateException(describe() + " scheduled in state " + run.describeState()));
             return;
         }
         stepsThisSlice = 0;
@@ -197,9 +173,9 @@ public final class Agent implements AgentContext, AgentTask {
             serveIfPending();
         } else if (!suspended) {
             die(new IllegalStateException(describe() + ": resume returned without a suspension or finish()"));
-        } else if (!endSliceParked(RUNNING)) {
+        } else if (!endSliceParked(false)) {
             mission.countSchedule();
-            state.set(SCHEDULED);
+            run.reschedule();
             mission.scheduler().schedule(this);
         }
     }
@@ -210,44 +186,45 @@ public final class Agent implements AgentContext, AgentTask {
      */
     private void serveWhileBlocked() {
         try {
-            serveInvocations();
+            invocations.serveAll();
         } catch (Throwable failure) {
             end();
             mission.agentFailed(this, failure);
             return;
         }
         if (finished) {
-            state.set(DONE);
+            run.done();
             // An invocation queued after the queue was drained found the agent SERVING: serve it too.
             serveIfPending();
-        } else if (!endSliceParked(SERVING)) {
+        } else if (!endSliceParked(true)) {
             mission.countSchedule();
-            state.set(SCHEDULED);
+            run.reschedule();
             mission.scheduler().schedule(this);
         }
     }
 
     /**
-     * Ends the current slice {@code from → PARKED} unless an unpark came meanwhile (false), then
-     * serves the invocations queued while the slice ran, now that the agent is blocked. Parked in
-     * {@code wait(state)}, the agent is idle for the deadlock watchdog even with invocations queued
-     * (its state may allow none of them), so serving one is a wake-up: pending from before the agent
-     * turns {@code PARKED} until it is {@code SERVING} (see {@link Mission}, "Deadlock watchdog").
+     * Ends the current slice, running or {@code serving}, {@code → PARKED} unless an unpark came
+     * meanwhile (false), then serves the invocations queued while the slice ran, now that the agent
+     * is blocked. Parked in {@code wait(state)}, the agent is idle for the deadlock watchdog even
+     * with invocations queued (its state may allow none of them), so serving one is a wake-up:
+     * pending from before the agent turns {@code PARKED} until it is {@code SERVING} (see
+     * {@link Mission}, "Deadlock watchdog").
      */
-    private boolean endSliceParked(int from) {
+    private boolean endSliceParked(boolean serving) {
         // Only the agent's own program makes it attentive: no wait can begin during this call.
-        boolean attentive = attentiveTicket.get() != 0;
-        if (attentive) {
+        boolean attentiveNow = invocations.isAttentive();
+        if (attentiveNow) {
             mission.outsideWakeUpStarted();
         }
         try {
-            if (!state.compareAndSet(from, PARKED)) {
+            if (!run.park(serving)) {
                 return false;
             }
             serveIfPending();
             return true;
         } finally {
-            if (attentive) {
+            if (attentiveNow) {
                 mission.outsideWakeUpEnded();
             }
         }
@@ -255,29 +232,9 @@ public final class Agent implements AgentContext, AgentTask {
 
     /** Schedules a serving slice if invocations wait and the agent is blocked or done. */
     private void serveIfPending() {
-        if (claimServing()) {
+        if (run.claimServing(servable)) {
             mission.scheduler().schedule(this);
         }
-    }
-
-    /**
-     * Turns a blocked or finished agent {@code SERVING} if invocations wait for it: true if this
-     * caller did and must now serve them (or have them served). A parked agent leaving {@code PARKED}
-     * counts as a schedule for the deadlock watchdog, as an unpark does; {@code SERVING} is not idle.
-     */
-    private boolean claimServing() {
-        while (hasServable()) {
-            int current = state.get();
-            if (current == PARKED) {
-                mission.countSchedule();
-            } else if (current != DONE) {
-                return false;
-            }
-            if (state.compareAndSet(current, SERVING)) {
-                return true;
-            }
-        }
-        return false;
     }
 
     /**
@@ -289,27 +246,23 @@ public final class Agent implements AgentContext, AgentTask {
      * out queues an invocation uncounted (see {@link Mission}, "Deadlock watchdog").
      */
     boolean isIdle() {
-        boolean nothingQueued = invocations.isEmpty();
-        int current = state.get();
-        if (current == DONE) {
-            return nothingQueued;
-        }
-        return current == PARKED && (nothingQueued || attentiveTicket.get() != 0);
+        boolean nothingQueued = invocations.nothingQueued();
+        return run.isIdle(nothingQueued, attentive);
     }
 
     /** Its program is over (finished or died); the mission may not have counted it out yet. */
     boolean isDone() {
-        return state.get() == DONE;
+        return run.isDone();
     }
 
     /** Parked in a busy-wait: waiting for a change, which an outside invocation is. */
     boolean isParkedInBusyWait() {
-        return state.get() == PARKED && busyWaitPark;
+        return run.isParked() && busyWaitPark;
     }
 
     private void end() {
         finished = true;
-        state.set(DONE);
+        run.done();
     }
 
     /**
@@ -323,8 +276,7 @@ public final class Agent implements AgentContext, AgentTask {
         statementIsLoop = false;
         mission.trace().record(new TraceEvent.AgentFailed(now(), id, String.valueOf(failure), source()));
         try {
-            reacting = null;
-            ending = null;
+            events.abandon();
             fireCountermeasures(0);
             mission.coordinator().leaveAll(this);
         } catch (RuntimeException leaving) {
@@ -343,9 +295,7 @@ public final class Agent implements AgentContext, AgentTask {
         }
         suspended = true;
         busyWaitPark = false;
-        long ticket = ++lastTicket;
-        wakeTicket.set(ticket);
-        return ticket;
+        return run.issueTicket();
     }
 
     /**
@@ -353,7 +303,7 @@ public final class Agent implements AgentContext, AgentTask {
      * it goes on without waiting after all (the arrival that completes a synchronisation barrier).
      */
     public void cancelPark(long ticket) {
-        if (!wakeTicket.compareAndSet(ticket, 0)) {
+        if (!run.takeBack(ticket)) {
             throw new IllegalStateException(describe() + ": its park was ended before it was taken back");
         }
         suspended = false;
@@ -361,7 +311,7 @@ public final class Agent implements AgentContext, AgentTask {
 
     /** The ticket of the pending park, or 0 if the agent has none (it is running, not waiting). */
     public long pendingTicket() {
-        return wakeTicket.get();
+        return run.pendingTicket();
     }
 
     /** Ends the park that issued {@code ticket}; ignored if that park already ended. */
@@ -375,38 +325,14 @@ public final class Agent implements AgentContext, AgentTask {
         }
     }
 
-    /**
-     * Claims the end of the park that issued {@code ticket}, as the first half of {@link #unpark}:
-     * false if that park already ended. The claimant must then call {@link #leavePark()}.
-     */
+    /** {@link RunState#endPark}: the first half of {@link #unpark}. */
     public boolean endPark(long ticket) {
-        return ticket != 0 && wakeTicket.compareAndSet(ticket, 0);
+        return run.endPark(ticket);
     }
 
-    /**
-     * The second half of an unpark whose {@link #endPark} succeeded, after the watchdog's count:
-     * true if the agent went {@code PARKED → SCHEDULED} and the caller must hand it to the
-     * scheduler; false if its slice (running or serving) notes the wake-up and reschedules it.
-     */
+    /** {@link RunState#leavePark}: the second half of {@link #unpark}. */
     public boolean leavePark() {
-        while (true) {
-            int current = state.get();
-            if (current == PARKED && state.compareAndSet(PARKED, SCHEDULED)) {
-                return true;
-            }
-            if (current == RUNNING && state.compareAndSet(RUNNING, RUNNING_WOKEN)) {
-                return false;
-            }
-            if (current == SERVING && state.compareAndSet(SERVING, SERVING_WOKEN)) {
-                return false;
-            }
-            if (current == DONE) {
-                return false;
-            }
-            if (current == SCHEDULED || current == RUNNING_WOKEN || current == SERVING_WOKEN) {
-                throw new IllegalStateException(describe() + " woken twice");
-            }
-        }
+        return run.leavePark();
     }
 
     // ---- AgentContext --------------------------------------------------------------------------
@@ -430,7 +356,7 @@ public final class Agent implements AgentContext, AgentTask {
 
     /** Steps 2 and 3 of a step boundary (§5): pending invocations, then the barrier if one is due. */
     private boolean completeBoundary(boolean barrier) {
-        serveInvocations();
+        invocations.serveAll();
         if (barrier && !mission.coordinator().arriveAtBarrier(this)) {
             return false;
         }
@@ -474,7 +400,7 @@ public final class Agent implements AgentContext, AgentTask {
     public boolean loopIteration() {
         atLoopHead();
         progress++;
-        if (isReacting()) {
+        if (events.isReacting()) {
             return yieldIfSliceUsed();
         }
         if (startReactions(false)) {
@@ -486,12 +412,12 @@ public final class Agent implements AgentContext, AgentTask {
     @Override
     public boolean busyWaitIteration() {
         atLoopHead();
-        if (!isReacting()) {
+        if (!events.isReacting()) {
             // Reactions assign locals: running them is progress, so the next iteration does not park.
             if (startReactions(false)) {
                 return false;
             }
-            serveInvocations();
+            invocations.serveAll();
         }
         long epoch = mission.changes().current();
         if (epoch == busyWaitEpoch && progress == busyWaitProgress) {
@@ -499,7 +425,7 @@ public final class Agent implements AgentContext, AgentTask {
             busyWaitPark = true;
             busyWaitTicket = ticket;
             // An emitter that pushed before the ticket was published has not woken us: wake ourselves.
-            if (!isReacting() && !events.isEmpty()) {
+            if (!events.isReacting() && !events.nothingPerceived()) {
                 unpark(ticket);
             }
             return false;
@@ -528,7 +454,7 @@ public final class Agent implements AgentContext, AgentTask {
     public void breakOut(EntryDefinition outermost) {
         atCurrentCase();
         requireNoReactionRunning("break");
-        ending = null;
+        events.abandonEnding();
         fireCountermeasures(depthOf(outermost));
         mission.coordinator().leaveUpTo(this, mission.entry(outermost), LeaveCause.BREAK);
     }
@@ -537,7 +463,7 @@ public final class Agent implements AgentContext, AgentTask {
     public void reelect(EntryDefinition block) {
         atCurrentCase();
         requireNoReactionRunning("reelect");
-        ending = null;
+        events.abandonEnding();
         fireCountermeasures(depthOf(block));
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.REELECT);
     }
@@ -546,7 +472,7 @@ public final class Agent implements AgentContext, AgentTask {
     public void restart(EntryDefinition block) {
         atCurrentCase();
         requireNoReactionRunning("restart");
-        ending = null;
+        events.abandonEnding();
         fireCountermeasures(depthOf(block) + 1);
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.RESTART);
     }
@@ -630,46 +556,39 @@ public final class Agent implements AgentContext, AgentTask {
 
     @Override
     public String messageOf(Event event) {
-        if (reacting == null || reacting.current().event() != event) {
-            return null;
-        }
-        return reacting.current().message();
+        return events.messageOf(event);
     }
 
     @Override
     public boolean endReaction() {
-        if (reacting == null) {
+        if (!events.isReacting()) {
             throw new IllegalStateException(describe() + ": endReaction outside a reaction");
         }
-        if (reacting.hasNext()) {
+        if (!events.endReaction()) {
             redirectToNextReaction();
             return false;
         }
-        ending = reacting;
-        reacting = null;
         return true;
     }
 
     @Override
     public boolean resumeInterrupted() {
-        if (ending == null) {
+        ReactionRun ended = events.takeEnding();
+        if (ended == null) {
             throw new IllegalStateException(describe() + ": resume without a reaction that just ended");
         }
-        ReactionRun ended = ending;
-        ending = null;
         program.jump(ended.interruptedPc());
-        statementPc = interruptedStatementPc;
-        statementIsLoop = interruptedStatementIsLoop;
+        statementPc = ended.statementPc();
+        statementIsLoop = ended.statementIsLoop();
         return completeBoundary(ended.barrierDue());
     }
 
     @Override
     public void clearEvents() {
-        if (reacting == null) {
+        if (!events.isReacting()) {
             throw new IllegalStateException(describe() + ": clearEvents outside a reaction");
         }
-        reacting.dropRest().forEach(this::traceDropped);
-        events.takeAll().forEach(this::traceDropped);
+        events.clear(dropped);
     }
 
     @Override
@@ -688,7 +607,7 @@ public final class Agent implements AgentContext, AgentTask {
             return CompletableFuture.completedFuture(nullAgent(defaultValue));
         }
         Agent target = mission.agentOf(callee);
-        disarm(target, primitive);
+        countermeasures.disarm(target, primitive);
         if (target == this) {
             return CompletableFuture.completedFuture(invokeSelf(primitive, defaultValue, call));
         }
@@ -706,7 +625,7 @@ public final class Agent implements AgentContext, AgentTask {
     @Override
     public <T> T invokeSelf(String primitive, T defaultValue, Callable<T> call) {
         atCurrentCase();
-        disarm(this, primitive);
+        countermeasures.disarm(this, primitive);
         if (!allowsOwn(primitive)) {
             return defaultValue;
         }
@@ -741,10 +660,10 @@ public final class Agent implements AgentContext, AgentTask {
             return CompletableFuture.completedFuture(nullAgent(defaultValue));
         }
         Agent target = mission.agentOf(callee);
-        disarm(target, primitive);
+        countermeasures.disarm(target, primitive);
         CompletableFuture<T> result = start(target, primitive, defaultValue, call);
         if (countermeasure != null && !memberships.isEmpty()) {
-            armed.add(new Countermeasure(innermost().entry.definition(), target, countermeasure,
+            countermeasures.arm(new Countermeasure(innermost().entry.definition(), target, countermeasure,
                     countermeasureCall, result, defaultValue));
         }
         return result;
@@ -775,30 +694,9 @@ public final class Agent implements AgentContext, AgentTask {
         return new Label(mission.changes());
     }
 
-    /** Invoking a countermeasure explicitly disarms it (§9): every armed one of that primitive of {@code target}. */
-    private void disarm(Agent target, String primitive) {
-        if (!armed.isEmpty()) {
-            armed.removeIf(countermeasure -> countermeasure.target() == target
-                    && countermeasure.name().equals(primitive));
-        }
-    }
-
-    /**
-     * The agent is about to leave its blocks from the innermost to depth {@code outermostLeft} (0 is
-     * its outermost block): fires the countermeasures armed for them, innermost block first, the
-     * latest armed first within a block (§9).
-     */
+    /** The agent is about to leave its blocks from the innermost to depth {@code outermostLeft} (0: outermost). */
     private void fireCountermeasures(int outermostLeft) {
-        for (int depth = memberships.size() - 1; depth >= outermostLeft && !armed.isEmpty(); depth--) {
-            EntryDefinition block = memberships.get(depth).entry.definition();
-            for (int i = armed.size() - 1; i >= 0; i--) {
-                Countermeasure countermeasure = armed.get(i);
-                if (countermeasure.block() == block) {
-                    armed.remove(i);
-                    fire(countermeasure);
-                }
-            }
-        }
+        countermeasures.fireFor(memberships, outermostLeft, fire);
     }
 
     private void fire(Countermeasure countermeasure) {
@@ -855,7 +753,7 @@ public final class Agent implements AgentContext, AgentTask {
         if (owner == null) {
             return nullAgent(defaultValue);
         }
-        if (!mission.agentOf(owner).permitsAttribute(this, attribute, PermeabilityState.READ)) {
+        if (!mission.agentOf(owner).permeability.permitsAttribute(this, attribute, PermeabilityState.READ)) {
             raise(Event.FORBIDDEN_ACCESS, attribute);
             return defaultValue;
         }
@@ -868,7 +766,7 @@ public final class Agent implements AgentContext, AgentTask {
             nullAgent(null);
             return false;
         }
-        if (!mission.agentOf(owner).permitsAttribute(this, attribute, PermeabilityState.WRITE)) {
+        if (!mission.agentOf(owner).permeability.permitsAttribute(this, attribute, PermeabilityState.WRITE)) {
             raise(Event.FORBIDDEN_ACCESS, attribute);
             return false;
         }
@@ -876,9 +774,15 @@ public final class Agent implements AgentContext, AgentTask {
         return true;
     }
 
-    private boolean permitsAttribute(Agent requester, String attribute, int permission) {
+    /** Whether the current state lets an agent outside the mission read {@code attribute} (its r bit for o). */
+    boolean othersMayRead(String attribute) {
         return Permeability.allows(permeability.current(), permeability.attributeId(attribute),
-                relationOf(requester, permeability.isStaticAttribute(attribute)), permission);
+                PermeabilityState.Requester.OTHER, PermeabilityState.READ);
+    }
+
+    /** This agent's permeability: its type, current state and what that state allows. */
+    public Permeability permeability() {
+        return permeability;
     }
 
     @Override
@@ -923,19 +827,15 @@ public final class Agent implements AgentContext, AgentTask {
             uncaughtException(new IllegalArgumentException("no permeability state " + state));
             return yieldIfSliceUsed();
         }
-        PendingInvocation allowed = firstAllowedBy(attentiveTo);
-        if (allowed != null) {
-            invocations.remove(allowed);
-            serve(allowed);
+        if (invocations.serveFirstAllowedBy(attentiveTo)) {
             return yieldIfSliceUsed();
         }
         long ticket = prepareToPark();
-        attentiveState = attentiveTo;
-        attentiveTicket.set(ticket);
+        invocations.attend(attentiveTo, ticket);
         if (ms >= 0) {
             mission.outsideWakeUpStarted();
             mission.scheduler().scheduleAfter(ms, () -> {
-                if (attentiveTicket.compareAndSet(ticket, 0)) {
+                if (invocations.stopAttending(ticket)) {
                     unpark(ticket);
                 }
                 mission.outsideWakeUpEnded();
@@ -973,7 +873,7 @@ public final class Agent implements AgentContext, AgentTask {
         mission.countSchedule();
         invocations.add(invocation);
         // Once the mission has ended, an invocation is never run: its scheduler would not run a serving slice either.
-        if (!mission.hasEnded() && claimServing()) {
+        if (!mission.hasEnded() && run.claimServing(servable)) {
             serveWhileBlocked();
         }
         mission.changes().advance();
@@ -994,7 +894,7 @@ public final class Agent implements AgentContext, AgentTask {
 
     /** Perceives an occurrence (§8): from any thread, never blocks; wakes a parked busy-wait (§5). */
     void perceive(EventOccurrence occurrence) {
-        events.offer(occurrence);
+        events.perceive(occurrence);
         // A stale ticket (the agent has woken since, or parks elsewhere) is ignored by unpark.
         long ticket = busyWaitTicket;
         if (ticket != 0) {
@@ -1008,33 +908,28 @@ public final class Agent implements AgentContext, AgentTask {
      * reaction. Returns whether it did; the boundary call then returns {@code false}.
      */
     private boolean startReactions(boolean barrierDue) {
-        if (events.isEmpty()) {
+        if (events.nothingPerceived()) {
             return false;
         }
-        List<EventOccurrence> perceived = events.takeAll();
         List<EntryDefinition> chain = new ArrayList<>(memberships.size());
         for (int i = memberships.size() - 1; i >= 0; i--) {
             chain.add(memberships.get(i).entry.definition());
         }
-        ReactionPlan plan = ReactionPlan.of(perceived, chain);
-        plan.dropped().forEach(this::traceDropped);
-        if (plan.steps().isEmpty()) {
+        if (events.start(chain, program.pc(), barrierDue, statementPc, statementIsLoop, dropped) == null) {
             return false;
         }
         progress++;
-        interruptedStatementPc = statementPc;
-        interruptedStatementIsLoop = statementIsLoop;
-        reacting = new ReactionRun(plan.steps(), program.pc(), barrierDue);
         redirectToNextReaction();
         return true;
     }
 
     private void redirectToNextReaction() {
-        ReactionPlan.Step step = reacting.next();
+        ReactionRun processing = events.reacting();
+        ReactionPlan.Step step = processing.next();
         Reaction reaction = step.reaction();
         mission.trace().record(new TraceEvent.EventReacted(now(), id,
                 step.occurrence().event().name(), reaction.block().name(), reaction.isDefault(),
-                sourceOf(interruptedStatementPc, interruptedStatementIsLoop)));
+                sourceOf(processing.statementPc(), processing.statementIsLoop())));
         program.jump(program.reactionPc(reaction));
         suspended = true;
         redirected = true;
@@ -1049,13 +944,9 @@ public final class Agent implements AgentContext, AgentTask {
         return mission.scheduler().nanoTime();
     }
 
-    private boolean isReacting() {
-        return reacting != null;
-    }
-
     /** A reaction runs in one go (§8): from its start to {@link #endReaction()}, no block operation or boundary. */
     private void requireNoReactionRunning(String what) {
-        if (reacting != null) {
+        if (events.isReacting()) {
             throw new IllegalStateException(describe() + ": " + what + " inside a reaction");
         }
     }
@@ -1063,7 +954,7 @@ public final class Agent implements AgentContext, AgentTask {
     /** Neither in a reaction, nor between the last one's end and its ending (resume, break, …). */
     private void requireOutsideReaction(String what) {
         requireNoReactionRunning(what);
-        if (ending != null) {
+        if (events.isEnding()) {
             throw new IllegalStateException(describe() + ": " + what
                     + " after endReaction(): a reaction ends with resumeInterrupted, break, restart or reelect");
         }
@@ -1076,96 +967,6 @@ public final class Agent implements AgentContext, AgentTask {
             }
         }
         throw new IllegalStateException(describe() + " emits " + event + " outside that block");
-    }
-
-    /**
-     * Step 2 of a boundary, or a serving slice (§5): every pending invocation in order, each run or
-     * denied by the current state; while attentive (in {@code wait(state)}), only the first one that
-     * state allows, which then ends the wait.
-     */
-    private void serveInvocations() {
-        long attentive = attentiveTicket.get();
-        if (attentive != 0) {
-            serveAttentively(attentive);
-            return;
-        }
-        PendingInvocation invocation;
-        while ((invocation = invocations.poll()) != null) {
-            PermeabilityState state = permeability.current();
-            if (permits(state, invocation)) {
-                serve(invocation);
-            } else {
-                mission.trace().record(new TraceEvent.InvocationDenied(now(), id, invocation.requesterId(),
-                        invocation.primitive(), permeability.currentName(), source()));
-                invocation.deny();
-            }
-        }
-    }
-
-    private void serveAttentively(long ticket) {
-        PendingInvocation allowed = firstAllowedBy(attentiveState);
-        // The timeout of the wait may have won: then the invocation waits for the next boundary.
-        if (allowed == null || !attentiveTicket.compareAndSet(ticket, 0)) {
-            return;
-        }
-        invocations.remove(allowed);
-        serve(allowed);
-        unpark(ticket);
-    }
-
-    private void serve(PendingInvocation invocation) {
-        mission.trace().record(new TraceEvent.InvocationServed(now(), id, invocation.requesterId(),
-                invocation.primitive(), source()));
-        invocation.run();
-    }
-
-    /** Whether a serving slice has something to run: any pending invocation, or while attentive one it allows. */
-    private boolean hasServable() {
-        if (invocations.isEmpty()) {
-            return false;
-        }
-        return attentiveTicket.get() == 0 || firstAllowedBy(attentiveState) != null;
-    }
-
-    private PendingInvocation firstAllowedBy(PermeabilityState state) {
-        for (PendingInvocation invocation : invocations) {
-            if (permits(state, invocation)) {
-                return invocation;
-            }
-        }
-        return null;
-    }
-
-    /** Whether {@code state} of this agent lets the invocation run, its requester's relation decided now (§11). */
-    private boolean permits(PermeabilityState state, PendingInvocation invocation) {
-        String primitive = invocation.primitive();
-        if (primitive == null || state == null) {
-            return true;
-        }
-        // The relation needs the coordinator's lock: decided only when a state's rights depend on it.
-        return Permeability.allows(state, permeability.primitiveId(primitive),
-                relationOf(invocation.requester(), permeability.isStaticPrimitive(primitive)),
-                PermeabilityState.INVOKE);
-    }
-
-    /**
-     * The requester's digit of the rights (§11), decided at the time of the access: u for this agent,
-     * g for an agent whose innermost current block is exactly this agent's, o otherwise. For a static
-     * member, a requester of the same type is filtered by u, another by g or o.
-     */
-    private Requester relationOf(Agent requester, boolean staticMember) {
-        if (requester == this) {
-            return Requester.SELF;
-        }
-        if (requester == null) {
-            return Requester.OTHER;
-        }
-        if (staticMember && requester.permeability.type() == permeability.type()) {
-            return Requester.SELF;
-        }
-        boolean sameBlock = mission.coordinator().query(() -> !memberships.isEmpty()
-                && !requester.memberships.isEmpty() && innermost().entry == requester.innermost().entry);
-        return sameBlock ? Requester.GROUP : Requester.OTHER;
     }
 
     private boolean yieldIfSliceUsed() {

@@ -3,6 +3,7 @@ package masl.runtime;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.Optional;
 import java.util.Objects;
 import masl.runtime.entry.Entry;
 
@@ -73,6 +74,13 @@ public final class EntryDefinition {
     /** Declares {@code shared event name;} (MASL §8): perceived by every member of this block at emission. */
     public Event declareSharedEvent(String name) {
         return declareEvent(name, true);
+    }
+
+    /** The shared event {@code eventName} this block declares, if it does. */
+    Optional<Event> sharedEvent(String eventName) {
+        synchronized (events) {
+            return events.stream().filter(event -> event.isShared() && event.name().equals(eventName)).findFirst();
+        }
     }
 
     private Event declareEvent(String eventName, boolean shared) {

@@ -25,6 +25,7 @@ import java.util.function.Function;
 import masl.runtime.descriptor.AgentType;
 import masl.runtime.entry.Entry;
 import masl.runtime.entry.EntryCoordinator;
+import masl.runtime.event.EventOccurrence;
 import masl.runtime.invocation.PendingInvocation;
 import masl.runtime.scheduling.Blocking;
 import masl.runtime.scheduling.ChangeEpoch;
@@ -95,6 +96,8 @@ public final class Mission {
 
     /** How often the deadlock watchdog looks; a deadlock is reported after two looks agree. */
     public static final Duration WATCHDOG_PERIOD = Duration.ofMillis(100);
+    /** The emitter of an event raised from outside the mission ({@link #emitFromOutside}): no agent. */
+    public static final int OUTSIDE = -1;
 
     private final List<Agent> agents;
     /** The agents' MASL names by proxy id, for the trace. */
@@ -347,6 +350,42 @@ public final class Mission {
         Agent callee = agents.get(proxyId);
         PendingInvocation pending = fromOther(primitive, invocation, denial);
         fromOutside(() -> callee.submitInvocationServingInline(pending));
+    }
+
+    /**
+     * A shared event raised from outside the mission (a FIPA agent, through the JADE bridge): every
+     * member of each block declaring a shared event {@code eventName} perceives it now, as if one of
+     * them had emitted it with {@code message}; its emitter is no agent ({@link #OUTSIDE}). Any thread.
+     *
+     * @return how many agents perceived it (0: no block declares it, or none has members now)
+     */
+    public int emitFromOutside(String eventName, String message) {
+        int perceived = 0;
+        for (Map.Entry<EntryDefinition, Entry> block : entries.entrySet()) {
+            Optional<Event> event = block.getKey().sharedEvent(eventName);
+            if (event.isEmpty()) {
+                continue;
+            }
+            Agent[] receivers = block.getValue().perceivers();
+            trace.record(new TraceEvent.EventEmitted(System.nanoTime(), OUTSIDE, eventName, block.getValue().name(),
+                    message, receivers.length, null));
+            EventOccurrence occurrence = new EventOccurrence(event.get(), message, OUTSIDE);
+            fromOutside(() -> {
+                for (Agent receiver : receivers) {
+                    receiver.perceive(occurrence);
+                }
+            });
+            perceived += receivers.length;
+        }
+        return perceived;
+    }
+
+    /**
+     * Whether agent {@code proxyId}'s current permeability state lets an agent outside the mission (an
+     * <em>other</em>, MASL §11) read its attribute {@code attribute}; a type without states allows it.
+     */
+    public boolean othersMayRead(int proxyId, String attribute) {
+        return agents.get(proxyId).othersMayRead(attribute);
     }
 
     /** The mission state of a block of this mission's program. */

@@ -40,7 +40,8 @@ public final class AclInvocations {
     public static InvocationRequest readRequest(ACLMessage message) throws ContentException {
         if (message.getPerformative() != ACLMessage.REQUEST) {
             throw new ContentException("performative " + ACLMessage.getPerformative(message.getPerformative())
-                    + " is not understood: a MASL agent answers REQUEST only");
+                    + " is not understood: a MASL agent answers REQUEST (invocations),"
+                    + " QUERY_REF (attributes), SUBSCRIBE and CANCEL (events) and INFORM masl-event");
         }
         if (message.getLanguage() != null && !LANGUAGE.equals(message.getLanguage())) {
             throw new ContentException("language \"" + message.getLanguage() + "\" is not understood: use \""

@@ -48,10 +48,11 @@ class AclInvocationsTest {
 
     @Test
     void otherPerformativesLanguagesAndOntologiesAreNotUnderstood() {
-        ACLMessage query = AclInvocations.request(CALLEE, "nop", List.of(), "r");
-        query.setPerformative(ACLMessage.QUERY_REF);
-        assertEquals("message: error: performative QUERY-REF is not understood: a MASL agent answers REQUEST only",
-                assertThrows(ContentException.class, () -> AclInvocations.readRequest(query)).describe());
+        ACLMessage propose = AclInvocations.request(CALLEE, "nop", List.of(), "r");
+        propose.setPerformative(ACLMessage.PROPOSE);
+        assertEquals("message: error: performative PROPOSE is not understood: a MASL agent answers REQUEST"
+                + " (invocations), QUERY_REF (attributes), SUBSCRIBE and CANCEL (events) and INFORM masl-event",
+                assertThrows(ContentException.class, () -> AclInvocations.readRequest(propose)).describe());
         ACLMessage sl = AclInvocations.request(CALLEE, "nop", List.of(), "r");
         sl.setLanguage("fipa-sl");
         assertEquals("message: error: language \"fipa-sl\" is not understood: use \"json\"",

@@ -35,6 +35,7 @@ public final class AgentType {
     private final List<PermeabilityState> states;
     private final Map<String, Primitive> primitives;
     private final Map<String, Attribute> attributes;
+    private final FipaBinding fipa;
 
     AgentType(Declaration declaration, DescriptorSource source, AgentType supertype, List<PermeabilityState> states) {
         this.shortName = declaration.shortName();
@@ -52,6 +53,15 @@ public final class AgentType {
                 Primitive::name);
         this.attributes = visible(supertype == null ? List.of() : supertype.attributes(), declaredAttributes,
                 Attribute::name);
+        this.fipa = declaration.fipa() != null || supertype == null ? declaration.fipa() : supertype.fipa;
+    }
+
+    /**
+     * The external FIPA agent each agent of this type stands for ({@code <Fipa>}, its own or its
+     * supertype's); empty for a type implemented in Java only.
+     */
+    public Optional<FipaBinding> fipa() {
+        return Optional.ofNullable(fipa);
     }
 
     /** The default MASL name of the type ({@code short_class_name}). */

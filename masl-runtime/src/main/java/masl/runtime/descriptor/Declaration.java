@@ -8,10 +8,11 @@ import java.util.Map;
  *
  * @param superFullClassName as written, or null
  * @param agent              the {@code <Agent>} element, where type-level problems are reported
+ * @param fipa               the {@code <Fipa>} binding, or null for a type implemented in Java
  */
 record Declaration(String shortName, String fullClassName, String superFullClassName, XmlElement agent,
         List<UtilityClass> utilityClasses, List<Primitive> primitives, List<Attribute> attributes,
-        List<StateDeclaration> states) {
+        List<StateDeclaration> states, FipaBinding fipa) {
 
     int line() {
         return agent.line();

@@ -67,7 +67,28 @@ final class DeclarationReader {
         }
         String shortName = agent.attribute("short_class_name");
         return new Declaration(shortName == null ? simpleName(fullClassName) : shortName, fullClassName,
-                agent.attribute("super_full_class_name"), agent, utilityClasses, primitives, attributes, states);
+                agent.attribute("super_full_class_name"), agent, utilityClasses, primitives, attributes, states,
+                fipa(agent.children("Fipa")));
+    }
+
+    /** The one {@code <Fipa>}, naming its agent one way; null if there is none or it is wrong. */
+    private FipaBinding fipa(List<XmlElement> elements) {
+        if (elements.isEmpty()) {
+            return null;
+        }
+        for (XmlElement extra : elements.subList(1, elements.size())) {
+            problems.at(extra, "a type has one <Fipa> at most: the first is on line " + elements.get(0).line());
+        }
+        XmlElement element = elements.get(0);
+        String serviceType = element.attribute("service_type");
+        String agentName = element.attribute("agent_name");
+        if ((serviceType == null) == (agentName == null)) {
+            problems.at(element, "<Fipa> names its agent by service_type or by agent_name: give one of the two");
+            return null;
+        }
+        String language = element.attribute("language");
+        return language == null ? null
+                : new FipaBinding(serviceType, agentName, language, element.attribute("ontology"));
     }
 
     /** Records the member's id and name; false (and a problem) when either is taken already in this file. */

@@ -13,18 +13,15 @@ import java.util.concurrent.atomic.AtomicReference;
  *
  * <p><b>Order.</b> Occurrences are taken in the order their pushes took effect, so the occurrences
  * of one emitter keep the order in which it emitted them.
- *
- * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
- * friend packages), and may change without notice.
  */
-public final class EventQueue {
+final class EventQueue {
 
     private record Node(EventOccurrence occurrence, Node below) { }
 
     private final AtomicReference<Node> top = new AtomicReference<>();
 
     /** Adds an occurrence; safe from any thread, never blocks. */
-    public void offer(EventOccurrence occurrence) {
+    void offer(EventOccurrence occurrence) {
         Node current;
         do {
             current = top.get();
@@ -32,7 +29,7 @@ public final class EventQueue {
     }
 
     /** Removes and returns every occurrence offered so far, oldest first. */
-    public List<EventOccurrence> takeAll() {
+    List<EventOccurrence> takeAll() {
         Node node = top.getAndSet(null);
         List<EventOccurrence> taken = new ArrayList<>();
         for (; node != null; node = node.below()) {
@@ -42,7 +39,7 @@ public final class EventQueue {
         return taken;
     }
 
-    public boolean isEmpty() {
+    boolean isEmpty() {
         return top.get() == null;
     }
 }

@@ -35,7 +35,7 @@ public final class ReactionPlan {
      * Plans the processing of {@code perceived} (in order of perception) for an agent whose
      * blocks are {@code chain}, innermost first.
      */
-    public static ReactionPlan of(List<EventOccurrence> perceived, List<EntryDefinition> chain) {
+    static ReactionPlan of(List<EventOccurrence> perceived, List<EntryDefinition> chain) {
         List<Found> found = new ArrayList<>();
         List<EventOccurrence> dropped = new ArrayList<>();
         for (EventOccurrence occurrence : perceived) {
@@ -64,12 +64,12 @@ public final class ReactionPlan {
     }
 
     /** The reactions to run, in order. */
-    public List<Step> steps() {
+    List<Step> steps() {
         return steps;
     }
 
     /** The occurrences no block of the chain reacts to, in order of perception. */
-    public List<EventOccurrence> dropped() {
+    List<EventOccurrence> dropped() {
         return dropped;
     }
 }

@@ -17,17 +17,24 @@ public final class ReactionRun {
     private final ArrayDeque<ReactionPlan.Step> toRun;
     private final int interruptedPc;
     private final boolean barrierDue;
+    private final int statementPc;
+    private final boolean statementIsLoop;
     private EventOccurrence current;
 
     /**
      * @param steps the reactions to run, in order; at least one
      * @param interruptedPc where the interrupted boundary continues
      * @param barrierDue whether that boundary still owes the synchronisation barrier (§5 step 3)
+     * @param statementPc the resumption point whose statement the interrupted boundary is at
+     * @param statementIsLoop whether that point is a loop's head
      */
-    public ReactionRun(List<ReactionPlan.Step> steps, int interruptedPc, boolean barrierDue) {
+    ReactionRun(List<ReactionPlan.Step> steps, int interruptedPc, boolean barrierDue, int statementPc,
+            boolean statementIsLoop) {
         this.toRun = new ArrayDeque<>(steps);
         this.interruptedPc = interruptedPc;
         this.barrierDue = barrierDue;
+        this.statementPc = statementPc;
+        this.statementIsLoop = statementIsLoop;
     }
 
     public boolean hasNext() {
@@ -47,7 +54,7 @@ public final class ReactionRun {
     }
 
     /** {@code clearEvents}: forgets the reactions not run yet and returns their occurrences. */
-    public List<EventOccurrence> dropRest() {
+    List<EventOccurrence> dropRest() {
         List<EventOccurrence> dropped = new ArrayList<>(toRun.size());
         toRun.forEach(step -> dropped.add(step.occurrence()));
         toRun.clear();
@@ -60,5 +67,15 @@ public final class ReactionRun {
 
     public boolean barrierDue() {
         return barrierDue;
+    }
+
+    /** The resumption point whose statement the interrupted boundary is at, for trace records. */
+    public int statementPc() {
+        return statementPc;
+    }
+
+    /** Whether {@link #statementPc} is a loop's head. */
+    public boolean statementIsLoop() {
+        return statementIsLoop;
     }
 }

@@ -1,0 +1,54 @@
+package masl.cli;
+
+import java.io.ByteArrayOutputStream;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.nio.charset.Charset;
+import java.nio.charset.StandardCharsets;
+import java.util.regex.Pattern;
+
+/**
+ * A standard error on which every stack trace is one line: its first (the exception and its
+ * message); its frames, {@code ... n more}, {@code Caused by:} lines and JADE's own
+ * {@code Nested Exception:} lines are dropped. JADE prints some of its faults with
+ * {@code printStackTrace} rather than through its log (a peer container whose JVM ended abruptly):
+ * the {@code masl} command ({@link Main}) installs it as {@code System.err} so that those are one line
+ * too (masl-jade-bridge's {@code JadeLog} makes JADE's log records one line; the CLI itself never
+ * prints a stack trace). No JADE class is involved: an in-process run loads none. Thread-safe, as a
+ * {@link PrintStream} is.
+ */
+final class StackTraceFolding extends OutputStream {
+
+    private static final Pattern CONTINUATION = Pattern.compile(
+            "\\s+at \\S.*|\\s*\\.\\.\\. \\d+ more|\\s*(Caused by|Suppressed): .*|\\s*Nested Exception:\\s*");
+
+    private final PrintStream target;
+    private final ByteArrayOutputStream line = new ByteArrayOutputStream();
+
+    private StackTraceFolding(PrintStream target) {
+        this.target = target;
+    }
+
+    /** {@code target}, stack traces folded, flushed at each line; text is encoded in the platform's charset. */
+    static PrintStream around(PrintStream target) {
+        return new PrintStream(new StackTraceFolding(target), true, Charset.defaultCharset());
+    }
+
+    @Override
+    public synchronized void write(int b) {
+        line.write(b);
+        if (b == '\n') {
+            // The patterns are ASCII: matching bytes as Latin-1 works for any charset that extends ASCII.
+            String text = line.toString(StandardCharsets.ISO_8859_1).stripTrailing();
+            if (!CONTINUATION.matcher(text).matches()) {
+                target.write(line.toByteArray(), 0, line.size());
+            }
+            line.reset();
+        }
+    }
+
+    @Override
+    public synchronized void flush() {
+        target.flush();
+    }
+}

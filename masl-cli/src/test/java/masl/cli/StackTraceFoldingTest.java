@@ -1,0 +1,26 @@
+package masl.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.ByteArrayOutputStream;
+import java.io.EOFException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import org.junit.jupiter.api.Test;
+
+class StackTraceFoldingTest {
+
+    @Test
+    void aStackTraceWithCausesIsItsFirstLineAndOtherLinesPassUnchanged() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream err = StackTraceFolding.around(new PrintStream(bytes, true, StandardCharsets.UTF_8));
+        err.println("before");
+        Exception nested = new IllegalStateException("connection lost", new EOFException("EOF reached"));
+        nested.addSuppressed(new RuntimeException("also"));
+        nested.printStackTrace(err);
+        err.println("Nested Exception:");
+        err.println("after, at the end");
+        assertEquals("before\njava.lang.IllegalStateException: connection lost\nafter, at the end\n",
+                bytes.toString(StandardCharsets.UTF_8));
+    }
+}
