@@ -23,6 +23,8 @@ final class EventSubscribers {
 
     private final List<String> names;
     private final Map<AID, Subscription> subscriptions = new ConcurrentHashMap<>();
+    /** The mission whose events these are: it tells a shared event from a local one, which stays inside. */
+    private volatile Mission mission;
 
     private record Subscription(ACLMessage subscribe, Agent via) {
     }
@@ -30,6 +32,11 @@ final class EventSubscribers {
     /** @param names the mission's agents' names, by proxy id: emitters named in the events sent */
     EventSubscribers(List<String> names) {
         this.names = List.copyOf(names);
+    }
+
+    /** The mission whose events are forwarded, once built: none is before. */
+    void of(Mission built) {
+        mission = built;
     }
 
     /** Takes a {@code SUBSCRIBE} (answered {@code AGREE}) or a {@code CANCEL} that {@code via} received; false for any other message. */
@@ -53,8 +60,10 @@ final class EventSubscribers {
     Trace forwarding(Trace trace) {
         return event -> {
             trace.record(event);
+            Mission events = mission;
             if (event instanceof TraceEvent.EventEmitted emitted && emitted.block() != null
-                    && !subscriptions.isEmpty()) {
+                    && !subscriptions.isEmpty() && events != null
+                    && events.declaresSharedEvent(emitted.block(), emitted.event())) {
                 String emitter = emitted.agent() == Mission.OUTSIDE ? null : names.get(emitted.agent());
                 String content = JsonContent.event(emitted.event(), emitted.block(), emitter, emitted.message());
                 subscriptions.values().forEach(subscription -> send(subscription, content));

@@ -237,6 +237,7 @@ public final class JadeLauncher {
             return implementation;
         });
         Mission mission = builder.build();
+        subscribers.of(mission);
         if (created.size() != specs.size()) {
             throw new IllegalStateException(program.getClass().getName() + " declares " + specs.size()
                     + " agents but made " + created.size() + " through the implementation factory");

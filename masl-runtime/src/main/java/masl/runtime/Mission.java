@@ -353,6 +353,19 @@ public final class Mission {
     }
 
     /**
+     * Whether block {@code block} declares {@code eventName} as a shared event: not a local event
+     * (perceived by its emitter alone) nor a system event. Any thread.
+     */
+    public boolean declaresSharedEvent(String block, String eventName) {
+        for (EntryDefinition definition : entries.keySet()) {
+            if (definition.name().equals(block) && definition.sharedEvent(eventName).isPresent()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
      * A shared event raised from outside the mission (a FIPA agent, through the JADE bridge): every
      * member of each block declaring a shared event {@code eventName} perceives it now, as if one of
      * them had emitted it with {@code message}; its emitter is no agent ({@link #OUTSIDE}). Any thread.
