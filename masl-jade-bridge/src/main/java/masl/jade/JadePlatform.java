@@ -50,6 +50,8 @@ public final class JadePlatform implements AutoCloseable {
 
     /** How long closing waits for the platform to end and for JADE's threads to finish. */
     public static final Duration SHUTDOWN_TIMEOUT = Duration.ofSeconds(30);
+    /** How long the AMS has to end the platform before its main container is ended here. */
+    private static final Duration AMS_SHUTDOWN_TIMEOUT = Duration.ofSeconds(10);
 
     private static final Object LIFECYCLE = new Object();
     /** Containers started by this class and not closed yet: the last close waits for JADE's threads. */
@@ -259,6 +261,13 @@ public final class JadePlatform implements AutoCloseable {
         } catch (StaleProxyException alreadyEnded) {
             return;
         }
+        if (terminated.await(AMS_SHUTDOWN_TIMEOUT.toMillis(), TimeUnit.MILLISECONDS)) {
+            return;
+        }
+        // JADE 4.3's AMS sometimes fails to end its own container ("Cannot kill container
+        // Main-Container: Unreachable", a row of its agent table gone meanwhile) and never retries:
+        // the container would stay, and no later platform of this JVM would ever terminate.
+        killContainer();
         if (!terminated.await(SHUTDOWN_TIMEOUT.toMillis(), TimeUnit.MILLISECONDS)) {
             throw new JadeException("the JADE platform did not shut down within " + SHUTDOWN_TIMEOUT);
         }
