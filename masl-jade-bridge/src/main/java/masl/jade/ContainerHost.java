@@ -140,6 +140,12 @@ final class ContainerHost extends Agent {
         return ended;
     }
 
+    /** The mission ended for this container: whoever waits for its bodies or its end is let go. */
+    private void endMission() {
+        ended.countDown();
+        settled.countDown();
+    }
+
     CountDownLatch settled() {
         return settled;
     }
@@ -170,8 +176,7 @@ final class ContainerHost extends Agent {
                 lost = placed ? "the mission's coordinator is gone (its JVM died or it left the platform)"
                         : "the platform's main container is gone";
                 deleteBodies();
-                ended.countDown();
-                settled.countDown();
+                endMission();
             }
         } else if (isControl(message)) {
             String refusal = refusal(message);
@@ -203,15 +208,14 @@ final class ContainerHost extends Agent {
                     placed = true;
                     send(place(message));
                     if (unhosted != null) {
-                        ended.countDown();
+                        endMission();
                     }
                 }
             }
             case CoordinatorAgent.END -> {
                 deleteBodies();
                 send(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)));
-                ended.countDown();
-                settled.countDown();
+                endMission();
             }
             default -> events.accept(message);
         }
