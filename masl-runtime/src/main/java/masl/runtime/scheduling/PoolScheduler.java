@@ -24,18 +24,30 @@ import java.util.concurrent.atomic.AtomicInteger;
  * <p><b>Runners.</b> The pool does not get a task per slice: at most one <em>runner</em> per
  * worker drains the run queue, running the agent at its head until the queue is empty. So making
  * an agent runnable costs a queue node, not a pool task and a wake-up of an idle worker, and a
- * barrier trip hands its whole wave over in one pass ({@link #scheduleAll}). A runner whose
- * agent blocks in a primitive ({@link Blocking}) stops counting while it blocks, so another
- * runner takes over the queue on the worker the pool adds meanwhile.
+ * barrier trip hands its whole wave over as one item ({@link #scheduleAll}, a {@link RunBatch}),
+ * which the runners share a chunk of {@value #CHUNK} agents at a time. A runner whose agent blocks
+ * in a primitive ({@link Blocking}) stops counting while it blocks, so another runner takes over
+ * the queue on the worker the pool adds meanwhile.
+ *
+ * <p><b>Runs of slices.</b> Each worker is a {@link SliceRun}: its slices may defer their
+ * arrivals at barriers to it ({@link #currentRun}). A runner flushes it after every
+ * {@value #CHUNK} slices, when it finds the queue empty (then looks again, as the flush may have
+ * tripped a barrier) and before its agent blocks in a primitive.
  */
 public final class PoolScheduler implements Scheduler {
 
     private static final int STEPS_PER_SLICE = 128;
+    /**
+     * Slices a runner runs between two flushes of its run, and the agents it claims of a batch at
+     * once: small enough that two runners share a wave of a few hundred agents evenly.
+     */
+    private static final int CHUNK = 32;
 
     private final ForkJoinPool pool;
     private final int workers;
     private final ScheduledThreadPoolExecutor timer;
-    private final ConcurrentLinkedQueue<AgentTask> runQueue = new ConcurrentLinkedQueue<>();
+    /** {@link AgentTask}s and {@link RunBatch}es, in the order they were made runnable. */
+    private final ConcurrentLinkedQueue<Object> runQueue = new ConcurrentLinkedQueue<>();
     /** Runners submitted and not blocked in a primitive: at most {@link #workers} are started. */
     private final AtomicInteger runners = new AtomicInteger();
     private final Runnable runner = this::drainRunQueue;
@@ -74,18 +86,23 @@ public final class PoolScheduler implements Scheduler {
         startRunnerIfNeeded();
     }
 
-    /** Appends the whole wave to the run queue at once, then starts the runners it needs. */
+    /** Appends the whole wave to the run queue as one item, then starts the runners it needs. */
     @Override
     public void scheduleAll(List<? extends AgentTask> agents) {
         if (agents.isEmpty()) {
             return;
         }
-        runQueue.addAll(agents);
-        int wanted = Math.min(workers, agents.size());
+        runQueue.add(agents.size() == 1 ? agents.get(0) : new RunBatch(agents));
+        int wanted = Math.min(workers, (agents.size() + CHUNK - 1) / CHUNK);
         int started = 0;
         while (started < wanted && startRunnerIfNeeded()) {
             started++;
         }
+    }
+
+    @Override
+    public SliceRun currentRun() {
+        return Thread.currentThread() instanceof Worker worker && worker.scheduler == this ? worker.run : null;
     }
 
     /** Starts a runner unless {@link #workers} are running already; true if it started one. */
@@ -112,18 +129,64 @@ public final class PoolScheduler implements Scheduler {
     }
 
     private void drainRunQueue() {
+        SliceRun run = ((Worker) Thread.currentThread()).run;
         do {
             try {
-                AgentTask agent;
-                while (!shutDown && (agent = runQueue.poll()) != null) {
-                    agent.runSlice();
-                }
+                runUntilEmpty(run);
             } finally {
-                // Also when a slice throws (a runtime bug): the count must not keep a dead runner.
-                runners.decrementAndGet();
+                // Also when a slice throws (a runtime bug): no deferred arrival is left behind, and
+                // the count must not keep a dead runner.
+                try {
+                    run.flush();
+                } finally {
+                    runners.decrementAndGet();
+                }
             }
             // An agent queued after the last poll saw this runner still counted and started none.
         } while (!runQueue.isEmpty() && !shutDown && claimRunner());
+    }
+
+    /** Runs slices until the queue is empty and the run has nothing left to flush. */
+    private void runUntilEmpty(SliceRun run) {
+        int sinceFlush = 0;
+        while (!shutDown) {
+            Object head = runQueue.peek();
+            if (head == null) {
+                if (!run.flush()) {
+                    return;
+                }
+                sinceFlush = 0;
+            } else {
+                sinceFlush += head instanceof RunBatch batch ? runChunk(batch) : runAlone((AgentTask) head);
+                if (sinceFlush >= CHUNK) {
+                    run.flush();
+                    sinceFlush = 0;
+                }
+            }
+        }
+    }
+
+    /** Claims a chunk of the batch at the head of the queue and runs it; returns how many slices it ran. */
+    private int runChunk(RunBatch batch) {
+        int from = batch.claim(CHUNK);
+        int to = Math.min(from + CHUNK, batch.size());
+        if (to == batch.size()) {
+            // The last chunk is claimed: what was queued after the batch may start, on another runner.
+            runQueue.remove(batch);
+        }
+        for (int i = from; i < to; i++) {
+            batch.get(i).runSlice();
+        }
+        return to - from;
+    }
+
+    /** Takes the agent at the head of the queue, unless another runner did, and runs its slice. */
+    private int runAlone(AgentTask agent) {
+        if (!runQueue.remove(agent)) {
+            return 0;
+        }
+        agent.runSlice();
+        return 1;
     }
 
     /** Counts the calling runner again, if fewer than {@link #workers} are counted. */
@@ -156,6 +219,8 @@ public final class PoolScheduler implements Scheduler {
     static void blocking(boolean starts) {
         if (Thread.currentThread() instanceof Worker worker) {
             if (starts) {
+                // Agents whose arrivals the run holds must not wait for however long this blocks.
+                worker.run.flush();
                 worker.scheduler.runnerBlocks();
             } else {
                 worker.scheduler.runnerUnblocked();
@@ -188,9 +253,10 @@ public final class PoolScheduler implements Scheduler {
         };
     }
 
-    /** A worker of one scheduler's pool: lets {@link Blocking} find the runner it runs. */
+    /** A worker of one scheduler's pool: lets {@link Blocking} find the runner it runs, and its run of slices. */
     private static final class Worker extends ForkJoinWorkerThread {
         final PoolScheduler scheduler;
+        final SliceRun run = new SliceRun();
 
         Worker(ForkJoinPool pool, PoolScheduler scheduler) {
             super(pool);
