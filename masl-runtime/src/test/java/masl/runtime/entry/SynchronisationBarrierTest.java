@@ -145,6 +145,44 @@ class SynchronisationBarrierTest {
         assertThrows(IllegalStateException.class, () -> barrier.arrive(agents[1]));
     }
 
+    @Test
+    void arrivalsPublishedTogetherCountAsManyAndKeepTheirArrivalOrder() {
+        participants(4);
+        assertEquals(-1, barrier.arrive(agents[3]));
+        assertEquals(-1, barrier.arriveAll(chain(agents[0], agents[2]), agents[0], 2));
+        assertFalse(barrier.isComplete(), "agent 1 has not arrived");
+        assertEquals(0, barrier.arriveAll(chain(agents[1]), agents[1], 1));
+        assertEquals(4, barrier.trip(null, letGo::add));
+        assertEquals(List.of(agents[3], agents[0], agents[2], agents[1]), letGo);
+    }
+
+    @Test
+    void anAgentThatDiesAfterItsArrivalWasPublishedWithOthersKeepsItCounted() {
+        participants(3);
+        barrier.arriveAll(chain(agents[0], agents[1]), agents[0], 2);
+        barrier.removeParticipant(agents[1]);
+        assertEquals(0, barrier.arrive(agents[2]));
+        assertEquals(2, barrier.trip(agents[2], letGo::add));
+        assertEquals(List.of(agents[0], agents[1]), letGo);
+    }
+
+    @Test
+    void morePublishedArrivalsThanUnarrivedParticipantsIsARuntimeBug() {
+        participants(2);
+        barrier.arrive(agents[0]);
+        assertThrows(IllegalStateException.class, () -> barrier.arriveAll(chain(agents[1], agents[2]), agents[1], 2));
+    }
+
+    /** Links agents given in arrival order as an ArrivalCombiner does; returns the latest. */
+    private static Agent chain(Agent... inArrivalOrder) {
+        Agent latest = null;
+        for (Agent agent : inArrivalOrder) {
+            agent.nextArrival = latest;
+            latest = agent;
+        }
+        return latest;
+    }
+
     private void participants(int count) {
         for (int i = 0; i < count; i++) {
             barrier.addParticipant();

@@ -1,0 +1,86 @@
+package masl.runtime.entry;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import masl.runtime.Agent;
+import masl.runtime.AgentContext;
+import masl.runtime.AgentProgram;
+import masl.runtime.EntryDefinition;
+import masl.runtime.Mission;
+import masl.runtime.Mode;
+import masl.runtime.scheduling.ChangeEpoch;
+import masl.runtime.testing.TestAgent;
+import masl.runtime.trace.TraceEvent;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Arrivals a thread's run of slices holds: they count at the barrier only once flushed, all at
+ * once and in arrival order, and the flush that completes the phase trips it. Played on one thread.
+ */
+class ArrivalCombinerTest {
+
+    private static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
+
+    private final Agent[] agents = new Agent[3];
+    private final List<TraceEvent> trace = new ArrayList<>();
+    private SynchronisationBarrier barrier;
+    private ArrivalCombiner combiner;
+
+    @BeforeEach
+    void missionOfThreeAgents() {
+        Mission.Builder builder = Mission.builder().main(MAIN);
+        TestAgent[] implementations = new TestAgent[agents.length];
+        for (int i = 0; i < agents.length; i++) {
+            implementations[i] = new TestAgent();
+            builder.agent("a" + i, implementations[i], null, self -> new AgentProgram() {
+                @Override
+                protected void resume(AgentContext ctx) {
+                    ctx.finish();
+                }
+            });
+        }
+        Mission mission = builder.build();
+        for (int i = 0; i < agents.length; i++) {
+            agents[i] = mission.agentOf(implementations[i]);
+        }
+        barrier = mission.entry(MAIN).barrier;
+        EntryCoordinator coordinator = new EntryCoordinator(mission, trace::add, System::nanoTime, new ChangeEpoch());
+        combiner = new ArrivalCombiner(coordinator, mission);
+        for (int i = 0; i < agents.length; i++) {
+            barrier.addParticipant();
+        }
+    }
+
+    @Test
+    void heldArrivalsCountOnlyOnceFlushedAndTheFlushThatCompletesThePhaseTripsIt() {
+        combiner.arrive(agents[2], barrier);
+        combiner.arrive(agents[0], barrier);
+        combiner.arrive(agents[1], barrier);
+        assertFalse(barrier.isComplete(), "held, the last arrival has not completed the phase");
+        assertTrue(trace.isEmpty());
+
+        assertTrue(combiner.flush());
+        assertEquals(1, trace.size());
+        TraceEvent.BarrierTripped trip = (TraceEvent.BarrierTripped) trace.get(0);
+        assertEquals(new TraceEvent.BarrierTripped(trip.nanos(), "main", 3), trip);
+        assertFalse(barrier.completes(0), "phase 0 tripped");
+        assertFalse(combiner.flush(), "nothing left to flush");
+    }
+
+    @Test
+    void aFlushPublishesTheArrivalsInTheOrderTheyWereMade() {
+        combiner.arrive(agents[2], barrier);
+        combiner.arrive(agents[0], barrier);
+        assertTrue(combiner.flush());
+        assertTrue(trace.isEmpty(), "agent 1 has not arrived");
+        assertEquals(0, barrier.arrive(agents[1]));
+        List<Agent> letGo = new ArrayList<>();
+        barrier.trip(null, letGo::add);
+        assertEquals(List.of(agents[2], agents[0], agents[1]), letGo);
+    }
+}
