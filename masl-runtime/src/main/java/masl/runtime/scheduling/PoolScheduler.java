@@ -32,7 +32,9 @@ import java.util.concurrent.atomic.AtomicInteger;
  * <p><b>Runs of slices.</b> Each worker is a {@link SliceRun}: its slices may defer their
  * arrivals at barriers to it ({@link #currentRun}). A runner flushes it after every
  * {@value #CHUNK} slices, when it finds the queue empty (then looks again, as the flush may have
- * tripped a barrier) and before its agent blocks in a primitive.
+ * tripped a barrier) and before its agent blocks in a primitive. A runner that finds nothing to do
+ * while another runs waits a moment (up to {@value #SPIN_NANOS} ns) for the wave that one may queue
+ * before it stops, which would leave its worker to be woken again.
  */
 public final class PoolScheduler implements Scheduler {
 
@@ -42,6 +44,8 @@ public final class PoolScheduler implements Scheduler {
      * once: small enough that two runners share a wave of a few hundred agents evenly.
      */
     private static final int CHUNK = 32;
+    /** How long a runner that ran out of work waits for another runner's trip before it stops. */
+    private static final long SPIN_NANOS = 100_000;
 
     private final ForkJoinPool pool;
     private final int workers;
@@ -152,7 +156,7 @@ public final class PoolScheduler implements Scheduler {
         while (!shutDown) {
             Object head = runQueue.peek();
             if (head == null) {
-                if (!run.flush()) {
+                if (!run.flush() && !awaitAnotherRunnersWork()) {
                     return;
                 }
                 sinceFlush = 0;
@@ -164,6 +168,27 @@ public final class PoolScheduler implements Scheduler {
                 }
             }
         }
+    }
+
+    /**
+     * With the queue empty, spins a moment while another runner is still counted: in lock-step it
+     * is about to trip the barrier and queue the next wave, and a worker that went idle would cost
+     * a wake-up of its thread per step. True if work came, false if the runner should stop.
+     */
+    private boolean awaitAnotherRunnersWork() {
+        long deadline = System.nanoTime() + SPIN_NANOS;
+        while (runners.get() > 1 && !shutDown) {
+            for (int i = 0; i < 64; i++) {
+                if (!runQueue.isEmpty()) {
+                    return true;
+                }
+                Thread.onSpinWait();
+            }
+            if (System.nanoTime() - deadline > 0) {
+                return false;
+            }
+        }
+        return !runQueue.isEmpty();
     }
 
     /** Claims a chunk of the batch at the head of the queue and runs it; returns how many slices it ran. */
