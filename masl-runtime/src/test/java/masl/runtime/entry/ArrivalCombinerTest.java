@@ -7,13 +7,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import masl.runtime.Agent;
-import masl.runtime.AgentContext;
-import masl.runtime.AgentProgram;
 import masl.runtime.EntryDefinition;
-import masl.runtime.Mission;
 import masl.runtime.Mode;
 import masl.runtime.scheduling.ChangeEpoch;
-import masl.runtime.testing.TestAgent;
 import masl.runtime.trace.TraceEvent;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -26,31 +22,18 @@ class ArrivalCombinerTest {
 
     private static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
 
-    private final Agent[] agents = new Agent[3];
+    private Agent[] agents;
     private final List<TraceEvent> trace = new ArrayList<>();
     private SynchronisationBarrier barrier;
     private ArrivalCombiner combiner;
 
     @BeforeEach
     void missionOfThreeAgents() {
-        Mission.Builder builder = Mission.builder().main(MAIN);
-        TestAgent[] implementations = new TestAgent[agents.length];
-        for (int i = 0; i < agents.length; i++) {
-            implementations[i] = new TestAgent();
-            builder.agent("a" + i, implementations[i], null, self -> new AgentProgram() {
-                @Override
-                protected void resume(AgentContext ctx) {
-                    ctx.finish();
-                }
-            });
-        }
-        Mission mission = builder.build();
-        for (int i = 0; i < agents.length; i++) {
-            agents[i] = mission.agentOf(implementations[i]);
-        }
-        barrier = mission.entry(MAIN).barrier;
-        EntryCoordinator coordinator = new EntryCoordinator(mission, trace::add, System::nanoTime, new ChangeEpoch());
-        combiner = new ArrivalCombiner(coordinator, mission);
+        FinishingAgents built = new FinishingAgents(MAIN, 3);
+        agents = built.agents;
+        barrier = built.mission.entry(MAIN).barrier;
+        EntryCoordinator coordinator = new EntryCoordinator(built.mission, trace::add, System::nanoTime, new ChangeEpoch());
+        combiner = new ArrivalCombiner(coordinator, built.mission);
         for (int i = 0; i < agents.length; i++) {
             barrier.addParticipant();
         }

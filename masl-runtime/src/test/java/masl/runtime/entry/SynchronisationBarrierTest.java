@@ -8,12 +8,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import masl.runtime.Agent;
-import masl.runtime.AgentContext;
-import masl.runtime.AgentProgram;
 import masl.runtime.EntryDefinition;
-import masl.runtime.Mission;
 import masl.runtime.Mode;
-import masl.runtime.testing.TestAgent;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
@@ -28,27 +24,14 @@ class SynchronisationBarrierTest {
     private static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
 
     private SynchronisationBarrier barrier;
-    private final Agent[] agents = new Agent[4];
+    private Agent[] agents;
     private final List<Agent> letGo = new ArrayList<>();
 
     @BeforeEach
     void missionOfFourAgents() {
-        Mission.Builder builder = Mission.builder().main(MAIN);
-        TestAgent[] implementations = new TestAgent[agents.length];
-        for (int i = 0; i < agents.length; i++) {
-            implementations[i] = new TestAgent();
-            builder.agent("a" + i, implementations[i], null, self -> new AgentProgram() {
-                @Override
-                protected void resume(AgentContext ctx) {
-                    ctx.finish();
-                }
-            });
-        }
-        Mission mission = builder.build();
-        for (int i = 0; i < agents.length; i++) {
-            agents[i] = mission.agentOf(implementations[i]);
-        }
-        barrier = mission.entry(MAIN).barrier;
+        FinishingAgents built = new FinishingAgents(MAIN, 4);
+        agents = built.agents;
+        barrier = built.mission.entry(MAIN).barrier;
     }
 
     @Test
