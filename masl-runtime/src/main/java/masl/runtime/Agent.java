@@ -95,6 +95,11 @@ public final class Agent implements AgentContext, AgentTask {
      * otherwise fetch for nothing (issue 26).
      */
     private volatile boolean invocationsQueued;
+    /**
+     * Set after an occurrence is perceived; cleared by the agent's own boundary before it takes the
+     * occurrences. A boundary that finds it clear reads no event queue, for the same reason.
+     */
+    private volatile boolean eventsPerceived;
 
     // Confined to the thread running the current slice (successive slices are ordered).
     private boolean suspended;
@@ -924,6 +929,7 @@ public final class Agent implements AgentContext, AgentTask {
     /** Perceives an occurrence (§8): from any thread, never blocks; wakes a parked busy-wait (§5). */
     void perceive(EventOccurrence occurrence) {
         events.perceive(occurrence);
+        eventsPerceived = true;
         // A stale ticket (the agent has woken since, or parks elsewhere) is ignored by unpark.
         long ticket = busyWaitTicket;
         if (ticket != 0) {
@@ -937,6 +943,11 @@ public final class Agent implements AgentContext, AgentTask {
      * reaction. Returns whether it did; the boundary call then returns {@code false}.
      */
     private boolean startReactions(boolean barrierDue) {
+        // An occurrence whose flag this does not see yet is perceived after this boundary.
+        if (!eventsPerceived) {
+            return false;
+        }
+        eventsPerceived = false;
         if (events.nothingPerceived()) {
             return false;
         }
