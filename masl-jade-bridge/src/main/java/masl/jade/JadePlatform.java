@@ -50,8 +50,8 @@ public final class JadePlatform implements AutoCloseable {
 
     /** How long closing waits for the platform to end and for JADE's threads to finish. */
     public static final Duration SHUTDOWN_TIMEOUT = Duration.ofSeconds(30);
-    /** How long the AMS has to end the platform before its main container is ended here. */
-    private static final Duration AMS_SHUTDOWN_TIMEOUT = Duration.ofSeconds(10);
+    /** How long the AMS has to end the platform before it is asked again. */
+    private static final Duration AMS_RETRY_AFTER = Duration.ofSeconds(10);
 
     private static final Object LIFECYCLE = new Object();
     /** Containers started by this class and not closed yet: the last close waits for JADE's threads. */
@@ -253,23 +253,40 @@ public final class JadePlatform implements AutoCloseable {
         }
     }
 
-    /** Asks the AMS to shut the platform down, and waits until the JVM's containers have ended. */
+    /**
+     * Asks the AMS to shut the platform down, and waits until the JVM's containers have ended; asks
+     * again every {@link #AMS_RETRY_AFTER} until {@link #SHUTDOWN_TIMEOUT}.
+     *
+     * <p>Asking again, never ending the main container here: JADE 4.3's AMS sometimes fails to end
+     * its own container (it logs "Cannot kill container Main-Container: Unreachable", a row of its
+     * agent table read while an agent was being removed) and never retries by itself, while a main
+     * container killed from outside leaves the AMS's and DF's threads alive and JADE's count of the
+     * JVM's containers wrong, so that every later platform of the JVM seems ended before it is.
+     */
     private void shutDownPlatform() throws InterruptedException {
+        long deadline = System.nanoTime() + SHUTDOWN_TIMEOUT.toNanos();
+        while (true) {
+            if (!requestShutdown()) {
+                return;
+            }
+            long left = deadline - System.nanoTime();
+            if (terminated.await(Math.min(left, AMS_RETRY_AFTER.toNanos()), TimeUnit.NANOSECONDS)) {
+                return;
+            }
+            if (System.nanoTime() - deadline >= 0) {
+                throw new JadeException("the JADE platform did not shut down within " + SHUTDOWN_TIMEOUT);
+            }
+        }
+    }
+
+    /** Starts an agent that asks the AMS to shut the platform down; false if the container has ended. */
+    private boolean requestShutdown() {
         try {
             container.acceptNewAgent("masl-shutdown-" + SHUTDOWN_AGENTS.incrementAndGet(), new ShutdownRequester())
                     .start();
+            return true;
         } catch (StaleProxyException alreadyEnded) {
-            return;
-        }
-        if (terminated.await(AMS_SHUTDOWN_TIMEOUT.toMillis(), TimeUnit.MILLISECONDS)) {
-            return;
-        }
-        // JADE 4.3's AMS sometimes fails to end its own container ("Cannot kill container
-        // Main-Container: Unreachable", a row of its agent table gone meanwhile) and never retries:
-        // the container would stay, and no later platform of this JVM would ever terminate.
-        killContainer();
-        if (!terminated.await(SHUTDOWN_TIMEOUT.toMillis(), TimeUnit.MILLISECONDS)) {
-            throw new JadeException("the JADE platform did not shut down within " + SHUTDOWN_TIMEOUT);
+            return false;
         }
     }
 

@@ -6,6 +6,7 @@ import java.util.Map;
 import masl.grammar.MASLParser;
 import masl.runtime.descriptor.DescriptorLoader;
 import masl.translator.diagnostics.Diagnostics;
+import masl.translator.parse.ConstantLimits;
 import masl.translator.parse.ProgramParser;
 import org.antlr.v4.runtime.Token;
 
@@ -29,7 +30,13 @@ public final class Analyzer {
             return new AnalyzedProgram(parsed, Map.of(), List.of(), new LinkedHashSet<>(), null, new Bindings(0));
         }
         Errors errors = new Errors(parsed.source().name(), diagnostics);
-        ConstantLimits.check(tree, errors);
+        for (ConstantLimits.Problem problem : parsed.constantProblems()) {
+            if (problem.node() != null) {
+                errors.at(problem.node(), problem.message());
+            } else {
+                errors.at(problem.token(), problem.message());
+            }
+        }
         HeaderChecker headers = new HeaderChecker(descriptors, parsed.source().folder(), parsed.tokens(), errors);
         headers.check(tree.header());
 

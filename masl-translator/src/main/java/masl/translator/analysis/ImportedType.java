@@ -37,4 +37,16 @@ public record ImportedType(String name, String file, AgentType descriptor, boole
         }
         return descriptor.isSubtypeOf(other.descriptor);
     }
+
+    // Written out, as Variable's: a record's own equals and hashCode are slow in a fresh JVM's interpreter.
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof ImportedType t && name.equals(t.name) && file.equals(t.file) && descriptor == t.descriptor
+                && definedByType == t.definedByType;
+    }
+
+    @Override
+    public int hashCode() {
+        return name.hashCode() * 31 + file.hashCode();
+    }
 }

@@ -1,6 +1,7 @@
 package masl.translator.analysis;
 
 import java.util.Map;
+import java.util.Objects;
 import masl.runtime.AgentImplementation;
 
 /**
@@ -8,6 +9,8 @@ import masl.runtime.AgentImplementation;
  * is the type of an expression already reported as wrong; every rule accepts it, so one mistake
  * yields one error. {@link #NULL} is the type of the literal {@code null}.
  */
+// The records below write out equals and hashCode, as Variable does: the translator compares types at
+// every expression, and a record's own go through method handles, slow in a fresh JVM's interpreter.
 public sealed interface MaslType {
 
     MaslType BOOLEAN = new JavaPrimitive(boolean.class);
@@ -46,6 +49,16 @@ public sealed interface MaslType {
 
     /** A primitive Java type ({@code int}, {@code boolean}, …) or {@code void}. */
     record JavaPrimitive(Class<?> type) implements MaslType {
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof JavaPrimitive p && type == p.type;
+        }
+
+        @Override
+        public int hashCode() {
+            return type.hashCode();
+        }
+
         private static final Map<Class<?>, Class<?>> BOXES = Map.of(boolean.class, Boolean.class,
                 byte.class, Byte.class, char.class, Character.class, short.class, Short.class,
                 int.class, Integer.class, long.class, Long.class, float.class, Float.class,
@@ -69,6 +82,16 @@ public sealed interface MaslType {
     /** A Java class or interface, found by reflection ({@code String}, {@code java.util.Vector}, …). */
     record JavaClass(Class<?> type) implements MaslType {
         @Override
+        public boolean equals(Object o) {
+            return o instanceof JavaClass c && type == c.type;
+        }
+
+        @Override
+        public int hashCode() {
+            return type.hashCode();
+        }
+
+        @Override
         public String describe() {
             String name = type.getName();
             return name.startsWith("java.lang.") && name.indexOf('.', 10) < 0 ? type.getSimpleName() : name;
@@ -82,6 +105,16 @@ public sealed interface MaslType {
 
     /** An agent of an imported type (or of its subtypes); {@code type} is null for any agent. */
     record AgentRef(ImportedType type) implements MaslType {
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof AgentRef a && Objects.equals(type, a.type);
+        }
+
+        @Override
+        public int hashCode() {
+            return Objects.hashCode(type);
+        }
+
         @Override
         public String describe() {
             return type == null ? "agent" : type.name();
@@ -98,6 +131,16 @@ public sealed interface MaslType {
     }
 
     record ArrayOf(MaslType element) implements MaslType {
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof ArrayOf a && element.equals(a.element);
+        }
+
+        @Override
+        public int hashCode() {
+            return element.hashCode() * 31 + 1;
+        }
+
         @Override
         public String describe() {
             return element.describe() + "[]";

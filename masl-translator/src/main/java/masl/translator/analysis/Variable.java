@@ -1,5 +1,6 @@
 package masl.translator.analysis;
 
+import java.util.Objects;
 import masl.grammar.MASLParser;
 
 /**
@@ -20,5 +21,19 @@ public record Variable(String name, MaslType type, Sharing sharing, boolean isFi
     @Override
     public String toString() {
         return "variable " + name;
+    }
+
+    // equals and hashCode written out, here and in the types (ImportedType, MaslType): a record's own go
+    // through invokedynamic and method handles, slow in the interpreter of the fresh JVM `masl run` translates in.
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Variable v && name.equals(v.name) && type.equals(v.type) && sharing == v.sharing
+                && isFinal == v.isFinal && Objects.equals(limitedTo, v.limitedTo) && initializer == v.initializer
+                && block == v.block;
+    }
+
+    @Override
+    public int hashCode() {
+        return name.hashCode() * 31 + System.identityHashCode(block);
     }
 }

@@ -71,14 +71,22 @@ final class MissionClassWriter {
         }
         List<AgentDecl> agents = program.agents();
         List<List<AgentDecl>> runs = runsOfOneType(agents);
-        List<List<AgentDecl>> nameGroups = new ArrayList<>();
-        runs.forEach(run -> nameGroups.addAll(withinOneConstant(run)));
-        out.add("    /** The agents in declaration order (proxy ids 0, 1, 2, ...): implementation class, then names. */");
+        List<List<String>> nameGroups = new ArrayList<>();
+        List<String> groupClasses = new ArrayList<>();
+        for (List<AgentDecl> run : runs) {
+            for (List<String> group : withinOneConstant(NameRanges.of(run))) {
+                nameGroups.add(group);
+                groupClasses.add(run.get(0).instantiatedType().descriptor().fullClassName());
+            }
+        }
+        out.add("    /**");
+        out.add("     * The agents in declaration order (proxy ids 0, 1, 2, ...): implementation class, then names;");
+        out.add("     * {@code a3..a7} stands for a3, a4, a5, a6, a7.");
+        out.add("     */");
         out.add("    private static final List<AgentSpec> AGENTS = specs(" + (nameGroups.isEmpty() ? ");" : ""));
         for (int g = 0; g < nameGroups.size(); g++) {
-            List<AgentDecl> group = nameGroups.get(g);
-            List<String> literals = nameLiterals(group);
-            out.add("            " + JavaText.quote(group.get(0).instantiatedType().descriptor().fullClassName()) + ",");
+            List<String> literals = nameLiterals(nameGroups.get(g));
+            out.add("            " + JavaText.quote(groupClasses.get(g)) + ",");
             for (int l = 0; l < literals.size(); l++) {
                 out.add("            " + (l == 0 ? "" : "+ ") + literals.get(l)
                         + (l + 1 < literals.size() ? "" : g + 1 < nameGroups.size() ? "," : ");"));
@@ -131,8 +139,21 @@ final class MissionClassWriter {
         out.add("    private static List<AgentSpec> specs(String... classThenNames) {");
         out.add("        List<AgentSpec> specs = new ArrayList<>();");
         out.add("        for (int i = 0; i < classThenNames.length; i += 2) {");
-        out.add("            for (String name : classThenNames[i + 1].split(\",\")) {");
-        out.add("                specs.add(new AgentSpec(name, classThenNames[i]));");
+        out.add("            for (String names : classThenNames[i + 1].split(\",\")) {");
+        out.add("                int range = names.indexOf(\"..\");");
+        out.add("                if (range < 0) {");
+        out.add("                    specs.add(new AgentSpec(names, classThenNames[i]));");
+        out.add("                    continue;");
+        out.add("                }");
+        out.add("                String first = names.substring(0, range);");
+        out.add("                int prefix = first.length();");
+        out.add("                while (first.charAt(prefix - 1) >= '0' && first.charAt(prefix - 1) <= '9') {");
+        out.add("                    prefix--;");
+        out.add("                }");
+        out.add("                long last = Long.parseLong(names.substring(range + 2 + prefix));");
+        out.add("                for (long n = Long.parseLong(first.substring(prefix)); n <= last; n++) {");
+        out.add("                    specs.add(new AgentSpec(first.substring(0, prefix) + n, classThenNames[i]));");
+        out.add("                }");
         out.add("            }");
         out.add("        }");
         out.add("        return List.copyOf(specs);");
@@ -239,21 +260,21 @@ final class MissionClassWriter {
     }
 
     /**
-     * A run cut where its names would exceed {@value #NAMES_PER_CONSTANT} characters: a Java string
+     * Names (or ranges) cut where they would exceed {@value #NAMES_PER_CONSTANT} characters: a Java string
      * constant holds at most 65,535 bytes.
      */
-    private static List<List<AgentDecl>> withinOneConstant(List<AgentDecl> run) {
-        List<List<AgentDecl>> groups = new ArrayList<>();
-        List<AgentDecl> group = new ArrayList<>();
+    private static List<List<String>> withinOneConstant(List<String> names) {
+        List<List<String>> groups = new ArrayList<>();
+        List<String> group = new ArrayList<>();
         int length = 0;
-        for (AgentDecl agent : run) {
-            if (length + agent.name().length() + 1 > NAMES_PER_CONSTANT && !group.isEmpty()) {
+        for (String name : names) {
+            if (length + name.length() + 1 > NAMES_PER_CONSTANT && !group.isEmpty()) {
                 groups.add(group);
                 group = new ArrayList<>();
                 length = 0;
             }
-            group.add(agent);
-            length += agent.name().length() + 1;
+            group.add(name);
+            length += name.length() + 1;
         }
         groups.add(group);
         return groups;
@@ -264,11 +285,11 @@ final class MissionClassWriter {
      * characters, one per line, concatenated by javac into one constant: a team of ten thousand
      * agents written one call per agent would exceed the 64 KB limit of a Java method.
      */
-    private static List<String> nameLiterals(List<AgentDecl> group) {
+    private static List<String> nameLiterals(List<String> group) {
         List<String> literals = new ArrayList<>();
         StringBuilder line = new StringBuilder();
         for (int i = 0; i < group.size(); i++) {
-            line.append(group.get(i).name()).append(i + 1 < group.size() ? "," : "");
+            line.append(group.get(i)).append(i + 1 < group.size() ? "," : "");
             if (line.length() >= NAMES_PER_LINE || i + 1 == group.size()) {
                 literals.add(JavaText.quote(line.toString()));
                 line.setLength(0);

@@ -41,9 +41,11 @@ public final class ProgramParser {
      * @param nodes how many rule nodes the tree has, numbered 0 to {@code nodes - 1} ({@link MaslRuleContext})
      * @param repaired whether ANTLR had to repair the tree after syntax errors; then {@code tree} is
      *     null if the program was not parsed at all (nested too deeply, {@link Nesting})
+     * @param constantProblems the constants javac would refuse ({@link ConstantLimits}), for the analysis
+     *     to report
      */
     public record Parsed(SourceFile source, MASLParser.ProgramContext tree, CommonTokenStream tokens, int nodes,
-            boolean repaired) { }
+            boolean repaired, List<ConstantLimits.Problem> constantProblems) { }
 
     private static final Map<String, Integer> MODES = Map.of("scalar", MASLLexer.SCALAR,
             "synchronous", MASLLexer.SYNCHRONOUS, "asynchronous", MASLLexer.ASYNCHRONOUS);
@@ -62,7 +64,7 @@ public final class ProgramParser {
         CommonTokenStream tokens = new CommonTokenStream(lexer);
         tokens.fill();
         if (Nesting.reportTooDeep(source.name(), tokens.getTokens(), diagnostics)) {
-            return new Parsed(source, null, tokens, 0, true);
+            return new Parsed(source, null, tokens, 0, true, List.of());
         }
         MASLParser parser = new MASLParser(tokens);
         parser.removeErrorListeners();
@@ -138,10 +140,12 @@ public final class ProgramParser {
      */
     private static Parsed numbered(SourceFile source, MASLParser parser, CommonTokenStream tokens, boolean mayRepair) {
         MaslRuleContext.Numbering numbering = new MaslRuleContext.Numbering();
+        ConstantLimits constants = new ConstantLimits();
         parser.removeParseListeners();
         parser.addParseListener(numbering);
+        parser.addParseListener(constants);
         MASLParser.ProgramContext tree = parser.program();
-        return new Parsed(source, tree, tokens, numbering.count(), mayRepair && hasSyntaxErrors(tree));
+        return new Parsed(source, tree, tokens, numbering.count(), mayRepair && hasSyntaxErrors(tree), constants.problems());
     }
 
     private static boolean hasSyntaxErrors(ParseTree tree) {

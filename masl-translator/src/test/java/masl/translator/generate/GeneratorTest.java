@@ -110,8 +110,22 @@ class GeneratorTest {
     }
 
     @Test
+    void namesThatCountUpAreListedAsRangesEachAnAgentOfItsOwn() {
+        Translation translation = Programs.translate("count.masl", "import Default.xml as Default;\n"
+                + "Default a8, a9, a10, a11, b1, b2, x01, x02, x03, c, d5, d6, d7, d9 = newAgent(Default);\n"
+                + "scalar entry main (true) { .logln(\"hi\"); }\n");
+        String mission = translation.javaSources().get(translation.missionClassName());
+        MissionProgram program = MissionLoader.load(translation, AgentPath.parse("")).program();
+
+        assertTrue(mission.contains("\"a8..a11,b1,b2,x01,x02,x03,c,d5..d7,d9\""), mission);
+        assertEquals(List.of("a8", "a9", "a10", "a11", "b1", "b2", "x01", "x02", "x03", "c", "d5", "d6", "d7", "d9"),
+                program.agents().stream().map(MissionProgram.AgentSpec::name).toList());
+    }
+
+    @Test
     void tenThousandAgentsFitTheLimitsOfJavaMethodsAndConstants() {
-        String names = IntStream.range(0, 10_000).mapToObj(i -> "agent" + i)
+        // Names that do not count up by one: the mission class lists each of them.
+        String names = IntStream.range(0, 10_000).mapToObj(i -> "agent" + 2 * i)
                 .collect(Collectors.joining(", "));
         Translation translation = Programs.translate("team.masl", "import Default.xml as Default;\n"
                 + "Default lead = newAgent(Default);\n"
@@ -121,7 +135,7 @@ class GeneratorTest {
 
         assertEquals(10_001, mission.agents().size());
         assertEquals(new MissionProgram.AgentSpec("lead", "masl.agents.Default"), mission.agents().get(0));
-        assertEquals(new MissionProgram.AgentSpec("agent9999", "masl.agents.Default"), mission.agents().get(10_000));
+        assertEquals(new MissionProgram.AgentSpec("agent19998", "masl.agents.Default"), mission.agents().get(10_000));
     }
 
     @Test

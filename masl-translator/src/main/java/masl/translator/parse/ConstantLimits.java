@@ -1,24 +1,31 @@
-package masl.translator.analysis;
+package masl.translator.parse;
 
-import java.util.ArrayDeque;
-import java.util.Deque;
+import java.util.ArrayList;
 import java.util.IdentityHashMap;
+import java.util.List;
 import java.util.Map;
 import masl.grammar.MASLLexer;
 import masl.grammar.MASLParser;
-import masl.translator.parse.Literals;
-import masl.translator.parse.NumberLiterals;
 import org.antlr.v4.runtime.ParserRuleContext;
+import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.tree.ErrorNode;
 import org.antlr.v4.runtime.tree.ParseTree;
+import org.antlr.v4.runtime.tree.ParseTreeListener;
 import org.antlr.v4.runtime.tree.TerminalNode;
 
 /**
  * Java's limits on constants, which javac would otherwise meet in the generated code: number literals
  * in range ({@code 2147483648} only after a unary minus), and no string constant over 65,535 bytes
  * (JVMS 4.4.7), a literal or a concatenation javac folds into one constant ({@code "..." + "..."}).
- * The walk is iterative: an expression may be nested thousands of levels deep.
+ * A parse listener: the parser completes every node after its children, so the check needs no walk of
+ * its own over the tree. It keeps its problems for the analysis, which reports them only for a tree
+ * without syntax errors, where javac would meet the constants.
  */
-final class ConstantLimits {
+public final class ConstantLimits implements ParseTreeListener {
+
+    /** A constant javac would refuse, at {@code node}, or at {@code token} for a number literal. */
+    public record Problem(ParserRuleContext node, Token token, String message) {
+    }
 
     /** The most bytes, in modified UTF-8, that a class file's constant holds. */
     static final int LONGEST_CONSTANT = 65_535;
@@ -30,51 +37,39 @@ final class ConstantLimits {
     /** Bytes enough for the string form of any number, character or boolean. */
     private static final Constant OTHER = new Constant(false, 25);
 
-    private final Errors errors;
     private final Map<ParseTree, Constant> constants = new IdentityHashMap<>();
+    private final List<Problem> problems = new ArrayList<>();
+    /** Whether some constant string is too long: only then must a node look for one among its children. */
+    private boolean tooLongSeen;
 
-    private ConstantLimits(Errors errors) {
-        this.errors = errors;
+    List<Problem> problems() {
+        return problems;
     }
 
-    static void check(ParseTree tree, Errors errors) {
-        new ConstantLimits(errors).walk(tree);
-    }
-
-    /** Visits every node after its children, without recursion. */
-    private void walk(ParseTree root) {
-        Deque<ParseTree> pending = new ArrayDeque<>();
-        Deque<ParseTree> visited = new ArrayDeque<>();
-        pending.push(root);
-        while (!pending.isEmpty()) {
-            ParseTree node = pending.pop();
-            visited.push(node);
-            for (int i = 0; i < node.getChildCount(); i++) {
-                pending.push(node.getChild(i));
-            }
-        }
-        while (!visited.isEmpty()) {
-            visit(visited.pop());
-        }
-    }
-
-    private void visit(ParseTree node) {
-        if (node instanceof TerminalNode terminal) {
+    @Override
+    public void visitTerminal(TerminalNode terminal) {
+        int type = terminal.getSymbol().getType();
+        if (type == MASLLexer.IntegerLiteral || type == MASLLexer.FloatingPointLiteral) {
             checkNumber(terminal);
-            return;
         }
-        Constant constant = constant(node);
+    }
+
+    @Override
+    public void exitEveryRule(ParserRuleContext node) {
+        Constant constant = node instanceof MASLParser.ExpressionContext || node instanceof MASLParser.PrimaryContext
+                || node instanceof MASLParser.LiteralContext ? constant(node) : null;
         if (constant != null) {
             constants.put(node, constant);
+            tooLongSeen |= constant.string() && constant.bytes() > LONGEST_CONSTANT;
         }
-        if (constant == null || !constant.string()) {
+        if (tooLongSeen && (constant == null || !constant.string())) {
             // The largest constant strings end here: report each child that is one too long.
             for (int i = 0; i < node.getChildCount(); i++) {
                 Constant child = constants.get(node.getChild(i));
                 if (child != null && child.string() && child.bytes() > LONGEST_CONSTANT) {
-                    errors.at((ParserRuleContext) node.getChild(i), String.format("a string constant of %,d bytes"
+                    problems.add(new Problem((ParserRuleContext) node.getChild(i), null, String.format("a string constant of %,d bytes"
                             + " (in UTF-8): Java holds at most %,d in one; build a longer text at run time",
-                            child.bytes(), LONGEST_CONSTANT));
+                            child.bytes(), LONGEST_CONSTANT)));
                 }
             }
         }
@@ -88,8 +83,16 @@ final class ConstantLimits {
             default -> null;
         };
         if (problem != null) {
-            errors.at(terminal.getSymbol(), problem);
+            problems.add(new Problem(null, terminal.getSymbol(), problem));
         }
+    }
+
+    @Override
+    public void enterEveryRule(ParserRuleContext node) {
+    }
+
+    @Override
+    public void visitErrorNode(ErrorNode node) {
     }
 
     /** Whether the literal is the operand of a unary minus: {@code -2147483648}. */
