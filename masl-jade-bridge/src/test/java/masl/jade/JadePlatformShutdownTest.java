@@ -1,6 +1,7 @@
 package masl.jade;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jade.core.AID;
@@ -55,10 +56,23 @@ class JadePlatformShutdownTest {
             AgentTable table = AgentTable.of(platform);
             AID ghost = new AID("being-removed", AID.ISLOCALNAME);
             table.putEmptyRow(ghost);
-            CompletableFuture<Void> closing = CompletableFuture.runAsync(platform::close);
+            // A thread of the test's own, joined before the threads are counted (on two cores
+            // CompletableFuture.runAsync starts a thread per task, which may outlive its task's end).
+            CompletableFuture<Void> closed = new CompletableFuture<>();
+            Thread closing = new Thread(() -> {
+                try {
+                    platform.close();
+                    closed.complete(null);
+                } catch (Throwable failure) {
+                    closed.completeExceptionally(failure);
+                }
+            }, "closing");
+            closing.start();
             assertTrue(amsFailed.await(60, TimeUnit.SECONDS), "the AMS met the empty row");
             table.remove(ghost);
-            closing.get(60, TimeUnit.SECONDS);
+            closing.join(TimeUnit.SECONDS.toMillis(60));
+            assertFalse(closing.isAlive(), "the platform closed within 60 s");
+            closed.join(); // throws what close threw
         } finally {
             jade.removeHandler(watcher);
         }
