@@ -1,5 +1,6 @@
 package masl.bench;
 
+import com.sun.management.OperatingSystemMXBean;
 import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryMXBean;
 import java.time.Duration;
@@ -19,8 +20,11 @@ import masl.translator.MissionLoader;
  */
 final class AgentScale {
 
-    /** Start, steps per second and bytes per agent of one fresh JVM. */
-    record Figures(double startSeconds, double stepsPerSecond, double bytesPerAgent) { }
+    /**
+     * Start, steps per second and bytes per agent of one fresh JVM; and the processor time the start
+     * took (all of the JVM's threads), which other jobs on the machine lengthen much less than the start.
+     */
+    record Figures(double startSeconds, double stepsPerSecond, double bytesPerAgent, double startCpuSeconds) { }
 
     private AgentScale() {
     }
@@ -32,8 +36,11 @@ final class AgentScale {
         String source = MaslLockStep.source(agents, steps);
         System.gc();
         long heapBefore = memory.getHeapMemoryUsage().getUsed();
+        OperatingSystemMXBean processor = (OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
         long start = System.nanoTime();
+        long cpuStart = processor.getProcessCpuTime();
         long[] firstStep = new long[1];
+        long[] cpuFirstStep = new long[1];
         long[] heapStarted = new long[1];
         StepClock clock = new StepClock();
         MissionLoader program = MaslLockStep.compile(source);
@@ -43,6 +50,7 @@ final class AgentScale {
                         clock.stepEnded();
                         if (firstStep[0] == 0) {
                             firstStep[0] = System.nanoTime();
+                            cpuFirstStep[0] = processor.getProcessCpuTime();
                             // Started: every agent exists and has run its first step. Delays the second step
                             // by a collection, a small part of the steps the rate is taken over.
                             System.gc();
@@ -51,13 +59,14 @@ final class AgentScale {
                     }
                 }).build();
         mission.run(Duration.ofMinutes(30)).requireCompleted();
-        System.out.printf(Locale.ROOT, "%f %f %f%n", (firstStep[0] - start) / 1e9, clock.stepsPerSecond(),
-                (double) (heapStarted[0] - heapBefore) / agents);
+        System.out.printf(Locale.ROOT, "%f %f %f %f%n", (firstStep[0] - start) / 1e9, clock.stepsPerSecond(),
+                (double) (heapStarted[0] - heapBefore) / agents, (cpuFirstStep[0] - cpuStart) / 1e9);
     }
 
     static Figures measure(int agents, int steps) throws Exception {
         String output = ColdTranslation.runFresh(AgentScale.class, String.valueOf(agents), String.valueOf(steps));
         String[] figures = output.substring(output.lastIndexOf('\n') + 1).split(" ");
-        return new Figures(Double.parseDouble(figures[0]), Double.parseDouble(figures[1]), Double.parseDouble(figures[2]));
+        return new Figures(Double.parseDouble(figures[0]), Double.parseDouble(figures[1]), Double.parseDouble(figures[2]),
+                Double.parseDouble(figures[3]));
     }
 }

@@ -205,9 +205,11 @@ public final class Bench {
         for (int run = 0; run < 3; run++) {
             runs.add(AgentScale.measure(agents, steps));
         }
-        System.out.printf(Locale.ROOT, "%10s | %14s | %14s | %16s%n", "N", "start", "steps / s", "bytes per agent");
-        System.out.printf(Locale.ROOT, "%10s | %12.2f s | %14s | %16s%n", String.format(Locale.ROOT, "%,d", agents),
+        System.out.printf(Locale.ROOT, "%10s | %14s | %14s | %14s | %16s%n", "N", "start", "start (CPU)", "steps / s",
+                "bytes per agent");
+        System.out.printf(Locale.ROOT, "%10s | %12.2f s | %12.2f s | %14s | %16s%n", String.format(Locale.ROOT, "%,d", agents),
                 median(runs.stream().mapToDouble(AgentScale.Figures::startSeconds).toArray()),
+                median(runs.stream().mapToDouble(AgentScale.Figures::startCpuSeconds).toArray()),
                 rate(median(runs.stream().mapToDouble(AgentScale.Figures::stepsPerSecond).toArray())),
                 rate(median(runs.stream().mapToDouble(AgentScale.Figures::bytesPerAgent).toArray())));
         System.out.println("   (start: the program's text to the end of its first step, translating and javac included;"

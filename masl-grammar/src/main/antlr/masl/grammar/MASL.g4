@@ -385,8 +385,21 @@ LSHIFT_ASSIGN   : '<<=';
 RSHIFT_ASSIGN   : '>>=';
 URSHIFT_ASSIGN  : '>>>=';
 
+// Letters (\p{L}) and decimal digits (\p{Nd}) of any script. Beyond ASCII they are told by Java's own
+// tables in a predicate: a set of every Unicode letter costs a fresh JVM a tenth of its first
+// translation to read into the lexer's ATN.
 Identifier
-    : [\p{L}$_] [\p{L}\p{Nd}$_]*
+    : IdentifierStart IdentifierPart*
+    ;
+
+fragment IdentifierStart
+    : [a-zA-Z$_]
+    | ~[\u0000-\u007F] {Character.isLetter(_input.LA(-1))}?
+    ;
+
+fragment IdentifierPart
+    : [a-zA-Z0-9$_]
+    | ~[\u0000-\u007F] {Character.isLetter(_input.LA(-1)) || Character.getType(_input.LA(-1)) == Character.DECIMAL_DIGIT_NUMBER}?
     ;
 
 WS              : [ \t\r\n\f]+ -> channel(HIDDEN);

@@ -117,7 +117,7 @@ public final class DescriptorLoader {
             return cached;
         }
         Problems problems = new Problems(source.displayName());
-        DescriptorReader.Result read = DescriptorReader.read(source, !VALIDATED_BEFORE.get());
+        DescriptorReader.Result read = DescriptorReader.read(source, !VALIDATED_BEFORE.get() && !ShippedDescriptors.contains(source));
         problems.addAll(read.problems());
         Declaration declaration = read.root() == null ? null : DeclarationReader.read(read.root(), problems);
         if (declaration == null) {

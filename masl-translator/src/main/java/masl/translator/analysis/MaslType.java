@@ -9,8 +9,9 @@ import masl.runtime.AgentImplementation;
  * is the type of an expression already reported as wrong; every rule accepts it, so one mistake
  * yields one error. {@link #NULL} is the type of the literal {@code null}.
  */
-// The records below write out equals and hashCode, as Variable does: the translator compares types at
-// every expression, and a record's own go through method handles, slow in a fresh JVM's interpreter.
+// The records below but JavaPrimitive write out equals and hashCode, as Variable does: the translator
+// compares types at every expression, and a record's own go through method handles, slow in a fresh
+// JVM's interpreter.
 public sealed interface MaslType {
 
     MaslType BOOLEAN = new JavaPrimitive(boolean.class);
@@ -49,16 +50,6 @@ public sealed interface MaslType {
 
     /** A primitive Java type ({@code int}, {@code boolean}, …) or {@code void}. */
     record JavaPrimitive(Class<?> type) implements MaslType {
-        @Override
-        public boolean equals(Object o) {
-            return o instanceof JavaPrimitive p && type == p.type;
-        }
-
-        @Override
-        public int hashCode() {
-            return type.hashCode();
-        }
-
         private static final Map<Class<?>, Class<?>> BOXES = Map.of(boolean.class, Boolean.class,
                 byte.class, Byte.class, char.class, Character.class, short.class, Short.class,
                 int.class, Integer.class, long.class, Long.class, float.class, Float.class,

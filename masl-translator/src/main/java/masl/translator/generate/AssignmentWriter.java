@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.regex.Pattern;
 import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.ExpressionContext;
 import masl.translator.analysis.AnalyzedProgram;
@@ -20,6 +21,9 @@ import org.antlr.v4.runtime.ParserRuleContext;
  * one atomic update.
  */
 final class AssignmentWriter {
+
+    /** A Java operand that needs no parentheses after an operator: a name, a number, a plain string. */
+    private static final Pattern SIMPLE_OPERAND = Pattern.compile("[\\w$.]+|\"[^\"\\\\]*\"");
 
     private final AnalyzedProgram program;
     private final StaticStructure structure;
@@ -194,7 +198,7 @@ final class AssignmentWriter {
     }
 
     private String compound(MaslType type, String parameter, String operator, String value, MaslType valueType) {
-        boolean simple = value.matches("[\\w$.]+|\"[^\"\\\\]*\"");
+        boolean simple = SIMPLE_OPERAND.matcher(value).matches();
         String java = parameter + " " + operator + " " + (simple ? value : "(" + value + ")");
         Class<?> target = JavaTypes.unboxed(type);
         Class<?> source = JavaTypes.unboxed(valueType);

@@ -15,6 +15,7 @@ import masl.translator.diagnostics.Diagnostics;
 import masl.translator.parse.NumberLiterals;
 import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.tree.ParseTree;
+import org.antlr.v4.runtime.tree.TerminalNode;
 
 /**
  * Generates the Java sources of an analysed MASL program (masl-runtime/docs/generated-code-contract.md):
@@ -90,6 +91,9 @@ public final class Generator {
 
     private static void collectReelects(ParseTree tree, AnalyzedProgram program, Map<ParserRuleContext, Block> blocks,
             Set<Block> kept) {
+        if (tree instanceof TerminalNode || tree instanceof MASLParser.ExpressionContext) {
+            return; // no statement is inside an expression: most of the tree is not looked at
+        }
         if (tree instanceof MASLParser.ReelectStmtContext reelect) {
             Block target = null;
             MASLParser.JumpTargetContext jump = reelect.jumpTarget();

@@ -21,6 +21,9 @@ public final class NumberLiterals {
      *     literal be one more than the largest value ({@code -2147483648})
      */
     public static String integerProblem(String text, boolean negated) {
+        if (isShortDecimal(text)) {
+            return null;
+        }
         boolean isLong = isLong(text);
         String digits = digits(text);
         int radix = radix(digits);
@@ -77,6 +80,19 @@ public final class NumberLiterals {
         }
         BigInteger value = integer(text);
         return value.bitLength() < 32 ? value.intValue() : Integer.MAX_VALUE;
+    }
+
+    /** Up to nine decimal digits, not octal: most literals, and always an int; no need to compute their value. */
+    private static boolean isShortDecimal(String text) {
+        if (text.length() > 9 || text.length() > 1 && text.charAt(0) == '0') {
+            return false;
+        }
+        for (int i = 0; i < text.length(); i++) {
+            if (text.charAt(i) < '0' || text.charAt(i) > '9') {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static boolean isLong(String text) {
