@@ -469,13 +469,11 @@ public final class Mission {
         wakeUps.counted();
     }
 
-    /** <b>Internal:</b> not part of the API. A wake-up may come from outside the agents' slices until {@link #outsideWakeUpEnded}. */
-    public void outsideWakeUpStarted() {
+    void outsideWakeUpStarted() {
         wakeUps.pendingStarted();
     }
 
-    /** <b>Internal:</b> not part of the API. */
-    public void outsideWakeUpEnded() {
+    void outsideWakeUpEnded() {
         wakeUps.pendingEnded();
     }
 

@@ -18,7 +18,6 @@ import masl.runtime.Mission;
 import masl.runtime.Mode;
 import masl.runtime.SharedVariable;
 import masl.runtime.scheduling.ChangeEpoch;
-import masl.runtime.scheduling.SliceRun;
 import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.Trace;
 import masl.runtime.trace.TraceEvent;
@@ -67,15 +66,12 @@ public final class EntryCoordinator {
     private boolean changed;
     /** {@link #wake}, made once: a trip hands it its agents without allocating. */
     private final Consumer<Agent> wakeParked = this::wake;
-    /** Makes the {@link ArrivalCombiner} of a scheduler thread's run of slices, on its first arrival. */
-    private final Supplier<ArrivalCombiner> newCombiner;
 
     public EntryCoordinator(Mission mission, Trace trace, LongSupplier clock, ChangeEpoch changes) {
         this.mission = mission;
         this.trace = trace;
         this.clock = clock;
         this.changes = changes;
-        this.newCombiner = () -> new ArrivalCombiner(this, mission);
     }
 
     /** Makes the mission's agents members of the mission wave; called once, before they run. */
@@ -213,56 +209,32 @@ public final class EntryCoordinator {
      * The synchronisation barrier of the agent's innermost (synchronous) block: true if the agent
      * completed it and tripped it now, false if it is parked until the trip. Only the completing
      * arrival takes the lock (see {@link SynchronisationBarrier} for the races this settles); the
-     * agent reads its own memberships without it (see the invariant above). On a scheduler that
-     * runs slices in runs, the arrival is left to the run ({@link ArrivalCombiner}), and the agent
-     * parks even if it is the last: whoever flushes trips.
+     * agent reads its own memberships without it (see the invariant above).
      */
     public boolean arriveAtBarrier(Agent agent) {
         SynchronisationBarrier barrier = requireActive(agent).entry.barrier;
         long ticket = agent.prepareToPark();
-        SliceRun run = mission.scheduler().currentRun();
-        if (run != null) {
-            ((ArrivalCombiner) run.deferred(newCombiner)).arrive(agent, barrier);
-            return false;
-        }
         int completedPhase = barrier.arrive(agent);
-        if (completedPhase < 0) {
-            return false;
-        }
+        return completedPhase >= 0 && tripAsLastArrival(agent, barrier, completedPhase, ticket);
+    }
+
+    /**
+     * Trips the phase the agent's arrival completed, unless a membership change came first: then
+     * either it tripped the phase (and woke the agent) or a new participant keeps it open (and the
+     * agent waits for it); both ways the agent stays parked.
+     */
+    private boolean tripAsLastArrival(Agent agent, SynchronisationBarrier barrier, int phase, long ticket) {
         begin();
         try {
-            if (!tripsCompleted(barrier, completedPhase, agent)) {
+            if (!barrier.completes(phase)) {
                 return false;
             }
+            trip(barrier, agent);
             agent.cancelPark(ticket);
             return true;
         } finally {
             end();
         }
-    }
-
-    /** Trips the phase that arrivals published together completed, unless a membership change came first. */
-    void tripCompleted(SynchronisationBarrier barrier, int phase) {
-        begin();
-        try {
-            tripsCompleted(barrier, phase, null);
-        } finally {
-            end();
-        }
-    }
-
-    /**
-     * Under the lock: trips the phase the arrivals completed, unless a membership change came first:
-     * then either it tripped the phase (and woke the arrived agents) or a new participant keeps it
-     * open (and they wait for it); false both ways. {@code going}: the completing arrival, which
-     * goes on running if it trips (null: every arrived agent is parked).
-     */
-    private boolean tripsCompleted(SynchronisationBarrier barrier, int phase, Agent going) {
-        if (!barrier.completes(phase)) {
-            return false;
-        }
-        trip(barrier, going);
-        return true;
     }
 
     // ---- entry members that change state -----------------------------------------------------

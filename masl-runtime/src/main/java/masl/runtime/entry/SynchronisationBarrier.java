@@ -26,10 +26,9 @@ import masl.runtime.Agent;
  * <p><b>Transitions.</b>
  * <ul>
  * <li><b>Arrive</b> ({@link #arrive}, no lock, by the arriving participant, which has issued the
- *     ticket of its park; or {@link #arriveAll}, for several parked participants at once, by the
- *     thread that ran their slices): push the agents onto the stack, <em>then</em> decrement
- *     unarrived. Every agent counted as arrived is therefore on the stack. The arrival that brings
- *     unarrived to zero has <em>completed</em> the phase; every other one is simply parked.</li>
+ *     ticket of its park): push the agent onto the stack, <em>then</em> decrement unarrived. Every
+ *     agent counted as arrived is therefore on the stack. The arrival that brings unarrived to zero
+ *     has <em>completed</em> the phase; every other one is simply parked.</li>
  * <li><b>Add or remove a participant</b> ({@link #addParticipant}, {@link #removeParticipant},
  *     under the coordinator's lock): participants and unarrived change together, by one, since a
  *     joining or leaving participant has not arrived. The one exception is an agent whose program
@@ -93,39 +92,23 @@ public final class SynchronisationBarrier {
      * the trip.
      */
     int arrive(Agent agent) {
-        agent.nextArrival = null;
-        return arriveAll(agent, agent, 1);
-    }
-
-    /**
-     * The arrivals of {@code count} participants at once, as {@link #arrive} on each in turn, but
-     * with one publication (an {@link ArrivalCombiner}'s): {@code last} is the latest of them,
-     * linked by {@link Agent#nextArrival} down to {@code first}, the earliest, whose link is null.
-     * Each has issued the ticket of its park. Returns the phase they completed, or -1.
-     */
-    int arriveAll(Agent last, Agent first, int count) {
-        // Participants that have not arrived keep the phase from tripping: it is theirs until published.
-        int phase = phase(state.get());
-        for (Agent agent = last; agent != null; agent = agent.nextArrival) {
-            agent.arrivedAt = this;
-            agent.arrivalPhase = phase;
-        }
         Agent top;
         do {
             top = arrivals.get();
-            first.nextArrival = top;
-        } while (!arrivals.compareAndSet(top, last));
+            agent.nextArrival = top;
+        } while (!arrivals.compareAndSet(top, agent));
         long current;
         long next;
         do {
             current = state.get();
-            if (unarrived(current) < count || phase(current) != phase) {
-                throw new IllegalStateException(describe(current) + ": " + count + " arrive in phase " + phase
-                        + " (" + first + " the first), but fewer participants are unarrived");
+            if (unarrived(current) == 0) {
+                throw new IllegalStateException(describe(current) + ": " + agent + " arrives, but every participant has");
             }
-            next = current - count * ONE_UNARRIVED;
+            next = current - ONE_UNARRIVED;
         } while (!state.compareAndSet(current, next));
-        return unarrived(next) == 0 ? phase : -1;
+        agent.arrivedAt = this;
+        agent.arrivalPhase = phase(next);
+        return unarrived(next) == 0 ? phase(next) : -1;
     }
 
     /** Under the lock: whether {@code phase} is the current phase and every participant has arrived in it. */

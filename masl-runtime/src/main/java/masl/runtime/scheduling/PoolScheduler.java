@@ -24,34 +24,18 @@ import java.util.concurrent.atomic.AtomicInteger;
  * <p><b>Runners.</b> The pool does not get a task per slice: at most one <em>runner</em> per
  * worker drains the run queue, running the agent at its head until the queue is empty. So making
  * an agent runnable costs a queue node, not a pool task and a wake-up of an idle worker, and a
- * barrier trip hands its whole wave over as one item ({@link #scheduleAll}, a {@link RunBatch}),
- * which the runners share a chunk of {@value #CHUNK} agents at a time. A runner whose agent blocks
- * in a primitive ({@link Blocking}) stops counting while it blocks, so another runner takes over
- * the queue on the worker the pool adds meanwhile.
- *
- * <p><b>Runs of slices.</b> Each worker is a {@link SliceRun}: its slices may defer their
- * arrivals at barriers to it ({@link #currentRun}). A runner flushes it after every
- * {@value #CHUNK} slices, when it finds the queue empty (then looks again, as the flush may have
- * tripped a barrier) and before its agent blocks in a primitive. A runner that finds nothing to do
- * while another runs waits a moment (up to {@value #SPIN_NANOS} ns) for the wave that one may queue
- * before it stops, which would leave its worker to be woken again.
+ * barrier trip hands its whole wave over in one pass ({@link #scheduleAll}). A runner whose
+ * agent blocks in a primitive ({@link Blocking}) stops counting while it blocks, so another
+ * runner takes over the queue on the worker the pool adds meanwhile.
  */
 public final class PoolScheduler implements Scheduler {
 
     private static final int STEPS_PER_SLICE = 128;
-    /**
-     * Slices a runner runs between two flushes of its run, and the agents it claims of a batch at
-     * once: small enough that two runners share a wave of a few hundred agents evenly.
-     */
-    private static final int CHUNK = 32;
-    /** How long a runner that ran out of work waits for another runner's trip before it stops. */
-    private static final long SPIN_NANOS = 100_000;
 
     private final ForkJoinPool pool;
     private final int workers;
     private final ScheduledThreadPoolExecutor timer;
-    /** {@link AgentTask}s and {@link RunBatch}es, in the order they were made runnable. */
-    private final ConcurrentLinkedQueue<Object> runQueue = new ConcurrentLinkedQueue<>();
+    private final ConcurrentLinkedQueue<AgentTask> runQueue = new ConcurrentLinkedQueue<>();
     /** Runners submitted and not blocked in a primitive: at most {@link #workers} are started. */
     private final AtomicInteger runners = new AtomicInteger();
     private final Runnable runner = this::drainRunQueue;
@@ -90,23 +74,18 @@ public final class PoolScheduler implements Scheduler {
         startRunnerIfNeeded();
     }
 
-    /** Appends the whole wave to the run queue as one item, then starts the runners it needs. */
+    /** Appends the whole wave to the run queue at once, then starts the runners it needs. */
     @Override
     public void scheduleAll(List<? extends AgentTask> agents) {
         if (agents.isEmpty()) {
             return;
         }
-        runQueue.add(agents.size() == 1 ? agents.get(0) : new RunBatch(agents));
-        int wanted = Math.min(workers, (agents.size() + CHUNK - 1) / CHUNK);
+        runQueue.addAll(agents);
+        int wanted = Math.min(workers, agents.size());
         int started = 0;
         while (started < wanted && startRunnerIfNeeded()) {
             started++;
         }
-    }
-
-    @Override
-    public SliceRun currentRun() {
-        return Thread.currentThread() instanceof Worker worker && worker.scheduler == this ? worker.run : null;
     }
 
     /** Starts a runner unless {@link #workers} are running already; true if it started one. */
@@ -133,85 +112,18 @@ public final class PoolScheduler implements Scheduler {
     }
 
     private void drainRunQueue() {
-        SliceRun run = ((Worker) Thread.currentThread()).run;
         do {
             try {
-                runUntilEmpty(run);
-            } finally {
-                // Also when a slice throws (a runtime bug): no deferred arrival is left behind, and
-                // the count must not keep a dead runner.
-                try {
-                    run.flush();
-                } finally {
-                    runners.decrementAndGet();
+                AgentTask agent;
+                while (!shutDown && (agent = runQueue.poll()) != null) {
+                    agent.runSlice();
                 }
+            } finally {
+                // Also when a slice throws (a runtime bug): the count must not keep a dead runner.
+                runners.decrementAndGet();
             }
             // An agent queued after the last poll saw this runner still counted and started none.
         } while (!runQueue.isEmpty() && !shutDown && claimRunner());
-    }
-
-    /** Runs slices until the queue is empty and the run has nothing left to flush. */
-    private void runUntilEmpty(SliceRun run) {
-        int sinceFlush = 0;
-        while (!shutDown) {
-            Object head = runQueue.peek();
-            if (head == null) {
-                if (!run.flush() && !awaitAnotherRunnersWork()) {
-                    return;
-                }
-                sinceFlush = 0;
-            } else {
-                sinceFlush += head instanceof RunBatch batch ? runChunk(batch) : runAlone((AgentTask) head);
-                if (sinceFlush >= CHUNK) {
-                    run.flush();
-                    sinceFlush = 0;
-                }
-            }
-        }
-    }
-
-    /**
-     * With the queue empty, spins a moment while another runner is still counted: in lock-step it
-     * is about to trip the barrier and queue the next wave, and a worker that went idle would cost
-     * a wake-up of its thread per step. True if work came, false if the runner should stop.
-     */
-    private boolean awaitAnotherRunnersWork() {
-        long deadline = System.nanoTime() + SPIN_NANOS;
-        while (runners.get() > 1 && !shutDown) {
-            for (int i = 0; i < 64; i++) {
-                if (!runQueue.isEmpty()) {
-                    return true;
-                }
-                Thread.onSpinWait();
-            }
-            if (System.nanoTime() - deadline > 0) {
-                return false;
-            }
-        }
-        return !runQueue.isEmpty();
-    }
-
-    /** Claims a chunk of the batch at the head of the queue and runs it; returns how many slices it ran. */
-    private int runChunk(RunBatch batch) {
-        int from = batch.claim(CHUNK);
-        int to = Math.min(from + CHUNK, batch.size());
-        if (to == batch.size()) {
-            // The last chunk is claimed: what was queued after the batch may start, on another runner.
-            runQueue.remove(batch);
-        }
-        for (int i = from; i < to; i++) {
-            batch.get(i).runSlice();
-        }
-        return to - from;
-    }
-
-    /** Takes the agent at the head of the queue, unless another runner did, and runs its slice. */
-    private int runAlone(AgentTask agent) {
-        if (!runQueue.remove(agent)) {
-            return 0;
-        }
-        agent.runSlice();
-        return 1;
     }
 
     /** Counts the calling runner again, if fewer than {@link #workers} are counted. */
@@ -244,8 +156,6 @@ public final class PoolScheduler implements Scheduler {
     static void blocking(boolean starts) {
         if (Thread.currentThread() instanceof Worker worker) {
             if (starts) {
-                // Agents whose arrivals the run holds must not wait for however long this blocks.
-                worker.run.flush();
                 worker.scheduler.runnerBlocks();
             } else {
                 worker.scheduler.runnerUnblocked();
@@ -278,10 +188,9 @@ public final class PoolScheduler implements Scheduler {
         };
     }
 
-    /** A worker of one scheduler's pool: lets {@link Blocking} find the runner it runs, and its run of slices. */
+    /** A worker of one scheduler's pool: lets {@link Blocking} find the runner it runs. */
     private static final class Worker extends ForkJoinWorkerThread {
         final PoolScheduler scheduler;
-        final SliceRun run = new SliceRun();
 
         Worker(ForkJoinPool pool, PoolScheduler scheduler) {
             super(pool);

@@ -47,16 +47,6 @@ public interface Scheduler {
     }
 
     /**
-     * The run of slices the calling thread is in, to which a slice may defer effects that only
-     * other agents wait for (see {@link SliceRun}); null if the caller is not one of this
-     * scheduler's threads, or if the scheduler defers nothing (the default): every effect then
-     * happens within its slice, as a seeded order needs.
-     */
-    default SliceRun currentRun() {
-        return null;
-    }
-
-    /**
      * Runs the body of a launched asynchronous primitive (MASL §9). By default on one of
      * {@code threads}, concurrently with the agents and free to block for as long as it acts. A
      * scheduler that orders a whole mission itself (seeded, simulated) runs it as one of its own

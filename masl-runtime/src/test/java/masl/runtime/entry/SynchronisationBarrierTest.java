@@ -8,8 +8,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import masl.runtime.Agent;
+import masl.runtime.AgentContext;
+import masl.runtime.AgentProgram;
 import masl.runtime.EntryDefinition;
+import masl.runtime.Mission;
 import masl.runtime.Mode;
+import masl.runtime.testing.TestAgent;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
@@ -24,14 +28,27 @@ class SynchronisationBarrierTest {
     private static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
 
     private SynchronisationBarrier barrier;
-    private Agent[] agents;
+    private final Agent[] agents = new Agent[4];
     private final List<Agent> letGo = new ArrayList<>();
 
     @BeforeEach
     void missionOfFourAgents() {
-        FinishingAgents built = new FinishingAgents(MAIN, 4);
-        agents = built.agents;
-        barrier = built.mission.entry(MAIN).barrier;
+        Mission.Builder builder = Mission.builder().main(MAIN);
+        TestAgent[] implementations = new TestAgent[agents.length];
+        for (int i = 0; i < agents.length; i++) {
+            implementations[i] = new TestAgent();
+            builder.agent("a" + i, implementations[i], null, self -> new AgentProgram() {
+                @Override
+                protected void resume(AgentContext ctx) {
+                    ctx.finish();
+                }
+            });
+        }
+        Mission mission = builder.build();
+        for (int i = 0; i < agents.length; i++) {
+            agents[i] = mission.agentOf(implementations[i]);
+        }
+        barrier = mission.entry(MAIN).barrier;
     }
 
     @Test
@@ -126,44 +143,6 @@ class SynchronisationBarrierTest {
         participants(1);
         barrier.arrive(agents[0]);
         assertThrows(IllegalStateException.class, () -> barrier.arrive(agents[1]));
-    }
-
-    @Test
-    void arrivalsPublishedTogetherCountAsManyAndKeepTheirArrivalOrder() {
-        participants(4);
-        assertEquals(-1, barrier.arrive(agents[3]));
-        assertEquals(-1, barrier.arriveAll(chain(agents[0], agents[2]), agents[0], 2));
-        assertFalse(barrier.isComplete(), "agent 1 has not arrived");
-        assertEquals(0, barrier.arriveAll(chain(agents[1]), agents[1], 1));
-        assertEquals(4, barrier.trip(null, letGo::add));
-        assertEquals(List.of(agents[3], agents[0], agents[2], agents[1]), letGo);
-    }
-
-    @Test
-    void anAgentThatDiesAfterItsArrivalWasPublishedWithOthersKeepsItCounted() {
-        participants(3);
-        barrier.arriveAll(chain(agents[0], agents[1]), agents[0], 2);
-        barrier.removeParticipant(agents[1]);
-        assertEquals(0, barrier.arrive(agents[2]));
-        assertEquals(2, barrier.trip(agents[2], letGo::add));
-        assertEquals(List.of(agents[0], agents[1]), letGo);
-    }
-
-    @Test
-    void morePublishedArrivalsThanUnarrivedParticipantsIsARuntimeBug() {
-        participants(2);
-        barrier.arrive(agents[0]);
-        assertThrows(IllegalStateException.class, () -> barrier.arriveAll(chain(agents[1], agents[2]), agents[1], 2));
-    }
-
-    /** Links agents given in arrival order as an ArrivalCombiner does; returns the latest. */
-    private static Agent chain(Agent... inArrivalOrder) {
-        Agent latest = null;
-        for (Agent agent : inArrivalOrder) {
-            agent.nextArrival = latest;
-            latest = agent;
-        }
-        return latest;
     }
 
     private void participants(int count) {
