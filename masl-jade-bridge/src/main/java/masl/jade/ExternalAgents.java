@@ -148,13 +148,7 @@ final class ExternalAgents {
 
     /** Deletes the hosts and waits, bounded, until their threads have ended. */
     void close() throws InterruptedException {
-        for (AgentController controller : controllers) {
-            try {
-                controller.kill();
-            } catch (StaleProxyException alreadyGone) {
-                // Deleted already: the platform is shutting down.
-            }
-        }
+        AgentDeletion.oneByOne(controllers, agentsTimeout);
         long deadline = System.nanoTime() + agentsTimeout.toNanos();
         for (External external : externals.values()) {
             Thread thread = external.host().thread();

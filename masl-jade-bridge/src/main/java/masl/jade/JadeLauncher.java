@@ -297,13 +297,7 @@ public final class JadeLauncher {
     /** Deletes the mission's JADE agents and waits, bounded, until their threads have ended. */
     private static void delete(List<AgentController> controllers, List<MaslJadeAgent> hosts)
             throws InterruptedException {
-        for (AgentController controller : controllers) {
-            try {
-                controller.kill();
-            } catch (StaleProxyException alreadyGone) {
-                // Deleted already: the platform is shutting down.
-            }
-        }
+        AgentDeletion.oneByOne(controllers, AGENTS_TIMEOUT);
         long deadline = System.nanoTime() + AGENTS_TIMEOUT.toNanos();
         for (MaslJadeAgent host : hosts) {
             Thread thread = host.thread();
