@@ -6,8 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PipedInputStream;
-import java.io.PipedOutputStream;
 import java.io.PrintStream;
 import java.net.URI;
 import java.nio.charset.StandardCharsets;
@@ -85,17 +83,16 @@ class LspCommandTest {
     private final ByteArrayOutputStream serverErr = new ByteArrayOutputStream();
     private CompletableFuture<Integer> status;
     private LanguageServer server;
-    private PipedOutputStream toServer;
+    private final MemoryPipe toServer = new MemoryPipe();
+    private final MemoryPipe toClient = new MemoryPipe();
 
     @BeforeEach
     void startMaslLsp() throws Exception {
-        PipedInputStream serverIn = new PipedInputStream(1 << 16);
-        toServer = new PipedOutputStream(serverIn);
-        PipedInputStream clientIn = new PipedInputStream(1 << 16);
-        PrintStream serverOut = new PrintStream(new PipedOutputStream(clientIn), true, StandardCharsets.UTF_8);
+        PrintStream serverOut = new PrintStream(toClient.out, true, StandardCharsets.UTF_8);
         PrintStream err = new PrintStream(serverErr, true, StandardCharsets.UTF_8);
-        status = CompletableFuture.supplyAsync(() -> new Masl(serverIn, serverOut, err).run("lsp"));
-        Launcher<LanguageServer> launcher = LSPLauncher.createClientLauncher(new RecordingClient(), clientIn, toServer);
+        status = CompletableFuture.supplyAsync(() -> new Masl(toServer.in, serverOut, err).run("lsp"));
+        Launcher<LanguageServer> launcher = LSPLauncher.createClientLauncher(new RecordingClient(), toClient.in,
+                toServer.out);
         launcher.startListening();
         server = launcher.getRemoteProxy();
         InitializeParams initialize = new InitializeParams();
@@ -111,6 +108,7 @@ class LspCommandTest {
         server.exit();
         assertEquals(0, status.get(WAIT_SECONDS, TimeUnit.SECONDS), serverErr.toString(StandardCharsets.UTF_8));
         toServer.close();
+        toClient.close();
     }
 
     @Test
