@@ -14,6 +14,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
@@ -39,6 +40,11 @@ import masl.runtime.trace.TraceEvent;
  */
 final class Distribution {
 
+    /** How long the end of a mission waits for the containers it ended to leave the platform. */
+    private static final Duration CONTAINERS_LEAVE_WITHIN = Duration.ofSeconds(10);
+    private static final long LEAVING_POLL_MILLIS = 20;
+    private static final long LEAVING_PROBE_MILLIS = 250;
+
     private final Map<String, String> containerOfAgent;
     private final Duration agentsTimeout;
     private final CoordinatorAgent coordinator;
@@ -53,6 +59,8 @@ final class Distribution {
     private final Set<String> goneContainers = ConcurrentHashMap.newKeySet();
     /** Set once the mission has ended: containers leaving then are expected. */
     private volatile boolean ending;
+    /** Down once the AMS reports the container of that name removed from the platform. */
+    private final Map<String, CountDownLatch> departures = new ConcurrentHashMap<>();
 
     private record Remote(String name, String container, String className, RemoteBody body) {
     }
@@ -165,18 +173,32 @@ final class Distribution {
     }
 
     /**
-     * Tells every container the mission has ended (each deletes its bodies, answers, and ends), waits
-     * for their answers, bounded, and deletes the coordinator.
+     * Tells every container the mission has ended (each deletes its bodies, answers, and leaves the
+     * platform), waits for their answers and then for those that obeyed to leave, each bounded, and
+     * deletes the coordinator.
+     *
+     * <p>Waiting for them to leave keeps a container half-gone from meeting the platform's shutdown,
+     * which the caller usually starts next: JADE 4.3's AMS then removes it a second time and prints
+     * {@code NotFoundException: No container named c2 was found} with its stack trace.
      */
     void end() throws InterruptedException {
         ending = true;
+        Map<String, AID> ended = new LinkedHashMap<>();
         for (Map.Entry<String, AID> container : containers.entrySet()) {
             try {
-                await(request(container.getValue(), CoordinatorAgent.END, "{}"), "container " + container.getKey()
-                        + " to end");
+                ACLMessage answer = await(request(container.getValue(), CoordinatorAgent.END, "{}"),
+                        "container " + container.getKey() + " to end");
+                if (answer.getPerformative() == ACLMessage.INFORM) {
+                    ended.put(container.getKey(), container.getValue());
+                }
             } catch (JadeException gone) {
                 // It ended on its own, or its JVM is gone: nothing of it is left to end.
             }
+        }
+        long deadline = System.nanoTime() + CONTAINERS_LEAVE_WITHIN.toNanos();
+        for (Map.Entry<String, AID> container : ended.entrySet()) {
+            // Past the bound the platform's shutdown removes it: a stack trace printed at worst.
+            awaitLeaving(container.getKey(), container.getValue(), deadline);
         }
         try {
             controller.kill();
@@ -237,6 +259,7 @@ final class Distribution {
      * coordinator's JADE thread.
      */
     private void containerRemoved(String container) {
+        departure(container).countDown();
         List<String> agents = remotes.values().stream().filter(remote -> remote.container().equals(container))
                 .map(Remote::name).toList();
         if (agents.isEmpty() || !goneContainers.add(container)) {
@@ -250,6 +273,30 @@ final class Distribution {
         agents.forEach(agent -> reasons.put(agent, "the container " + container + " of agent " + agent + " is gone"));
         reasons.put(ContainerHost.agentName(container), "the container " + container + " is gone");
         coordinator.abandon(reasons);
+    }
+
+    /**
+     * Waits until {@code container} has left the platform: the AMS reports it removed, or a request to its
+     * agent comes back undeliverable. Asked again every {@value #LEAVING_POLL_MILLIS} ms: the AMS's
+     * events do not reach every coordinator (one whose platform ran an earlier mission may miss them).
+     */
+    private void awaitLeaving(String container, AID host, long deadline) throws InterruptedException {
+        CountDownLatch departure = departure(container);
+        while (departure.getCount() > 0 && System.nanoTime() - deadline < 0) {
+            // A container still there answers NOT_UNDERSTOOD; a gone one, the AMS with FAILURE (see take).
+            // One half-gone may answer nothing: asked again.
+            CompletableFuture<ACLMessage> answer = coordinator.ask(request(host, ContainerHost.ALIVE, "{}"));
+            try {
+                answer.get(LEAVING_PROBE_MILLIS, TimeUnit.MILLISECONDS);
+            } catch (ExecutionException | TimeoutException noAnswer) {
+                answer.cancel(false);
+            }
+            departure.await(LEAVING_POLL_MILLIS, TimeUnit.MILLISECONDS);
+        }
+    }
+
+    private CountDownLatch departure(String container) {
+        return departures.computeIfAbsent(container, name -> new CountDownLatch(1));
     }
 
     /** A request to {@code receiver} was undeliverable: if it is a body or a container agent, its container is gone. */

@@ -16,6 +16,8 @@ import masl.runtime.descriptor.AgentType;
  * ({@code masl container --main-host H --main-port P --name C}): the programs run in the
  * coordinator's JVM ({@link JadeLauncher#place}), the primitives here. It waits for the
  * coordinator, hosts the bodies it asks for, and its mission ends when the coordinator says so.
+ * It serves one mission: close it once that has ended. The coordinator's end of the mission waits
+ * (up to 10 s) for the containers it ended to leave the platform.
  *
  * <pre>{@code
  * try (MaslContainer container = MaslContainer.start(JadeOptions.join(host, port), "c2",

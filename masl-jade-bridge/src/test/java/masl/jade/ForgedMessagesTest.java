@@ -86,6 +86,8 @@ class ForgedMessagesTest {
                 assertEquals(ACLMessage.NOT_UNDERSTOOD, reply.getPerformative(), reply.toString());
             }
             gate.result().complete(7);
+            assertTrue(container.awaitMissionEnd(Duration.ofSeconds(30)), "the coordinator's own end");
+            container.close();
             MissionOutcome outcome = mission.get(60, TimeUnit.SECONDS);
             outcome.requireCompleted();
             assertEquals(List.of(7), results, "the body's own result");
@@ -133,10 +135,11 @@ class ForgedMessagesTest {
             assertTrue(unsigned != null && unsigned.startsWith("refused masl-end from masl-coordinator@")
                     && unsigned.endsWith(": not signed with the mission's secret"), unsigned);
             gate.result().complete(7);
+            assertTrue(container.awaitMissionEnd(Duration.ofSeconds(30)), "the coordinator's own end");
+            container.close();
             MissionOutcome outcome = mission.get(60, TimeUnit.SECONDS);
             outcome.requireCompleted();
             assertEquals(List.of(7), results, "the body's result: it was still there");
-            assertTrue(container.awaitMissionEnd(Duration.ofSeconds(30)), "the coordinator's own end");
             assertEquals(Optional.empty(), container.lostPlatform());
             assertEquals(List.of("b"), container.hostedAgents());
             assertEquals(List.of(), events);

@@ -4,10 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
+import java.util.List;
 import java.util.Map;
 import java.util.function.Function;
 import masl.jade.BodyContainerMain;
 import masl.jade.JadeLauncher;
+import masl.jade.PlatformContainers;
 import masl.jade.TestPrograms;
 import masl.jade.testing.JadePlatformExtension;
 import masl.jade.testing.SecondJvm;
@@ -24,7 +26,8 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 /**
  * The hand-translated E2, E4 and E6 with their agents split across two containers in two JVMs:
  * this JVM's main container runs the mission (the coordinator), a second JVM
- * ({@link BodyContainerMain}) hosts the bodies of some agents. Journals as in-process.
+ * ({@link BodyContainerMain}) hosts the bodies of some agents. Journals as in-process; the second
+ * JVM's container has left the platform when the mission's end returns.
  */
 @Timeout(120)
 class TwoJvmExamplesTest {
@@ -76,6 +79,9 @@ class TwoJvmExamplesTest {
                     .types(TestPrograms::type).place(placement).secret(BodyContainerMain.SECRET)
                     .run(JADE.platform(), TIMEOUT);
             assertTrue(outcome.completed(), outcome + "\n" + container.output());
+            // Else the platform's shutdown could meet it half-gone, and JADE print a stack trace.
+            assertEquals(List.of(JADE.platform().containerName()), PlatformContainers.of(JADE.platform()),
+                    "the containers left the platform before the mission's end returned");
             return new Split(outcome.journal(), container.assertEndsByItself());
         }
     }
