@@ -113,6 +113,8 @@ final class LspLatency {
         server.shutdown().get(60, TimeUnit.SECONDS);
         server.exit();
         serving.get(60, TimeUnit.SECONDS);
+        // Closed at once: a piped stream whose writing thread has ended unclosed reports a broken pipe to its reader.
+        fromServer.close();
         toServer.close();
         deleteQuietly(folder);
         return new Figures(changes, cpuPerChange, open);

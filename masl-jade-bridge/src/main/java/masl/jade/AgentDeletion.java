@@ -10,8 +10,9 @@ import java.util.List;
  * is asked to end. JADE 4.3 takes an ending agent out of its container's agent table outside the
  * table's lock: agents ending together can corrupt it for good, and the AMS, which reads it to shut
  * the platform down, then never ends the container ("Cannot kill container Main-Container").
+ * Public for code that starts agents of its own in a platform (the bench's pingers).
  */
-final class AgentDeletion {
+public final class AgentDeletion {
 
     private AgentDeletion() {
     }
@@ -20,7 +21,7 @@ final class AgentDeletion {
      * Kills each agent and waits until its container no longer knows it, all within {@code timeout};
      * past it, the rest are killed without waiting.
      */
-    static void oneByOne(List<AgentController> controllers, Duration timeout) throws InterruptedException {
+    public static void oneByOne(List<AgentController> controllers, Duration timeout) throws InterruptedException {
         long deadline = System.nanoTime() + timeout.toNanos();
         for (AgentController controller : controllers) {
             try {

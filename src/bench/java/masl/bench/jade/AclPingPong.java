@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicLong;
+import masl.jade.AgentDeletion;
 import masl.jade.JadeOptions;
 import masl.jade.JadePlatform;
 
@@ -104,13 +105,7 @@ public final class AclPingPong {
         } catch (StaleProxyException e) {
             throw new IllegalStateException("the JADE container ended during the benchmark", e);
         } finally {
-            for (AgentController agent : agents) {
-                try {
-                    agent.kill();
-                } catch (StaleProxyException alreadyGone) {
-                    // Deleted with the platform.
-                }
-            }
+            AgentDeletion.oneByOne(agents, Pinger.AGENTS_GONE_WITHIN);
         }
     }
 

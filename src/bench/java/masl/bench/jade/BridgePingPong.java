@@ -11,6 +11,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.atomic.AtomicLong;
+import masl.jade.AgentDeletion;
 import masl.jade.JadeLauncher;
 import masl.jade.JadeOptions;
 import masl.jade.JadePlatform;
@@ -119,13 +120,7 @@ public final class BridgePingPong {
         } catch (StaleProxyException e) {
             throw new IllegalStateException("the JADE container ended during the benchmark", e);
         } finally {
-            for (AgentController pinger : pingers) {
-                try {
-                    pinger.kill();
-                } catch (StaleProxyException alreadyGone) {
-                    // Deleted with the platform.
-                }
-            }
+            AgentDeletion.oneByOne(pingers, Pinger.AGENTS_GONE_WITHIN);
             synchronized (servers) {
                 servers.forEach(BenchAgent::release);
             }
