@@ -59,7 +59,7 @@ final class Distribution {
     private final Set<String> goneContainers = ConcurrentHashMap.newKeySet();
     /** Set once the mission has ended: containers leaving then are expected. */
     private volatile boolean ending;
-    /** Down once the AMS reports the container of that name removed from the platform. */
+    /** Down once the container of that name is known gone: the AMS's removal event, or an undeliverable request. */
     private final Map<String, CountDownLatch> departures = new ConcurrentHashMap<>();
 
     private record Remote(String name, String container, String className, RemoteBody body) {
@@ -283,7 +283,8 @@ final class Distribution {
     private void awaitLeaving(String container, AID host, long deadline) throws InterruptedException {
         CountDownLatch departure = departure(container);
         while (departure.getCount() > 0 && System.nanoTime() - deadline < 0) {
-            // A container still there answers NOT_UNDERSTOOD; a gone one, the AMS with FAILURE (see take).
+            // A container still there answers NOT_UNDERSTOOD; for a gone one the AMS answers FAILURE,
+            // which the coordinator reports as unreachable (CoordinatorAgent.take).
             // One half-gone may answer nothing: asked again.
             CompletableFuture<ACLMessage> answer = coordinator.ask(request(host, ContainerHost.ALIVE, "{}"));
             try {
