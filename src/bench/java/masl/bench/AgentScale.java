@@ -1,6 +1,5 @@
 package masl.bench;
 
-import com.sun.management.OperatingSystemMXBean;
 import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryMXBean;
 import java.time.Duration;
@@ -36,9 +35,8 @@ final class AgentScale {
         String source = MaslLockStep.source(agents, steps);
         System.gc();
         long heapBefore = memory.getHeapMemoryUsage().getUsed();
-        OperatingSystemMXBean processor = (OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
         long start = System.nanoTime();
-        long cpuStart = processor.getProcessCpuTime();
+        long cpuStart = Bench.processCpuNanos();
         long[] firstStep = new long[1];
         long[] cpuFirstStep = new long[1];
         long[] heapStarted = new long[1];
@@ -50,7 +48,7 @@ final class AgentScale {
                         clock.stepEnded();
                         if (firstStep[0] == 0) {
                             firstStep[0] = System.nanoTime();
-                            cpuFirstStep[0] = processor.getProcessCpuTime();
+                            cpuFirstStep[0] = Bench.processCpuNanos();
                             // Started: every agent exists and has run its first step. Delays the second step
                             // by a collection, a small part of the steps the rate is taken over.
                             System.gc();

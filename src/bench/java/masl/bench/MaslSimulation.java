@@ -1,6 +1,5 @@
 package masl.bench;
 
-import java.lang.management.ManagementFactory;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -110,7 +109,7 @@ final class MaslSimulation {
         if (!cpuTime) {
             return System.nanoTime();
         }
-        return ((com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean()).getProcessCpuTime();
+        return Bench.processCpuNanos();
     }
 
     /** Robots on a 10-wide grid, 0.5 m apart, all facing +X: they drive along without meeting. */
