@@ -1,17 +1,10 @@
 package masl.jade;
 
-import jade.content.lang.Codec;
-import jade.content.lang.sl.SLCodec;
-import jade.content.onto.OntologyException;
-import jade.content.onto.basic.Action;
 import jade.core.Agent;
 import jade.core.Profile;
 import jade.core.ProfileImpl;
 import jade.core.Runtime;
-import jade.domain.FIPANames;
-import jade.domain.JADEAgentManagement.JADEManagementOntology;
 import jade.domain.JADEAgentManagement.ShutdownPlatform;
-import jade.lang.acl.ACLMessage;
 import jade.wrapper.AgentContainer;
 import jade.wrapper.ControllerException;
 import jade.wrapper.StaleProxyException;
@@ -304,18 +297,7 @@ public final class JadePlatform implements AutoCloseable {
 
         @Override
         protected void setup() {
-            getContentManager().registerLanguage(new SLCodec(), FIPANames.ContentLanguage.FIPA_SL);
-            getContentManager().registerOntology(JADEManagementOntology.getInstance());
-            ACLMessage request = new ACLMessage(ACLMessage.REQUEST);
-            request.addReceiver(getAMS());
-            request.setLanguage(FIPANames.ContentLanguage.FIPA_SL);
-            request.setOntology(JADEManagementOntology.NAME);
-            try {
-                getContentManager().fillContent(request, new Action(getAMS(), new ShutdownPlatform()));
-            } catch (Codec.CodecException | OntologyException e) {
-                throw new IllegalStateException("JADE cannot encode its own shutdown request", e);
-            }
-            send(request);
+            send(AmsRequests.request(this, new ShutdownPlatform()));
         }
     }
 

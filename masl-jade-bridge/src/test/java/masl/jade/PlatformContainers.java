@@ -1,15 +1,11 @@
 package masl.jade;
 
 import jade.content.ContentElement;
-import jade.content.lang.sl.SLCodec;
-import jade.content.onto.basic.Action;
 import jade.content.onto.basic.Result;
 import jade.core.Agent;
 import jade.core.ContainerID;
 import jade.core.behaviours.OneShotBehaviour;
-import jade.domain.FIPANames;
 import jade.domain.FIPAService;
-import jade.domain.JADEAgentManagement.JADEManagementOntology;
 import jade.domain.JADEAgentManagement.QueryPlatformLocationsAction;
 import jade.lang.acl.ACLMessage;
 import jade.wrapper.AgentController;
@@ -47,20 +43,13 @@ public final class PlatformContainers extends Agent {
 
     @Override
     protected void setup() {
-        getContentManager().registerLanguage(new SLCodec(), FIPANames.ContentLanguage.FIPA_SL);
-        getContentManager().registerOntology(JADEManagementOntology.getInstance());
         addBehaviour(new OneShotBehaviour(this) {
             private static final long serialVersionUID = 1L;
 
             @Override
             public void action() {
                 try {
-                    ACLMessage request = new ACLMessage(ACLMessage.REQUEST);
-                    request.addReceiver(getAMS());
-                    request.setLanguage(FIPANames.ContentLanguage.FIPA_SL);
-                    request.setOntology(JADEManagementOntology.NAME);
-                    getContentManager().fillContent(request,
-                            new Action(getAMS(), new QueryPlatformLocationsAction()));
+                    ACLMessage request = AmsRequests.request(myAgent, new QueryPlatformLocationsAction());
                     ContentElement answer = getContentManager().extractContent(
                             FIPAService.doFipaRequestClient(myAgent, request, 20_000));
                     List<String> found = new ArrayList<>();
