@@ -148,8 +148,9 @@ final class ExternalAgents {
 
     /** Deletes the hosts and waits, bounded, until their threads have ended. */
     void close() throws InterruptedException {
-        AgentDeletion.oneByOne(controllers, agentsTimeout);
+        // One bound for both waits: deleting, then the threads' ends, normally at once after.
         long deadline = System.nanoTime() + agentsTimeout.toNanos();
+        AgentDeletion.oneByOne(controllers, agentsTimeout);
         for (External external : externals.values()) {
             Thread thread = external.host().thread();
             if (thread != null) {

@@ -297,8 +297,9 @@ public final class JadeLauncher {
     /** Deletes the mission's JADE agents and waits, bounded, until their threads have ended. */
     private static void delete(List<AgentController> controllers, List<MaslJadeAgent> hosts)
             throws InterruptedException {
-        AgentDeletion.oneByOne(controllers, AGENTS_TIMEOUT);
+        // One bound for both waits: deleting, then the threads' ends, normally at once after.
         long deadline = System.nanoTime() + AGENTS_TIMEOUT.toNanos();
+        AgentDeletion.oneByOne(controllers, AGENTS_TIMEOUT);
         for (MaslJadeAgent host : hosts) {
             Thread thread = host.thread();
             if (thread != null) {
