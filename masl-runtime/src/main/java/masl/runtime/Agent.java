@@ -88,6 +88,18 @@ public final class Agent implements AgentContext, AgentTask {
     /** Whether the agent's latest park is a busy-wait's: for the deadlock watchdog (Mission). */
     private volatile boolean busyWaitPark;
     private volatile boolean finished;
+    /**
+     * Set after an invocation is queued; cleared by the agent's own boundary before it serves its
+     * queue, and set again if some stay queued. A boundary, or the end of a slice, that finds it
+     * clear reads no queue: the queue is objects of their own, cache lines an agent-step would
+     * otherwise fetch for nothing (issue 26).
+     */
+    private volatile boolean invocationsQueued;
+    /**
+     * Set after an occurrence is perceived; cleared by the agent's own boundary before it takes the
+     * occurrences. A boundary that finds it clear reads no event queue, for the same reason.
+     */
+    private volatile boolean eventsPerceived;
 
     // Confined to the thread running the current slice (successive slices are ordered).
     private boolean suspended;
@@ -230,9 +242,29 @@ public final class Agent implements AgentContext, AgentTask {
         }
     }
 
-    /** Schedules a serving slice if invocations wait and the agent is blocked or done. */
+    /**
+     * The agent's own boundary serves what is queued (MASL §5). An invocation queued concurrently
+     * whose flag this does not see yet counts as queued after the boundary: its submitter then
+     * finds the agent running, and the end of the slice serves it ({@link #serveIfPending}).
+     */
+    private void serveQueuedInvocations() {
+        if (invocationsQueued) {
+            invocationsQueued = false;
+            invocations.serveAll();
+            if (!invocations.nothingQueued()) {
+                // Kept for later: those wait(state) does not allow.
+                invocationsQueued = true;
+            }
+        }
+    }
+
+    /**
+     * Schedules a serving slice if invocations wait and the agent is blocked or done. The flag is
+     * read after the agent turned {@code PARKED} or {@code DONE}: a submitter that found it running
+     * had set the flag before it looked.
+     */
     private void serveIfPending() {
-        if (run.claimServing(servable)) {
+        if (invocationsQueued && run.claimServing(servable)) {
             mission.scheduler().schedule(this);
         }
     }
@@ -356,7 +388,7 @@ public final class Agent implements AgentContext, AgentTask {
 
     /** Steps 2 and 3 of a step boundary (§5): pending invocations, then the barrier if one is due. */
     private boolean completeBoundary(boolean barrier) {
-        invocations.serveAll();
+        serveQueuedInvocations();
         if (barrier && !mission.coordinator().arriveAtBarrier(this)) {
             return false;
         }
@@ -417,7 +449,7 @@ public final class Agent implements AgentContext, AgentTask {
             if (startReactions(false)) {
                 return false;
             }
-            invocations.serveAll();
+            serveQueuedInvocations();
         }
         long epoch = mission.changes().current();
         if (epoch == busyWaitEpoch && progress == busyWaitProgress) {
@@ -858,6 +890,7 @@ public final class Agent implements AgentContext, AgentTask {
         // Queueing one for an idle agent wakes it, for the deadlock watchdog (Mission): counted first.
         mission.countSchedule();
         invocations.add(invocation);
+        invocationsQueued = true;
         serveIfPending();
         mission.changes().advance();
     }
@@ -872,6 +905,7 @@ public final class Agent implements AgentContext, AgentTask {
     void submitInvocationServingInline(PendingInvocation invocation) {
         mission.countSchedule();
         invocations.add(invocation);
+        invocationsQueued = true;
         // Once the mission has ended, an invocation is never run: its scheduler would not run a serving slice either.
         if (!mission.hasEnded() && run.claimServing(servable)) {
             serveWhileBlocked();
@@ -895,6 +929,7 @@ public final class Agent implements AgentContext, AgentTask {
     /** Perceives an occurrence (§8): from any thread, never blocks; wakes a parked busy-wait (§5). */
     void perceive(EventOccurrence occurrence) {
         events.perceive(occurrence);
+        eventsPerceived = true;
         // A stale ticket (the agent has woken since, or parks elsewhere) is ignored by unpark.
         long ticket = busyWaitTicket;
         if (ticket != 0) {
@@ -908,6 +943,11 @@ public final class Agent implements AgentContext, AgentTask {
      * reaction. Returns whether it did; the boundary call then returns {@code false}.
      */
     private boolean startReactions(boolean barrierDue) {
+        // An occurrence whose flag this does not see yet is perceived after this boundary.
+        if (!eventsPerceived) {
+            return false;
+        }
+        eventsPerceived = false;
         if (events.nothingPerceived()) {
             return false;
         }

@@ -469,11 +469,13 @@ public final class Mission {
         wakeUps.counted();
     }
 
-    void outsideWakeUpStarted() {
+    /** <b>Internal:</b> not part of the API. A wake-up may come from outside the agents' slices until {@link #outsideWakeUpEnded}. */
+    public void outsideWakeUpStarted() {
         wakeUps.pendingStarted();
     }
 
-    void outsideWakeUpEnded() {
+    /** <b>Internal:</b> not part of the API. */
+    public void outsideWakeUpEnded() {
         wakeUps.pendingEnded();
     }
 

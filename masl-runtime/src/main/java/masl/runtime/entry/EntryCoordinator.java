@@ -8,6 +8,7 @@ import java.util.Set;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Consumer;
+import java.util.function.Function;
 import java.util.function.LongSupplier;
 import java.util.function.Supplier;
 import masl.runtime.Agent;
@@ -18,6 +19,7 @@ import masl.runtime.Mission;
 import masl.runtime.Mode;
 import masl.runtime.SharedVariable;
 import masl.runtime.scheduling.ChangeEpoch;
+import masl.runtime.scheduling.SliceRun;
 import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.Trace;
 import masl.runtime.trace.TraceEvent;
@@ -66,12 +68,17 @@ public final class EntryCoordinator {
     private boolean changed;
     /** {@link #wake}, made once: a trip hands it its agents without allocating. */
     private final Consumer<Agent> wakeParked = this::wake;
+    /** {@link #wakeLater}, made once. */
+    private final Consumer<ArrivalChunk> wakeChunkLater = this::wakeLater;
+    /** Makes the {@link ArrivalCombiner} of a scheduler thread's run of slices, on its first arrival. */
+    private final Function<SliceRun, ArrivalCombiner> newCombiner;
 
     public EntryCoordinator(Mission mission, Trace trace, LongSupplier clock, ChangeEpoch changes) {
         this.mission = mission;
         this.trace = trace;
         this.clock = clock;
         this.changes = changes;
+        this.newCombiner = run -> new ArrivalCombiner(this, mission, run);
     }
 
     /** Makes the mission's agents members of the mission wave; called once, before they run. */
@@ -209,32 +216,56 @@ public final class EntryCoordinator {
      * The synchronisation barrier of the agent's innermost (synchronous) block: true if the agent
      * completed it and tripped it now, false if it is parked until the trip. Only the completing
      * arrival takes the lock (see {@link SynchronisationBarrier} for the races this settles); the
-     * agent reads its own memberships without it (see the invariant above).
+     * agent reads its own memberships without it (see the invariant above). On a scheduler that
+     * runs slices in runs, the arrival is left to the run ({@link ArrivalCombiner}), and the agent
+     * parks even if it is the last: whoever flushes trips.
      */
     public boolean arriveAtBarrier(Agent agent) {
         SynchronisationBarrier barrier = requireActive(agent).entry.barrier;
         long ticket = agent.prepareToPark();
+        SliceRun run = mission.scheduler().currentRun();
+        if (run != null) {
+            ((ArrivalCombiner) run.deferred(newCombiner)).arrive(agent, barrier);
+            return false;
+        }
         int completedPhase = barrier.arrive(agent);
-        return completedPhase >= 0 && tripAsLastArrival(agent, barrier, completedPhase, ticket);
-    }
-
-    /**
-     * Trips the phase the agent's arrival completed, unless a membership change came first: then
-     * either it tripped the phase (and woke the agent) or a new participant keeps it open (and the
-     * agent waits for it); both ways the agent stays parked.
-     */
-    private boolean tripAsLastArrival(Agent agent, SynchronisationBarrier barrier, int phase, long ticket) {
+        if (completedPhase < 0) {
+            return false;
+        }
         begin();
         try {
-            if (!barrier.completes(phase)) {
+            if (!tripsCompleted(barrier, completedPhase, agent)) {
                 return false;
             }
-            trip(barrier, agent);
             agent.cancelPark(ticket);
             return true;
         } finally {
             end();
         }
+    }
+
+    /** Trips the phase that arrivals published together completed, unless a membership change came first. */
+    void tripCompleted(SynchronisationBarrier barrier, int phase) {
+        begin();
+        try {
+            tripsCompleted(barrier, phase, null);
+        } finally {
+            end();
+        }
+    }
+
+    /**
+     * Under the lock: trips the phase the arrivals completed, unless a membership change came first:
+     * then either it tripped the phase (and woke the arrived agents) or a new participant keeps it
+     * open (and they wait for it); false both ways. {@code going}: the completing arrival, which
+     * goes on running if it trips (null: every arrived agent is parked).
+     */
+    private boolean tripsCompleted(SynchronisationBarrier barrier, int phase, Agent going) {
+        if (!barrier.completes(phase)) {
+            return false;
+        }
+        trip(barrier, going);
+        return true;
     }
 
     // ---- entry members that change state -----------------------------------------------------
@@ -452,7 +483,7 @@ public final class EntryCoordinator {
 
     /** Lets the agents that arrived go on; {@code going}, the completing arrival, is running (null: a change trips). */
     private void trip(SynchronisationBarrier barrier, Agent going) {
-        int agents = barrier.trip(going, wakeParked);
+        int agents = barrier.trip(going, wakeParked, wakeChunkLater);
         trace.record(new TraceEvent.BarrierTripped(clock.getAsLong(), barrier.domain.name(), agents));
     }
 
@@ -519,6 +550,12 @@ public final class EntryCoordinator {
     /** Queues a wake-up of a parked agent; the running agent (no pending park) needs none. */
     private void wake(Agent agent) {
         wakes.addParked(agent);
+    }
+
+    /** Lets a chunk of arrivals go, to be woken by the thread that runs it: a wake-up pending until then. */
+    private void wakeLater(ArrivalChunk chunk) {
+        mission.outsideWakeUpStarted();
+        wakes.addChunk(chunk);
     }
 
     private void begin() {

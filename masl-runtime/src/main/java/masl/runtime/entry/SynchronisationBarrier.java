@@ -26,9 +26,10 @@ import masl.runtime.Agent;
  * <p><b>Transitions.</b>
  * <ul>
  * <li><b>Arrive</b> ({@link #arrive}, no lock, by the arriving participant, which has issued the
- *     ticket of its park): push the agent onto the stack, <em>then</em> decrement unarrived. Every
- *     agent counted as arrived is therefore on the stack. The arrival that brings unarrived to zero
- *     has <em>completed</em> the phase; every other one is simply parked.</li>
+ *     ticket of its park; or {@link #arriveAll}, for several parked participants at once, by the
+ *     thread that ran their slices): push the agents onto the stack, <em>then</em> decrement
+ *     unarrived. Every agent counted as arrived is therefore on the stack. The arrival that brings
+ *     unarrived to zero has <em>completed</em> the phase; every other one is simply parked.</li>
  * <li><b>Add or remove a participant</b> ({@link #addParticipant}, {@link #removeParticipant},
  *     under the coordinator's lock): participants and unarrived change together, by one, since a
  *     joining or leaving participant has not arrived. The one exception is an agent whose program
@@ -78,8 +79,10 @@ public final class SynchronisationBarrier {
     /** The outermost block of the domain, naming it in traces and reports. */
     final Entry domain;
     private final AtomicLong state = new AtomicLong();
-    /** The agents that arrived in the current phase, last arrival first, linked by {@link Agent#nextArrival}. */
+    /** The agents that arrived one by one in the current phase, last arrival first, linked by {@link Agent#nextArrival}. */
     private final AtomicReference<Agent> arrivals = new AtomicReference<>();
+    /** The chunks of arrivals published together in the current phase, last first, linked by {@link ArrivalChunk#below}. */
+    private final AtomicReference<ArrivalChunk> chunks = new AtomicReference<>();
 
     SynchronisationBarrier(Entry domain) {
         this.domain = domain;
@@ -97,18 +100,65 @@ public final class SynchronisationBarrier {
             top = arrivals.get();
             agent.nextArrival = top;
         } while (!arrivals.compareAndSet(top, agent));
+        long next = countArrived(1, agent);
+        agent.arrivedAt = this;
+        agent.arrivalPhase = phase(next);
+        return completedPhase(next);
+    }
+
+    /**
+     * The arrivals of a chunk's participants at once, as {@link #arrive} on each in turn, but with
+     * one publication: the chunk goes on a stack of its own, whole, and the trip lets it go whole.
+     * Each agent has issued the ticket of its park. Returns the phase they completed, or -1.
+     */
+    int arriveAll(ArrivalChunk chunk) {
+        // Participants that have not arrived keep the phase from tripping: it is theirs until published.
+        int phase = phase(state.get());
+        for (Agent agent = chunk.first; agent != null; agent = agent.nextArrival) {
+            agent.arrivedAt = this;
+            agent.arrivalPhase = phase;
+        }
+        ArrivalChunk top;
+        do {
+            top = chunks.get();
+            chunk.below = top;
+        } while (!chunks.compareAndSet(top, chunk));
+        long next = countArrived(chunk.count, chunk.first);
+        if (phase(next) != phase) {
+            throw new IllegalStateException(describe(next) + ": a chunk of " + chunk.count + " arrived in phase "
+                    + phase + ", which tripped without it");
+        }
+        return completedPhase(next);
+    }
+
+    /** Counts {@code count} arrivals in the current phase, pushed already; returns the state after. */
+    private long countArrived(int count, Agent first) {
         long current;
         long next;
         do {
             current = state.get();
-            if (unarrived(current) == 0) {
-                throw new IllegalStateException(describe(current) + ": " + agent + " arrives, but every participant has");
+            if (unarrived(current) < count) {
+                throw new IllegalStateException(describe(current) + ": " + count + " arrive (" + first
+                        + " the first), but fewer participants are unarrived");
             }
-            next = current - ONE_UNARRIVED;
+            next = current - count * ONE_UNARRIVED;
         } while (!state.compareAndSet(current, next));
-        agent.arrivedAt = this;
-        agent.arrivalPhase = phase(next);
-        return unarrived(next) == 0 ? phase(next) : -1;
+        return next;
+    }
+
+    /** The phase that a state after arrivals shows complete, or -1 if participants remain unarrived. */
+    private static int completedPhase(long state) {
+        return unarrived(state) == 0 ? phase(state) : -1;
+    }
+
+    /** The current phase; no lock. */
+    int currentPhase() {
+        return phase(state.get());
+    }
+
+    /** Whether {@code phase} is still the current phase, not tripped; no lock. */
+    boolean inPhase(int phase) {
+        return phase(state.get()) == phase;
     }
 
     /** Under the lock: whether {@code phase} is the current phase and every participant has arrived in it. */
@@ -154,7 +204,7 @@ public final class SynchronisationBarrier {
      * {@code going}, the completing arrival that trips and goes on running (null if a membership
      * change trips). Returns how many agents went on: the participants.
      */
-    int trip(Agent going, Consumer<Agent> letGo) {
+    int trip(Agent going, Consumer<Agent> letGo, Consumer<ArrivalChunk> letChunkGo) {
         long current = state.get();
         if (!isComplete(current)) {
             throw new IllegalStateException(describe(current) + " trips incomplete");
@@ -173,7 +223,26 @@ public final class SynchronisationBarrier {
             }
             agent = following;
         }
+        for (ArrivalChunk chunk = inPublicationOrder(chunks.getAndSet(null)); chunk != null; ) {
+            ArrivalChunk following = chunk.below;
+            chunk.below = null;
+            letChunkGo.accept(chunk);
+            chunk = following;
+        }
         return participants;
+    }
+
+    /** Reverses a detached stack of chunks (last published first) in place. */
+    private static ArrivalChunk inPublicationOrder(ArrivalChunk lastPublished) {
+        ArrivalChunk reversed = null;
+        ArrivalChunk chunk = lastPublished;
+        while (chunk != null) {
+            ArrivalChunk earlier = chunk.below;
+            chunk.below = reversed;
+            reversed = chunk;
+            chunk = earlier;
+        }
+        return reversed;
     }
 
     /** Reverses a detached stack (last arrival first) in place. */

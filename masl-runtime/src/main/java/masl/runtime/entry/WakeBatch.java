@@ -20,6 +20,8 @@ final class WakeBatch {
     private long[] tickets = new long[16];
     private int size;
     private final List<Agent> runnable = new ArrayList<>();
+    /** Chunks of arrivals let go, woken by whoever runs them (pending wake-ups, begun already). */
+    private final List<ArrivalChunk> chunks = new ArrayList<>();
 
     /** Adds a parked agent with the ticket of its pending park; the running agent (no pending park) needs no wake-up. */
     void addParked(Agent agent) {
@@ -39,8 +41,13 @@ final class WakeBatch {
         size++;
     }
 
+    /** Adds a chunk let go whole, whose pending wake-up its letting go has begun. */
+    void addChunk(ArrivalChunk chunk) {
+        chunks.add(chunk);
+    }
+
     boolean isEmpty() {
-        return size == 0;
+        return size == 0 && chunks.isEmpty();
     }
 
     /** Unparks every agent of the batch (stale tickets are ignored, as by {@link Agent#unpark}) and empties it. */
@@ -59,5 +66,9 @@ final class WakeBatch {
             mission.scheduler().scheduleAll(runnable);
             runnable.clear();
         }
+        for (ArrivalChunk chunk : chunks) {
+            mission.scheduler().scheduleWoken(chunk);
+        }
+        chunks.clear();
     }
 }

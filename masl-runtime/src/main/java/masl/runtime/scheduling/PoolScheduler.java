@@ -2,6 +2,7 @@ package masl.runtime.scheduling;
 
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinWorkerThread;
 import java.util.concurrent.RejectedExecutionException;
@@ -24,18 +25,36 @@ import java.util.concurrent.atomic.AtomicInteger;
  * <p><b>Runners.</b> The pool does not get a task per slice: at most one <em>runner</em> per
  * worker drains the run queue, running the agent at its head until the queue is empty. So making
  * an agent runnable costs a queue node, not a pool task and a wake-up of an idle worker, and a
- * barrier trip hands its whole wave over in one pass ({@link #scheduleAll}). A runner whose
- * agent blocks in a primitive ({@link Blocking}) stops counting while it blocks, so another
- * runner takes over the queue on the worker the pool adds meanwhile.
+ * barrier trip hands its whole wave over as one item ({@link #scheduleAll}, a {@link RunBatch}),
+ * which the runners share a chunk of {@value #CHUNK} agents at a time. A runner whose agent blocks
+ * in a primitive ({@link Blocking}) stops counting while it blocks, so another runner takes over
+ * the queue on the worker the pool adds meanwhile.
+ *
+ * <p><b>Runs of slices.</b> Each worker is a {@link SliceRun}: its slices may defer their
+ * arrivals at barriers to it ({@link #currentRun}). A runner flushes it after every
+ * {@value #CHUNK} slices, when it finds the queue empty (then looks again, as the flush may have
+ * tripped a barrier) and before its agent blocks in a primitive. A runner that finds nothing to do
+ * while another runs waits a moment (up to {@value #SPIN_NANOS} ns) for the wave that one may queue
+ * before it stops, which would leave its worker to be woken again.
  */
 public final class PoolScheduler implements Scheduler {
 
     private static final int STEPS_PER_SLICE = 128;
+    /**
+     * Slices a runner runs between two flushes of its run, and the agents it claims of a batch at
+     * once: small enough that two runners share a wave of a few hundred agents evenly.
+     */
+    private static final int CHUNK = 32;
+    /** How long a runner that ran out of work waits for another runner's trip before it stops. */
+    private static final long SPIN_NANOS = 100_000;
 
     private final ForkJoinPool pool;
     private final int workers;
     private final ScheduledThreadPoolExecutor timer;
-    private final ConcurrentLinkedQueue<AgentTask> runQueue = new ConcurrentLinkedQueue<>();
+    /** {@link AgentTask}s, {@link RunBatch}es and {@link WokenBatch}es, in the order they were made runnable. */
+    private final ConcurrentLinkedQueue<Object> runQueue = new ConcurrentLinkedQueue<>();
+    /** The runs of the pool's live workers, whose home queues hold the rest of the runnable work. */
+    private final List<SliceRun> runs = new CopyOnWriteArrayList<>();
     /** Runners submitted and not blocked in a primitive: at most {@link #workers} are started. */
     private final AtomicInteger runners = new AtomicInteger();
     private final Runnable runner = this::drainRunQueue;
@@ -54,6 +73,7 @@ public final class PoolScheduler implements Scheduler {
         AtomicInteger count = new AtomicInteger();
         ForkJoinPool.ForkJoinWorkerThreadFactory factory = forkJoinPool -> {
             Worker thread = new Worker(forkJoinPool, this);
+            runs.add(thread.run);
             thread.setName("masl-worker-" + count.incrementAndGet());
             thread.setDaemon(true);
             return thread;
@@ -74,18 +94,23 @@ public final class PoolScheduler implements Scheduler {
         startRunnerIfNeeded();
     }
 
-    /** Appends the whole wave to the run queue at once, then starts the runners it needs. */
+    /** Appends the whole wave to the run queue as one item, then starts the runners it needs. */
     @Override
     public void scheduleAll(List<? extends AgentTask> agents) {
         if (agents.isEmpty()) {
             return;
         }
-        runQueue.addAll(agents);
-        int wanted = Math.min(workers, agents.size());
+        runQueue.add(agents.size() == 1 ? agents.get(0) : new RunBatch(agents));
+        int wanted = Math.min(workers, (agents.size() + CHUNK - 1) / CHUNK);
         int started = 0;
         while (started < wanted && startRunnerIfNeeded()) {
             started++;
         }
+    }
+
+    @Override
+    public SliceRun currentRun() {
+        return Thread.currentThread() instanceof Worker worker && worker.scheduler == this ? worker.run : null;
     }
 
     /** Starts a runner unless {@link #workers} are running already; true if it started one. */
@@ -112,18 +137,175 @@ public final class PoolScheduler implements Scheduler {
     }
 
     private void drainRunQueue() {
+        SliceRun run = ((Worker) Thread.currentThread()).run;
         do {
             try {
-                AgentTask agent;
-                while (!shutDown && (agent = runQueue.poll()) != null) {
-                    agent.runSlice();
-                }
+                runUntilEmpty(run);
             } finally {
-                // Also when a slice throws (a runtime bug): the count must not keep a dead runner.
-                runners.decrementAndGet();
+                // Also when a slice throws (a runtime bug): no deferred arrival is left behind, and
+                // the count must not keep a dead runner.
+                try {
+                    run.flush();
+                } finally {
+                    runners.decrementAndGet();
+                }
             }
             // An agent queued after the last poll saw this runner still counted and started none.
-        } while (!runQueue.isEmpty() && !shutDown && claimRunner());
+        } while (hasWork() && !shutDown && claimRunner());
+    }
+
+    /**
+     * Runs slices until no queue has work and the run has nothing left to flush: first the batches
+     * of its own home queue, then the common queue's head, then another worker's home batch.
+     */
+    private void runUntilEmpty(SliceRun run) {
+        int sinceFlush = 0;
+        while (!shutDown) {
+            WokenBatch own = run.homeQueue.poll();
+            Object head;
+            if (own != null) {
+                sinceFlush += runWoken(own, run);
+            } else if ((head = runQueue.peek()) != null) {
+                if (head instanceof RunBatch batch) {
+                    sinceFlush += runChunk(batch);
+                } else if (head instanceof WokenBatch batch) {
+                    sinceFlush += runQueue.remove(batch) ? runWoken(batch, run) : 0;
+                } else {
+                    sinceFlush += runAlone((AgentTask) head);
+                }
+            } else {
+                WokenBatch stolen = stealFrom(run);
+                if (stolen != null) {
+                    sinceFlush += runWoken(stolen, run);
+                } else {
+                    if (!run.flush() && !awaitAnotherRunnersWork(run)) {
+                        return;
+                    }
+                    sinceFlush = 0;
+                }
+            }
+            if (sinceFlush >= CHUNK) {
+                run.flush();
+                sinceFlush = 0;
+            }
+        }
+    }
+
+    /** A batch of another worker's home queue, or null if none has one. */
+    private WokenBatch stealFrom(SliceRun thief) {
+        for (SliceRun other : runs) {
+            if (other != thief) {
+                WokenBatch batch = other.homeQueue.poll();
+                if (batch != null) {
+                    return batch;
+                }
+            }
+        }
+        return null;
+    }
+
+    /** Whether any queue, common or home, holds work. */
+    private boolean hasWork() {
+        if (!runQueue.isEmpty()) {
+            return true;
+        }
+        for (SliceRun run : runs) {
+            if (!run.homeQueue.isEmpty()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * With the queue empty, while the agents this runner ran wait at a barrier for agents another
+     * runner is running (lock-step), spins a moment for the trip that will queue the next wave: a
+     * worker that went idle would cost a wake-up of its thread per step. Nothing else makes a
+     * runner spin: agents that wait for an answer, a release or a change may wait long. True if
+     * work came, false if the runner should stop.
+     */
+    private boolean awaitAnotherRunnersWork(SliceRun run) {
+        long deadline = System.nanoTime() + SPIN_NANOS;
+        while (runners.get() > 1 && !shutDown && run.awaitsOthers()) {
+            for (int i = 0; i < 64; i++) {
+                if (hasWork()) {
+                    return true;
+                }
+                Thread.onSpinWait();
+            }
+            if (System.nanoTime() - deadline > 0) {
+                return false;
+            }
+        }
+        return hasWork();
+    }
+
+    /** Claims a chunk of the batch at the head of the queue and runs it; returns how many slices it ran. */
+    private int runChunk(RunBatch batch) {
+        int from = batch.claim(CHUNK);
+        int to = Math.min(from + CHUNK, batch.size());
+        if (to == batch.size()) {
+            // The last chunk is claimed: what was queued after the batch may start, on another runner.
+            runQueue.remove(batch);
+        }
+        for (int i = from; i < to; i++) {
+            batch.get(i).runSlice();
+        }
+        return to - from;
+    }
+
+    /** Wakes the agents of a batch this runner has taken and runs their slices; returns how many. */
+    private int runWoken(WokenBatch batch, SliceRun run) {
+        List<AgentTask> woken = run.woken;
+        try {
+            batch.wake(woken);
+            int slices = woken.size();
+            for (int i = 0; i < slices; i++) {
+                woken.get(i).runSlice();
+            }
+            return slices;
+        } finally {
+            woken.clear();
+        }
+    }
+
+    /**
+     * Queues the batch on its home worker, whose runner takes it first (the agents' state is still
+     * in that core's cache), or on the common queue if it has no home in this pool.
+     */
+    @Override
+    public void scheduleWoken(WokenBatch batch) {
+        SliceRun home = batch.home();
+        if (home != null && runs.contains(home)) {
+            home.homeQueue.add(batch);
+            if (home.closed) {
+                moveToCommonQueue(home);
+            }
+        } else {
+            runQueue.add(batch);
+        }
+        startRunnerIfNeeded();
+    }
+
+    /**
+     * Moves what a closed run's home queue holds to the common queue. Both the worker that closes
+     * it and a {@link #scheduleWoken} that finds it closed after adding call this, so nothing
+     * queued there is left behind.
+     */
+    private void moveToCommonQueue(SliceRun closed) {
+        WokenBatch batch;
+        while ((batch = closed.homeQueue.poll()) != null) {
+            runQueue.add(batch);
+        }
+    }
+
+    /** Takes the agent at the head of the queue, unless another runner did, and runs its slice. */
+    private int runAlone(AgentTask agent) {
+        if (!runQueue.remove(agent)) {
+            return 0;
+        }
+        agent.runSlice();
+        return 1;
     }
 
     /** Counts the calling runner again, if fewer than {@link #workers} are counted. */
@@ -142,7 +324,7 @@ public final class PoolScheduler implements Scheduler {
     /** The current runner is about to block in a primitive: another may take over the queue. */
     private void runnerBlocks() {
         runners.decrementAndGet();
-        if (!runQueue.isEmpty()) {
+        if (hasWork()) {
             startRunnerIfNeeded();
         }
     }
@@ -156,6 +338,8 @@ public final class PoolScheduler implements Scheduler {
     static void blocking(boolean starts) {
         if (Thread.currentThread() instanceof Worker worker) {
             if (starts) {
+                // Agents whose arrivals the run holds must not wait for however long this blocks.
+                worker.run.flush();
                 worker.scheduler.runnerBlocks();
             } else {
                 worker.scheduler.runnerUnblocked();
@@ -188,13 +372,25 @@ public final class PoolScheduler implements Scheduler {
         };
     }
 
-    /** A worker of one scheduler's pool: lets {@link Blocking} find the runner it runs. */
+    /** A worker of one scheduler's pool: lets {@link Blocking} find the runner it runs, and its run of slices. */
     private static final class Worker extends ForkJoinWorkerThread {
         final PoolScheduler scheduler;
+        final SliceRun run = new SliceRun();
 
         Worker(ForkJoinPool pool, PoolScheduler scheduler) {
             super(pool);
             this.scheduler = scheduler;
+        }
+
+        @Override
+        protected void onTermination(Throwable exception) {
+            run.closed = true;
+            scheduler.moveToCommonQueue(run);
+            scheduler.runs.remove(run);
+            if (!scheduler.runQueue.isEmpty()) {
+                scheduler.startRunnerIfNeeded();
+            }
+            super.onTermination(exception);
         }
     }
 }

@@ -1,5 +1,6 @@
 package masl.runtime.scheduling;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Executor;
 
@@ -44,6 +45,27 @@ public interface Scheduler {
      */
     default void scheduleAll(List<? extends AgentTask> agents) {
         agents.forEach(this::schedule);
+    }
+
+    /**
+     * Makes the agents of a batch that a trip let go runnable: by default wakes them now and
+     * {@link #scheduleAll}s those woken; a scheduler whose threads run slices in runs leaves the
+     * wake-up to the thread that runs them.
+     */
+    default void scheduleWoken(WokenBatch batch) {
+        List<AgentTask> runnable = new ArrayList<>();
+        batch.wake(runnable);
+        scheduleAll(runnable);
+    }
+
+    /**
+     * The run of slices the calling thread is in, to which a slice may defer effects that only
+     * other agents wait for (see {@link SliceRun}); null if the caller is not one of this
+     * scheduler's threads, or if the scheduler defers nothing (the default): every effect then
+     * happens within its slice, as a seeded order needs.
+     */
+    default SliceRun currentRun() {
+        return null;
     }
 
     /**

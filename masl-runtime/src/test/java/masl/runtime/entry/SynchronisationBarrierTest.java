@@ -8,12 +8,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import masl.runtime.Agent;
-import masl.runtime.AgentContext;
-import masl.runtime.AgentProgram;
 import masl.runtime.EntryDefinition;
 import masl.runtime.Mission;
 import masl.runtime.Mode;
-import masl.runtime.testing.TestAgent;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
@@ -28,26 +25,16 @@ class SynchronisationBarrierTest {
     private static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
 
     private SynchronisationBarrier barrier;
-    private final Agent[] agents = new Agent[4];
+    private Agent[] agents;
+    private Mission mission;
     private final List<Agent> letGo = new ArrayList<>();
+    private final List<ArrivalChunk> chunks = new ArrayList<>();
 
     @BeforeEach
     void missionOfFourAgents() {
-        Mission.Builder builder = Mission.builder().main(MAIN);
-        TestAgent[] implementations = new TestAgent[agents.length];
-        for (int i = 0; i < agents.length; i++) {
-            implementations[i] = new TestAgent();
-            builder.agent("a" + i, implementations[i], null, self -> new AgentProgram() {
-                @Override
-                protected void resume(AgentContext ctx) {
-                    ctx.finish();
-                }
-            });
-        }
-        Mission mission = builder.build();
-        for (int i = 0; i < agents.length; i++) {
-            agents[i] = mission.agentOf(implementations[i]);
-        }
+        FinishingAgents built = new FinishingAgents(MAIN, 4);
+        agents = built.agents;
+        mission = built.mission;
         barrier = mission.entry(MAIN).barrier;
     }
 
@@ -58,7 +45,7 @@ class SynchronisationBarrierTest {
         assertEquals(-1, barrier.arrive(agents[0]));
         assertEquals(0, barrier.arrive(agents[2]));
         assertTrue(barrier.completes(0));
-        assertEquals(3, barrier.trip(agents[2], letGo::add));
+        assertEquals(3, barrier.trip(agents[2], letGo::add, chunks::add));
         assertEquals(List.of(agents[1], agents[0]), letGo);
         assertFalse(barrier.completes(0), "phase 0 trips once");
 
@@ -66,7 +53,7 @@ class SynchronisationBarrierTest {
         assertEquals(-1, barrier.arrive(agents[2]));
         assertEquals(-1, barrier.arrive(agents[1]));
         assertEquals(1, barrier.arrive(agents[0]));
-        assertEquals(3, barrier.trip(agents[0], letGo::add));
+        assertEquals(3, barrier.trip(agents[0], letGo::add, chunks::add));
         assertEquals(List.of(agents[2], agents[1]), letGo);
     }
 
@@ -79,7 +66,7 @@ class SynchronisationBarrierTest {
         assertFalse(barrier.completes(0), "the completing arrival stays parked: agent 2 joined first");
         assertEquals(0, barrier.arrive(agents[2]));
         assertTrue(barrier.completes(0));
-        assertEquals(3, barrier.trip(agents[2], letGo::add));
+        assertEquals(3, barrier.trip(agents[2], letGo::add, chunks::add));
         assertEquals(List.of(agents[0], agents[1]), letGo);
     }
 
@@ -91,7 +78,7 @@ class SynchronisationBarrierTest {
         barrier.addParticipant();
         barrier.removeParticipant(agents[2]);
         assertTrue(barrier.isComplete());
-        assertEquals(2, barrier.trip(null, letGo::add));
+        assertEquals(2, barrier.trip(null, letGo::add, chunks::add));
         assertEquals(List.of(agents[0], agents[1]), letGo, "the completing arrival is woken too");
         assertFalse(barrier.completes(0), "and finds its phase tripped");
     }
@@ -104,7 +91,7 @@ class SynchronisationBarrierTest {
         assertFalse(barrier.isComplete());
         barrier.removeParticipant(agents[2]);
         assertTrue(barrier.isComplete());
-        assertEquals(2, barrier.trip(null, letGo::add));
+        assertEquals(2, barrier.trip(null, letGo::add, chunks::add));
         assertEquals(List.of(agents[0], agents[1]), letGo);
     }
 
@@ -113,11 +100,11 @@ class SynchronisationBarrierTest {
         participants(2);
         barrier.arrive(agents[0]);
         barrier.arrive(agents[1]);
-        barrier.trip(agents[1], letGo::add);
+        barrier.trip(agents[1], letGo::add, chunks::add);
         barrier.removeParticipant(agents[0]);
         assertFalse(barrier.isComplete(), "agent 1 has not arrived in phase 1");
         assertEquals(1, barrier.arrive(agents[1]));
-        assertEquals(1, barrier.trip(agents[1], letGo::add));
+        assertEquals(1, barrier.trip(agents[1], letGo::add, chunks::add));
     }
 
     @Test
@@ -127,7 +114,7 @@ class SynchronisationBarrierTest {
         barrier.removeParticipant(agents[0]);
         assertEquals(-1, barrier.arrive(agents[1]));
         assertEquals(0, barrier.arrive(agents[2]));
-        assertEquals(2, barrier.trip(agents[2], letGo::add));
+        assertEquals(2, barrier.trip(agents[2], letGo::add, chunks::add));
     }
 
     @Test
@@ -135,7 +122,7 @@ class SynchronisationBarrierTest {
         participants(1);
         barrier.removeParticipant(agents[0]);
         assertFalse(barrier.isComplete());
-        assertThrows(IllegalStateException.class, () -> barrier.trip(null, letGo::add));
+        assertThrows(IllegalStateException.class, () -> barrier.trip(null, letGo::add, chunks::add));
     }
 
     @Test
@@ -143,6 +130,47 @@ class SynchronisationBarrierTest {
         participants(1);
         barrier.arrive(agents[0]);
         assertThrows(IllegalStateException.class, () -> barrier.arrive(agents[1]));
+    }
+
+    @Test
+    void arrivalsPublishedTogetherCountAsManyAndTheTripLetsTheirChunkGoWhole() {
+        participants(4);
+        assertEquals(-1, barrier.arrive(agents[3]));
+        ArrivalChunk first = chunk(agents[0], agents[2]);
+        assertEquals(-1, barrier.arriveAll(first));
+        assertFalse(barrier.isComplete(), "agent 1 has not arrived");
+        ArrivalChunk second = chunk(agents[1]);
+        assertEquals(0, barrier.arriveAll(second));
+        assertEquals(4, barrier.trip(null, letGo::add, chunks::add));
+        assertEquals(List.of(agents[3]), letGo);
+        assertEquals(List.of(first, second), chunks, "in the order they were published");
+        assertEquals(agents[2], first.first.nextArrival, "the chunk keeps its arrival order");
+        assertFalse(barrier.completes(0), "phase 0 trips once");
+    }
+
+    @Test
+    void anAgentThatDiesAfterItsArrivalWasPublishedWithOthersKeepsItCounted() {
+        participants(3);
+        barrier.arriveAll(chunk(agents[0], agents[1]));
+        barrier.removeParticipant(agents[1]);
+        assertEquals(0, barrier.arrive(agents[2]));
+        assertEquals(2, barrier.trip(agents[2], letGo::add, chunks::add));
+        assertEquals(1, chunks.size());
+    }
+
+    @Test
+    void morePublishedArrivalsThanUnarrivedParticipantsIsARuntimeBug() {
+        participants(2);
+        barrier.arrive(agents[0]);
+        assertThrows(IllegalStateException.class, () -> barrier.arriveAll(chunk(agents[1], agents[2])));
+    }
+
+    /** Links agents given in arrival order into a chunk, as an ArrivalCombiner does. */
+    private ArrivalChunk chunk(Agent... inArrivalOrder) {
+        for (int i = 0; i < inArrivalOrder.length; i++) {
+            inArrivalOrder[i].nextArrival = i + 1 < inArrivalOrder.length ? inArrivalOrder[i + 1] : null;
+        }
+        return new ArrivalChunk(inArrivalOrder[0], inArrivalOrder.length, null, mission);
     }
 
     private void participants(int count) {

@@ -1,0 +1,95 @@
+package masl.runtime.entry;
+
+import masl.runtime.Agent;
+import masl.runtime.Mission;
+import masl.runtime.scheduling.SliceRun;
+
+/**
+ * The arrivals at synchronisation barriers that the slices run by one scheduler thread defer to
+ * it ({@link SliceRun}): published together, one push and one count for all the arrivals at one
+ * barrier since the last flush, instead of two contended atomic updates per agent. In lock-step,
+ * where every agent arrives once per step, that is most of the cost of a step the threads would
+ * otherwise pay to each other.
+ *
+ * <p>Arrivals at one barrier collect in arrival order; an arrival at another barrier flushes those
+ * first. An agent whose arrival waits here is parked, and stays a participant: nothing but its own
+ * program removes a participant that is not held by an entry or exit barrier, so the phase cannot
+ * trip without it, and the arrival counts in the phase it was made in. The flush that completes the
+ * phase trips it, as a membership change does, waking every arrived agent.
+ *
+ * <p>Deadlock watchdog ({@link Mission}): from the first arrival held to the end of the flush, a
+ * wake-up is pending: the parked agents look idle, but the flush may trip their barrier.
+ *
+ * <p>Confined to its thread.
+ */
+final class ArrivalCombiner implements SliceRun.Deferred {
+
+    private final EntryCoordinator coordinator;
+    private final Mission mission;
+    private final SliceRun run;
+    private SynchronisationBarrier barrier;
+    /** The earliest arrival held, linked by {@link Agent#nextArrival} up to the latest; null if none. */
+    private Agent first;
+    private Agent last;
+    private int count;
+    /** The barrier of the latest publication that completed no phase, and that phase; null if none. */
+    private SynchronisationBarrier awaited;
+    private int awaitedPhase;
+
+    ArrivalCombiner(EntryCoordinator coordinator, Mission mission, SliceRun run) {
+        this.coordinator = coordinator;
+        this.mission = mission;
+        this.run = run;
+    }
+
+    /** Holds the arrival of {@code agent}, which has issued the ticket of its park, at {@code at}. */
+    void arrive(Agent agent, SynchronisationBarrier at) {
+        if (count > 0 && at != barrier) {
+            flush();
+        }
+        if (count == 0) {
+            // Before the agent turns PARKED: the watchdog must not take it for idle for good.
+            mission.outsideWakeUpStarted();
+            barrier = at;
+            first = agent;
+        } else {
+            last.nextArrival = agent;
+        }
+        agent.nextArrival = null;
+        last = agent;
+        count++;
+    }
+
+    @Override
+    public boolean flush() {
+        if (count == 0) {
+            return false;
+        }
+        SynchronisationBarrier arrivedAt = barrier;
+        ArrivalChunk chunk = new ArrivalChunk(first, count, run, mission);
+        barrier = null;
+        last = null;
+        first = null;
+        count = 0;
+        try {
+            // The phase cannot trip before this publication: the agents held here have not arrived.
+            int phase = arrivedAt.currentPhase();
+            int completedPhase = arrivedAt.arriveAll(chunk);
+            if (completedPhase >= 0) {
+                awaited = null;
+                coordinator.tripCompleted(arrivedAt, completedPhase);
+            } else {
+                awaited = arrivedAt;
+                awaitedPhase = phase;
+            }
+        } finally {
+            mission.outsideWakeUpEnded();
+        }
+        return true;
+    }
+
+    @Override
+    public boolean awaitsOthers() {
+        return awaited != null && awaited.inPhase(awaitedPhase);
+    }
+}

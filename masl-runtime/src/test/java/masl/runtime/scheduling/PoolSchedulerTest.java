@@ -1,0 +1,196 @@
+package masl.runtime.scheduling;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.IntStream;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * The pool's run queues and runs of slices, on one worker, where the order of slices is the
+ * queues': a wave is one item that keeps its place, a worker's home batches come first, and what
+ * slices defer to the run is done after a chunk of slices, when the queue is empty, and before a
+ * slice blocks; and on two, where a busy worker's home batch is not left waiting.
+ */
+@Timeout(60)
+class PoolSchedulerTest {
+
+    private final PoolScheduler scheduler = new PoolScheduler(1);
+    private final CountDownLatch gateOpen = new CountDownLatch(1);
+    private final List<Integer> ran = new CopyOnWriteArrayList<>();
+
+    @AfterEach
+    void shutDown() {
+        scheduler.shutdown();
+    }
+
+    @Test
+    void aWaveRunsInItsOrderBeforeWhatIsScheduledAfterIt() throws InterruptedException {
+        CountDownLatch last = new CountDownLatch(1);
+        scheduler.schedule(task(-1, this::awaitGate));
+        scheduler.scheduleAll(IntStream.range(0, 100).mapToObj(id -> task(id, () -> { })).toList());
+        scheduler.schedule(task(100, last::countDown));
+        gateOpen.countDown();
+
+        assertTrue(last.await(20, TimeUnit.SECONDS));
+        assertEquals(IntStream.rangeClosed(-1, 100).boxed().toList(), ran);
+    }
+
+    @Test
+    void theRunIsFlushedAfterAChunkOfSlicesAndWhenTheQueueIsEmpty() throws InterruptedException {
+        Counting deferred = new Counting(100);
+        scheduler.schedule(task(-1, this::awaitGate));
+        scheduler.scheduleAll(IntStream.range(0, 100).mapToObj(id -> task(id, () -> defer(deferred))).toList());
+        gateOpen.countDown();
+
+        assertTrue(deferred.allFlushed.await(20, TimeUnit.SECONDS));
+        assertTrue(deferred.flushes.stream().allMatch(held -> held <= 32), "flushed every 32 slices: " + deferred.flushes);
+        assertEquals(100, deferred.flushes.stream().mapToInt(Integer::intValue).sum());
+    }
+
+    @Test
+    void aSliceAboutToBlockFlushesWhatTheSlicesBeforeItDeferred() throws Exception {
+        Counting deferred = new Counting(1);
+        CountDownLatch blocked = new CountDownLatch(1);
+        List<Boolean> flushedFirst = new ArrayList<>();
+        scheduler.scheduleAll(List.of(
+                task(0, () -> defer(deferred)),
+                task(1, () -> {
+                    try {
+                        flushedFirst.add(Blocking.call(() -> deferred.allFlushed.await(20, TimeUnit.SECONDS)));
+                    } catch (Exception e) {
+                        throw new IllegalStateException(e);
+                    }
+                    blocked.countDown();
+                })));
+
+        assertTrue(blocked.await(30, TimeUnit.SECONDS));
+        assertEquals(List.of(true), flushedFirst, "the only worker blocked, yet the deferred arrival was done");
+    }
+
+    @Test
+    void aWorkerRunsTheBatchesOfItsHomeQueueBeforeTheCommonQueue() throws InterruptedException {
+        CountDownLatch last = new CountDownLatch(1);
+        List<SliceRun> gatedRun = new CopyOnWriteArrayList<>();
+        CountDownLatch gated = new CountDownLatch(1);
+        scheduler.schedule(task(-1, () -> {
+            gatedRun.add(scheduler.currentRun());
+            gated.countDown();
+            awaitGate();
+        }));
+        assertTrue(gated.await(20, TimeUnit.SECONDS));
+        scheduler.schedule(task(0, last::countDown));
+        scheduler.scheduleWoken(batch(gatedRun.get(0), task(1, () -> { })));
+        gateOpen.countDown();
+
+        assertTrue(last.await(20, TimeUnit.SECONDS));
+        assertEquals(List.of(-1, 1, 0), ran);
+    }
+
+    @Test
+    void aBatchWhoseHomeWorkerIsBusyIsRunByAnother() throws InterruptedException {
+        PoolScheduler two = new PoolScheduler(2);
+        try {
+            List<SliceRun> busyRun = new CopyOnWriteArrayList<>();
+            CountDownLatch busy = new CountDownLatch(1);
+            CountDownLatch ranElsewhere = new CountDownLatch(1);
+            two.schedule(task(0, () -> {
+                busyRun.add(two.currentRun());
+                busy.countDown();
+                awaitGate();
+            }));
+            assertTrue(busy.await(20, TimeUnit.SECONDS));
+            two.scheduleWoken(batch(busyRun.get(0), task(1, ranElsewhere::countDown)));
+
+            assertTrue(ranElsewhere.await(20, TimeUnit.SECONDS), "the other worker took the batch");
+        } finally {
+            gateOpen.countDown();
+            two.shutdown();
+        }
+    }
+
+    @Test
+    void noRunOutsideTheSchedulersThreads() {
+        assertNull(scheduler.currentRun());
+    }
+
+    private void defer(Counting counting) {
+        Counting deferred = (Counting) scheduler.currentRun().deferred(run -> counting);
+        deferred.held++;
+    }
+
+    private void awaitGate() {
+        try {
+            assertTrue(gateOpen.await(20, TimeUnit.SECONDS));
+        } catch (InterruptedException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    private AgentTask task(int id, Runnable slice) {
+        return new AgentTask() {
+            @Override
+            public int id() {
+                return id;
+            }
+
+            @Override
+            public void runSlice() {
+                ran.add(id);
+                slice.run();
+            }
+        };
+    }
+
+    /** A batch of tasks, woken as they are (nothing to wake), at home in {@code home}. */
+    private static WokenBatch batch(SliceRun home, AgentTask... tasks) {
+        return new WokenBatch() {
+            @Override
+            public void wake(List<AgentTask> runnable) {
+                runnable.addAll(List.of(tasks));
+            }
+
+            @Override
+            public SliceRun home() {
+                return home;
+            }
+        };
+    }
+
+    /** Deferred work that counts what each flush found held. */
+    private static final class Counting implements SliceRun.Deferred {
+        final List<Integer> flushes = new CopyOnWriteArrayList<>();
+        final CountDownLatch allFlushed;
+        int held;
+
+        Counting(int expected) {
+            allFlushed = new CountDownLatch(expected);
+        }
+
+        @Override
+        public boolean flush() {
+            if (held == 0) {
+                return false;
+            }
+            flushes.add(held);
+            for (int i = 0; i < held; i++) {
+                allFlushed.countDown();
+            }
+            held = 0;
+            return true;
+        }
+
+        @Override
+        public boolean awaitsOthers() {
+            return false;
+        }
+    }
+}
