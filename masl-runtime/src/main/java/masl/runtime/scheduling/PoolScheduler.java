@@ -10,6 +10,7 @@ import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.locks.LockSupport;
 
 /**
  * Runs agents as tasks on a small {@link ForkJoinPool} (one worker per core by default): the
@@ -20,22 +21,33 @@ import java.util.concurrent.atomic.AtomicInteger;
  * <p><b>Fairness.</b> Runnable agents wait in one FIFO run queue. Handing agents to the pool as
  * tasks of their own would not be fair: a worker runs the tasks it submitted itself before
  * anything submitted from outside, so agents that keep waking each other (or a loop that yields)
- * could starve the agents still waiting for their first slice.
+ * could starve the agents still waiting for their first slice. Each worker also has a <em>home
+ * queue</em> of chunks of agents it parked itself at a barrier, let go by the trip
+ * ({@link #scheduleWoken}), which it runs first; those return once per trip, so the common queue
+ * waits at most for the current step's chunks, and a worker with nothing else takes another's.
  *
  * <p><b>Runners.</b> The pool does not get a task per slice: at most one <em>runner</em> per
- * worker drains the run queue, running the agent at its head until the queue is empty. So making
- * an agent runnable costs a queue node, not a pool task and a wake-up of an idle worker, and a
- * barrier trip hands its whole wave over as one item ({@link #scheduleAll}, a {@link RunBatch}),
- * which the runners share a chunk of {@value #CHUNK} agents at a time. A runner whose agent blocks
- * in a primitive ({@link Blocking}) stops counting while it blocks, so another runner takes over
- * the queue on the worker the pool adds meanwhile.
+ * worker drains the queues, running the agent at the head until they are empty. So making an
+ * agent runnable costs a queue node, not a pool task, and a barrier trip hands its whole wave over
+ * as one item ({@link #scheduleAll}, a {@link RunBatch}), which the runners share a chunk of
+ * {@value #CHUNK} agents at a time. A runner with nothing to do waits idle in its task, parked,
+ * until new work wakes it: the pool's own hand-over of a runner task from a busy worker to an idle
+ * one was seen to leave the task queued and the idle worker asleep for whole runs (JDK 17), with
+ * one core doing a lock-step mission's work alone. Work queued from outside the runners, or as a
+ * wave, wakes an idle runner; an agent that a runner's own slice makes runnable is taken by that
+ * runner after the slice, which wakes another only if more work waits then, so agents that take
+ * turns (invocations, events) cost no thread wake-up. A runner whose agent blocks in a primitive
+ * ({@link Blocking}) stops counting while it blocks, so another runner takes over the queues on the
+ * worker the pool adds meanwhile; one counted above {@link #workers} once it returns ends when it
+ * next runs out of work.
  *
  * <p><b>Runs of slices.</b> Each worker is a {@link SliceRun}: its slices may defer their
  * arrivals at barriers to it ({@link #currentRun}). A runner flushes it after every
- * {@value #CHUNK} slices, when it finds the queue empty (then looks again, as the flush may have
- * tripped a barrier) and before its agent blocks in a primitive. A runner that finds nothing to do
- * while another runs waits a moment (up to {@value #SPIN_NANOS} ns) for the wave that one may queue
- * before it stops, which would leave its worker to be woken again.
+ * {@value #CHUNK} slices, when it finds the queues empty (then looks again, as the flush may have
+ * tripped a barrier) and before its agent blocks in a primitive. A runner whose own agents wait at
+ * a barrier for agents another runner is running spins a moment (up to {@value #SPIN_NANOS} ns) for
+ * the trip before it goes idle: in lock-step, a thread wake-up per step would cost more than the
+ * step. Nothing else makes a runner spin.
  */
 public final class PoolScheduler implements Scheduler {
 
@@ -55,8 +67,10 @@ public final class PoolScheduler implements Scheduler {
     private final ConcurrentLinkedQueue<Object> runQueue = new ConcurrentLinkedQueue<>();
     /** The runs of the pool's live workers, whose home queues hold the rest of the runnable work. */
     private final List<SliceRun> runs = new CopyOnWriteArrayList<>();
-    /** Runners submitted and not blocked in a primitive: at most {@link #workers} are started. */
+    /** Runners submitted and not blocked in a primitive, idle ones included: at most {@link #workers} are started. */
     private final AtomicInteger runners = new AtomicInteger();
+    /** Runners waiting, in their task, for work: woken before any new runner is started. */
+    private final ConcurrentLinkedQueue<Worker> idle = new ConcurrentLinkedQueue<>();
     private final Runnable runner = this::drainRunQueue;
     private volatile boolean shutDown;
 
@@ -91,7 +105,12 @@ public final class PoolScheduler implements Scheduler {
     @Override
     public void schedule(AgentTask agent) {
         runQueue.add(agent);
-        startRunnerIfNeeded();
+        // A runner's own slice hands its agent over: that runner takes it once the slice ends, and
+        // wakes another only if more work waits then (runAlone). Waking one now would cost a
+        // thread wake-up per invocation or event for nothing when the agents take turns.
+        if (!(Thread.currentThread() instanceof Worker worker && worker.scheduler == this && worker.blockedCalls == 0)) {
+            startRunnerIfNeeded();
+        }
     }
 
     /** Appends the whole wave to the run queue as one item, then starts the runners it needs. */
@@ -113,8 +132,16 @@ public final class PoolScheduler implements Scheduler {
         return Thread.currentThread() instanceof Worker worker && worker.scheduler == this ? worker.run : null;
     }
 
-    /** Starts a runner unless {@link #workers} are running already; true if it started one. */
+    /**
+     * Wakes an idle runner, or starts one unless {@link #workers} are counted already; true if it
+     * woke or started one.
+     */
     private boolean startRunnerIfNeeded() {
+        Worker sleeper = idle.poll();
+        if (sleeper != null) {
+            sleeper.wake();
+            return true;
+        }
         while (true) {
             int running = runners.get();
             if (running >= workers || shutDown) {
@@ -136,22 +163,65 @@ public final class PoolScheduler implements Scheduler {
         }
     }
 
+    /**
+     * A runner's life: runs slices while there is work, then waits idle, in its task, until work
+     * wakes it ({@link #startRunnerIfNeeded}); it ends only with the pool, or if it is surplus
+     * (started while another runner was blocked, which has come back).
+     */
     private void drainRunQueue() {
-        SliceRun run = ((Worker) Thread.currentThread()).run;
-        do {
+        Worker self = (Worker) Thread.currentThread();
+        boolean counted = true;
+        try {
+            while (!shutDown) {
+                runUntilEmpty(self.run);
+                if (leaveIfSurplus()) {
+                    counted = false;
+                    return;
+                }
+                idleUntilWoken(self);
+            }
+        } finally {
+            // Also when a slice throws (a runtime bug): no deferred arrival is left behind, and
+            // the count must not keep a dead runner.
             try {
-                runUntilEmpty(run);
+                self.run.flush();
             } finally {
-                // Also when a slice throws (a runtime bug): no deferred arrival is left behind, and
-                // the count must not keep a dead runner.
-                try {
-                    run.flush();
-                } finally {
+                if (counted) {
                     runners.decrementAndGet();
                 }
             }
-            // An agent queued after the last poll saw this runner still counted and started none.
-        } while (hasWork() && !shutDown && claimRunner());
+        }
+    }
+
+    /** Counts the calling runner out if more than {@link #workers} are counted; true if it did. */
+    private boolean leaveIfSurplus() {
+        while (true) {
+            int running = runners.get();
+            if (running <= workers) {
+                return false;
+            }
+            if (runners.compareAndSet(running, running - 1)) {
+                return true;
+            }
+        }
+    }
+
+    /**
+     * Waits, still counted, until {@link #startRunnerIfNeeded} wakes this runner or the pool shuts
+     * down. Work queued after the runner's last look but before it was listed idle found no idle
+     * runner to wake, so the runner looks once more after listing itself, and takes itself back.
+     */
+    private void idleUntilWoken(Worker self) {
+        self.woken = false;
+        idle.add(self);
+        if ((hasWork() || shutDown) && idle.remove(self)) {
+            return;
+        }
+        while (!self.woken && !shutDown) {
+            LockSupport.park(this);
+            // An interrupt left by a slice's code must not turn this wait into a spin.
+            Thread.interrupted();
+        }
     }
 
     /**
@@ -226,7 +296,7 @@ public final class PoolScheduler implements Scheduler {
      */
     private boolean awaitAnotherRunnersWork(SliceRun run) {
         long deadline = System.nanoTime() + SPIN_NANOS;
-        while (runners.get() > 1 && !shutDown && run.awaitsOthers()) {
+        while (runners.get() - idle.size() > 1 && !shutDown && run.awaitsOthers()) {
             for (int i = 0; i < 64; i++) {
                 if (hasWork()) {
                     return true;
@@ -304,21 +374,11 @@ public final class PoolScheduler implements Scheduler {
         if (!runQueue.remove(agent)) {
             return 0;
         }
+        if (!runQueue.isEmpty()) {
+            startRunnerIfNeeded();
+        }
         agent.runSlice();
         return 1;
-    }
-
-    /** Counts the calling runner again, if fewer than {@link #workers} are counted. */
-    private boolean claimRunner() {
-        while (true) {
-            int running = runners.get();
-            if (running >= workers) {
-                return false;
-            }
-            if (runners.compareAndSet(running, running + 1)) {
-                return true;
-            }
-        }
     }
 
     /** The current runner is about to block in a primitive: another may take over the queue. */
@@ -340,8 +400,10 @@ public final class PoolScheduler implements Scheduler {
             if (starts) {
                 // Agents whose arrivals the run holds must not wait for however long this blocks.
                 worker.run.flush();
+                worker.blockedCalls++;
                 worker.scheduler.runnerBlocks();
             } else {
+                worker.blockedCalls--;
                 worker.scheduler.runnerUnblocked();
             }
         }
@@ -360,6 +422,9 @@ public final class PoolScheduler implements Scheduler {
     @Override
     public void shutdown() {
         shutDown = true;
+        for (Worker sleeper : idle) {
+            sleeper.wake();
+        }
         timer.shutdownNow();
         pool.shutdownNow();
     }
@@ -376,10 +441,19 @@ public final class PoolScheduler implements Scheduler {
     private static final class Worker extends ForkJoinWorkerThread {
         final PoolScheduler scheduler;
         final SliceRun run = new SliceRun();
+        /** Set by whoever takes the worker off the idle list to wake it. */
+        volatile boolean woken;
+        /** Blocking calls ({@link Blocking}) the worker is in: its runner is not counted meanwhile. */
+        int blockedCalls;
 
         Worker(ForkJoinPool pool, PoolScheduler scheduler) {
             super(pool);
             this.scheduler = scheduler;
+        }
+
+        void wake() {
+            woken = true;
+            LockSupport.unpark(this);
         }
 
         @Override

@@ -118,6 +118,25 @@ class PoolSchedulerTest {
     }
 
     @Test
+    void anAgentHandedOverByASliceThatThenBlocksIsRunMeanwhile() throws Exception {
+        CountDownLatch handedOverRan = new CountDownLatch(1);
+        List<Boolean> ranWhileBlocked = new CopyOnWriteArrayList<>();
+        CountDownLatch done = new CountDownLatch(1);
+        scheduler.schedule(task(0, () -> {
+            scheduler.schedule(task(1, handedOverRan::countDown));
+            try {
+                ranWhileBlocked.add(Blocking.call(() -> handedOverRan.await(20, TimeUnit.SECONDS)));
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+            done.countDown();
+        }));
+
+        assertTrue(done.await(30, TimeUnit.SECONDS));
+        assertEquals(List.of(true), ranWhileBlocked, "the only runner blocked, yet the agent its slice scheduled ran");
+    }
+
+    @Test
     void noRunOutsideTheSchedulersThreads() {
         assertNull(scheduler.currentRun());
     }
