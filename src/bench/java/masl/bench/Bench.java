@@ -27,6 +27,12 @@ public final class Bench {
 
     /** Measurements per figure, after a warm-up: the figure is their median. */
     static final int RUNS = 5;
+    /**
+     * Warm-up runs of each lock-step column (each a quarter of --seconds): MASL's scheduler loop runs
+     * inside one long task per worker, so the JIT compiles it on the stack first and takes 2-3 s of
+     * stepping to settle; one short warm-up run measured that settling, not the steps.
+     */
+    private static final int LOCK_STEP_WARM_UPS = 8;
     private static final int TRANSLATION_WARM_UP = 10;
 
     public static void main(String[] args) throws Exception {
@@ -291,22 +297,26 @@ public final class Bench {
         LockStepRun mason = MasonLockStep.schedule();
         LockStepRun masonSequence = MasonLockStep.sequence();
         System.out.println("1. Lock-step: N agents in one synchronous block, steps per second (one barrier trip = one step),");
-        System.out.println("   timed from the end of the first step to the end of the last (start-up left out), median of " + RUNS + ";");
+        System.out.println("   timed from the end of the first step to the end of the last (start-up left out), median of " + RUNS + ",");
+        System.out.println("   each run about a quarter of --seconds long at the rate a first short run of its column showed, after "
+                + LOCK_STEP_WARM_UPS + " warm-up runs;");
         System.out.println("   then steps per second of process CPU time over those runs (every thread of the JVM, start-up included),");
         System.out.println("   which other jobs on the machine change much less than elapsed time");
         System.out.printf(Locale.ROOT, "%8s | %12s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s || %12s | %12s | %11s%n",
                 "N", "MASL (pool)", "2-thr pool", "thr+Phaser", "MASL thr", "MASL/pool", "MASL/threads",
                 "MASL cpu", "pool cpu", "MASL/pool", "MASON Sched", "MASON Seq", "MASL/MASON");
         for (int agents : options.sizes) {
-            int steps = stepsFor(agents, options.seconds);
             List<LockStepRun> runs = new ArrayList<>(List.of(masl, pool, mason, masonSequence));
             if (agents <= options.threadLimit) {
                 runs.add(threads);
                 runs.add(maslThreads);
             }
             Map<String, List<Long>> cpuTimes = new LinkedHashMap<>();
+            Map<String, Integer> stepsOf = new LinkedHashMap<>();
             List<Measure> measures = new ArrayList<>();
             for (LockStepRun run : runs) {
+                int steps = calibratedSteps(run, agents, options.seconds);
+                stepsOf.put(run.name(), steps);
                 measures.add(new Measure(run.name(), () -> {
                     // Translating and compiling MASL's program is left out: prepare() does it.
                     Callable<Double> prepared = run.prepare(agents, steps);
@@ -316,15 +326,15 @@ public final class Bench {
                     return rate;
                 }));
             }
-            Map<String, double[]> figures = interleaved(RUNS, measures);
+            Map<String, double[]> figures = interleaved(LOCK_STEP_WARM_UPS, RUNS, measures);
             Double maslRate = median(figures.get(masl.name()));
             Double poolRate = median(figures.get(pool.name()));
             Double threadRate = figures.containsKey(threads.name()) ? median(figures.get(threads.name())) : null;
             Double maslThreadRate = figures.containsKey(maslThreads.name()) ? median(figures.get(maslThreads.name())) : null;
             Double masonRate = median(figures.get(mason.name()));
             Double sequenceRate = median(figures.get(masonSequence.name()));
-            double maslCpu = stepsPerCpuSecond(steps, cpuTimes.get(masl.name()));
-            double poolCpu = stepsPerCpuSecond(steps, cpuTimes.get(pool.name()));
+            double maslCpu = stepsPerCpuSecond(stepsOf.get(masl.name()), cpuTimes.get(masl.name()));
+            double poolCpu = stepsPerCpuSecond(stepsOf.get(pool.name()), cpuTimes.get(pool.name()));
             System.out.printf(Locale.ROOT, "%8d | %12s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s || %12s | %12s | %11s%n",
                     agents, rate(maslRate), rate(poolRate), rate(threadRate), rate(maslThreadRate), ratio(maslRate, poolRate),
                     ratio(maslRate, threadRate), rate(maslCpu), rate(poolCpu), ratio(maslCpu, poolCpu),
@@ -341,13 +351,25 @@ public final class Bench {
      * counted in ticks of 10 ms here, too coarse for one short run on a loaded machine.
      */
     private static double stepsPerCpuSecond(int stepsPerRun, List<Long> cpuNanosPerRun) {
-        List<Long> measured = cpuNanosPerRun.subList(1, cpuNanosPerRun.size());
+        List<Long> measured = cpuNanosPerRun.subList(cpuNanosPerRun.size() - RUNS, cpuNanosPerRun.size());
         return (double) stepsPerRun * measured.size() / (measured.stream().mapToLong(Long::longValue).sum() / 1e9);
     }
 
     static long processCpuNanos() {
         return ((com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory.getOperatingSystemMXBean())
                 .getProcessCpuTime();
+    }
+
+    /**
+     * Steps for one run of about a quarter of {@code seconds} at the rate a first run of
+     * {@link #stepsFor} steps showed, never fewer: a run of a few milliseconds measures the start
+     * of a mission and the compiler's warming, not its steps (the pool and MASON step 1,000 agents
+     * 20,000-30,000 times a second, while a thread per agent steps them about 100 times).
+     */
+    private static int calibratedSteps(LockStepRun run, int agents, double seconds) throws Exception {
+        int first = stepsFor(agents, seconds);
+        double rate = run.prepare(agents, first).call();
+        return (int) Math.max(first, Math.min(rate * seconds / 4, 1_000_000));
     }
 
     /** Enough steps for about {@code seconds} at the rates seen on a 2-core machine. */

@@ -1,7 +1,9 @@
 package masl.bench;
 
 import java.time.Duration;
+import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Supplier;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
@@ -23,6 +25,13 @@ import masl.translator.source.SourceFile;
  * Steps are the barrier trips of the mission's trace.
  */
 final class MaslLockStep implements LockStepRun {
+
+    /**
+     * Each program compiled once, its classes shared by every run: a user's JVM runs one mission's
+     * classes, while classes compiled anew for each run would each be compiled again by the JIT,
+     * and would make the runtime's calls into the program megamorphic.
+     */
+    private static final Map<String, MissionLoader> COMPILED = new ConcurrentHashMap<>();
 
     private final String name;
     private final Supplier<Scheduler> scheduler;
@@ -47,7 +56,7 @@ final class MaslLockStep implements LockStepRun {
 
     @Override
     public Callable<Double> prepare(int agents, int steps) throws Exception {
-        MissionLoader program = compile(source(agents, steps));
+        MissionLoader program = COMPILED.computeIfAbsent(source(agents, steps), MaslLockStep::compile);
         StepClock clock = new StepClock();
         Mission mission = program.newMission()
                 .scheduler(scheduler.get())
