@@ -1,9 +1,7 @@
 package masl.bench;
 
 import java.time.Duration;
-import java.util.Map;
 import java.util.concurrent.Callable;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Supplier;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
@@ -26,14 +24,15 @@ import masl.translator.source.SourceFile;
  */
 final class MaslLockStep implements LockStepRun {
 
-    /**
-     * Each program compiled once, its classes shared by every run: a user's JVM runs one mission's
-     * classes, while classes compiled anew for each run would each be compiled again by the JIT,
-     * and would make the runtime's calls into the program megamorphic.
-     */
-    private static final Map<String, MissionLoader> COMPILED = new ConcurrentHashMap<>();
-
     private final String name;
+    /**
+     * The program of the latest row, compiled once and shared by its runs: a user's JVM runs one
+     * mission's classes, while classes compiled anew for each run would each be compiled again by
+     * the JIT, and would make the runtime's calls into the program megamorphic. Only one is kept,
+     * so that no program outlives its row to weigh on the sections after.
+     */
+    private String compiledSource;
+    private MissionLoader compiled;
     private final Supplier<Scheduler> scheduler;
 
     private MaslLockStep(String name, Supplier<Scheduler> scheduler) {
@@ -56,7 +55,7 @@ final class MaslLockStep implements LockStepRun {
 
     @Override
     public Callable<Double> prepare(int agents, int steps) throws Exception {
-        MissionLoader program = COMPILED.computeIfAbsent(source(agents, steps), MaslLockStep::compile);
+        MissionLoader program = compiled(source(agents, steps));
         StepClock clock = new StepClock();
         Mission mission = program.newMission()
                 .scheduler(scheduler.get())
@@ -71,6 +70,15 @@ final class MaslLockStep implements LockStepRun {
             mission.run(Duration.ofMinutes(10)).requireCompleted();
             return clock.stepsPerSecond();
         };
+    }
+
+    private MissionLoader compiled(String source) {
+        if (!source.equals(compiledSource)) {
+            compiled = null;
+            compiled = compile(source);
+            compiledSource = source;
+        }
+        return compiled;
     }
 
     static String source(int agents, int steps) {
