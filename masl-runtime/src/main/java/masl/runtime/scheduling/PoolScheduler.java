@@ -234,6 +234,10 @@ public final class PoolScheduler implements Scheduler {
             WokenBatch own = run.homeQueue.poll();
             Object head;
             if (own != null) {
+                // The common queue would wait for this worker's whole step: another may take it.
+                if (!runQueue.isEmpty()) {
+                    startRunnerIfNeeded();
+                }
                 sinceFlush += runWoken(own, run);
             } else if ((head = runQueue.peek()) != null) {
                 if (head instanceof RunBatch batch) {
