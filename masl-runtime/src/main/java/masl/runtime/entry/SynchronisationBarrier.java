@@ -20,23 +20,24 @@ import masl.runtime.Agent;
  * <p><b>State.</b> One atomic long packs the <em>phase</em> (the number of trips so far, modulo
  * 2<sup>22</sup>), the number of <em>participants</em> and the number of them still
  * <em>unarrived</em> in this phase (21 bits each: at most 2,097,151 participants). Agents that
- * arrived in the phase wait on a lock-free stack linked through the agents themselves
- * ({@link Agent#nextArrival}), so an arrival allocates nothing.
+ * arrived one by one in the phase wait on a lock-free stack linked through the agents themselves
+ * ({@link Agent#nextArrival}), so such an arrival allocates nothing; arrivals published together
+ * wait as chunks ({@link ArrivalChunk}) on a second stack.
  *
  * <p><b>Transitions.</b>
  * <ul>
  * <li><b>Arrive</b> ({@link #arrive}, no lock, by the arriving participant, which has issued the
- *     ticket of its park; or {@link #arriveAll}, for several parked participants at once, by the
- *     thread that ran their slices): push the agents onto the stack, <em>then</em> decrement
- *     unarrived. Every agent counted as arrived is therefore on the stack. The arrival that brings
+ *     ticket of its park; or {@link #arriveAll}, for a chunk of parked participants at once, by the
+ *     thread that ran their slices): push the agent or the chunk onto its stack, <em>then</em>
+ *     decrement unarrived. Every agent counted as arrived is therefore on a stack. The arrival that brings
  *     unarrived to zero has <em>completed</em> the phase; every other one is simply parked.</li>
  * <li><b>Add or remove a participant</b> ({@link #addParticipant}, {@link #removeParticipant},
  *     under the coordinator's lock): participants and unarrived change together, by one, since a
  *     joining or leaving participant has not arrived. The one exception is an agent whose program
  *     died after it arrived: only participants drop, its arrival stays counted.</li>
  * <li><b>Trip</b> ({@link #trip}, under the coordinator's lock, only when unarrived is zero and
- *     participants are not): advance the phase, set unarrived to participants, take the whole
- *     stack and let its agents go in arrival order.</li>
+ *     participants are not): advance the phase, set unarrived to participants, take both stacks
+ *     and let the agents go in arrival order, then the chunks, whole, in publication order.</li>
  * </ul>
  *
  * <p><b>Who trips, exactly once.</b> Trips happen only under the lock, and a trip moves the phase
