@@ -101,16 +101,21 @@ class PoolSchedulerTest {
         try {
             List<SliceRun> busyRun = new CopyOnWriteArrayList<>();
             CountDownLatch busy = new CountDownLatch(1);
+            CountDownLatch busyDone = new CountDownLatch(1);
             CountDownLatch ranElsewhere = new CountDownLatch(1);
             two.schedule(task(0, () -> {
                 busyRun.add(two.currentRun());
                 busy.countDown();
                 awaitGate();
+                busyDone.countDown();
             }));
             assertTrue(busy.await(20, TimeUnit.SECONDS));
             two.scheduleWoken(batch(busyRun.get(0), task(1, ranElsewhere::countDown)));
 
             assertTrue(ranElsewhere.await(20, TimeUnit.SECONDS), "the other worker took the batch");
+            gateOpen.countDown();
+            // Shut down only once the busy slice is over: the pool's shutdown interrupts its workers.
+            assertTrue(busyDone.await(20, TimeUnit.SECONDS));
         } finally {
             gateOpen.countDown();
             two.shutdown();
