@@ -22,6 +22,8 @@ final class ArrivalChunk implements WokenBatch {
     /** The earliest arrival; the latest links to null. */
     final Agent first;
     final int count;
+    /** The phase its agents arrived in, set when the barrier counts them. */
+    int phase;
     private final SliceRun home;
     private final Mission mission;
     /** The chunk published before it, while both wait on the barrier's stack. */

@@ -72,15 +72,13 @@ final class ArrivalCombiner implements SliceRun.Deferred {
         first = null;
         count = 0;
         try {
-            // The phase cannot trip before this publication: the agents held here have not arrived.
-            int phase = arrivedAt.currentPhase();
             int completedPhase = arrivedAt.arriveAll(chunk);
             if (completedPhase >= 0) {
                 awaited = null;
                 coordinator.tripCompleted(arrivedAt, completedPhase);
             } else {
                 awaited = arrivedAt;
-                awaitedPhase = phase;
+                awaitedPhase = chunk.phase;
             }
         } finally {
             mission.outsideWakeUpEnded();

@@ -115,6 +115,7 @@ public final class SynchronisationBarrier {
     int arriveAll(ArrivalChunk chunk) {
         // Participants that have not arrived keep the phase from tripping: it is theirs until published.
         int phase = phase(state.get());
+        chunk.phase = phase;
         for (Agent agent = chunk.first; agent != null; agent = agent.nextArrival) {
             agent.arrivedAt = this;
             agent.arrivalPhase = phase;
@@ -150,11 +151,6 @@ public final class SynchronisationBarrier {
     /** The phase that a state after arrivals shows complete, or -1 if participants remain unarrived. */
     private static int completedPhase(long state) {
         return unarrived(state) == 0 ? phase(state) : -1;
-    }
-
-    /** The current phase; no lock. */
-    int currentPhase() {
-        return phase(state.get());
     }
 
     /** Whether {@code phase} is still the current phase, not tripped; no lock. */
@@ -201,9 +197,10 @@ public final class SynchronisationBarrier {
 
     /**
      * Under the lock, when {@link #isComplete()}: starts the next phase and lets the agents that
-     * arrived go, in arrival order: each is given to {@code letGo} (which wakes it), but
-     * {@code going}, the completing arrival that trips and goes on running (null if a membership
-     * change trips). Returns how many agents went on: the participants.
+     * arrived go, in arrival order: each that arrived by itself is given to {@code letGo} (which
+     * wakes it), but {@code going}, the completing arrival that trips and goes on running (null if
+     * a membership change trips); then each chunk, whole, in publication order, to
+     * {@code letChunkGo}. Returns how many agents went on: the participants.
      */
     int trip(Agent going, Consumer<Agent> letGo, Consumer<ArrivalChunk> letChunkGo) {
         long current = state.get();

@@ -108,7 +108,8 @@ public final class PoolScheduler implements Scheduler {
         // A runner's own slice hands its agent over: that runner takes it once the slice ends, and
         // wakes another only if more work waits then (runAlone). Waking one now would cost a
         // thread wake-up per invocation or event for nothing when the agents take turns.
-        if (!(Thread.currentThread() instanceof Worker worker && worker.scheduler == this && worker.blockedCalls == 0)) {
+        Worker worker = ownWorker();
+        if (worker == null || worker.blockedCalls > 0) {
             startRunnerIfNeeded();
         }
     }
@@ -129,7 +130,20 @@ public final class PoolScheduler implements Scheduler {
 
     @Override
     public SliceRun currentRun() {
-        return Thread.currentThread() instanceof Worker worker && worker.scheduler == this ? worker.run : null;
+        Worker worker = ownWorker();
+        return worker == null ? null : worker.run;
+    }
+
+    /** The calling thread if it is one of this pool's workers, else null. */
+    private Worker ownWorker() {
+        return Thread.currentThread() instanceof Worker worker && worker.scheduler == this ? worker : null;
+    }
+
+    /** Wakes another runner if the common queue holds work, which would otherwise wait for this runner. */
+    private void shareCommonQueue() {
+        if (!runQueue.isEmpty()) {
+            startRunnerIfNeeded();
+        }
     }
 
     /**
@@ -234,10 +248,8 @@ public final class PoolScheduler implements Scheduler {
             WokenBatch own = run.homeQueue.poll();
             Object head;
             if (own != null) {
-                // The common queue would wait for this worker's whole step: another may take it.
-                if (!runQueue.isEmpty()) {
-                    startRunnerIfNeeded();
-                }
+                // The common queue would wait for this worker's whole step.
+                shareCommonQueue();
                 sinceFlush += runWoken(own, run);
             } else if ((head = runQueue.peek()) != null) {
                 if (head instanceof RunBatch batch) {
@@ -345,12 +357,13 @@ public final class PoolScheduler implements Scheduler {
 
     /**
      * Queues the batch on its home worker, whose runner takes it first (the agents' state is still
-     * in that core's cache), or on the common queue if it has no home in this pool.
+     * in that core's cache), or on the common queue if it has no home. A home whose worker has
+     * ended is closed, and what comes to it moves on to the common queue.
      */
     @Override
     public void scheduleWoken(WokenBatch batch) {
         SliceRun home = batch.home();
-        if (home != null && runs.contains(home)) {
+        if (home != null) {
             home.homeQueue.add(batch);
             if (home.closed) {
                 moveToCommonQueue(home);
@@ -378,9 +391,7 @@ public final class PoolScheduler implements Scheduler {
         if (!runQueue.remove(agent)) {
             return 0;
         }
-        if (!runQueue.isEmpty()) {
-            startRunnerIfNeeded();
-        }
+        shareCommonQueue();
         agent.runSlice();
         return 1;
     }
