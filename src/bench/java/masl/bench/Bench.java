@@ -30,9 +30,10 @@ public final class Bench {
     /** Measurements per figure, after a warm-up: the figure is their median. */
     static final int RUNS = 5;
     /**
-     * Warm-up runs of each lock-step column (each a quarter of --seconds): MASL's scheduler loop runs
-     * inside one long task per worker, so the JIT compiles it on the stack first and takes 2-3 s of
-     * stepping to settle; one short warm-up run measured that settling, not the steps.
+     * Warm-up runs of each lock-step column (each a quarter of --seconds): MASL reached its steady
+     * rate only after 2-3 s of stepping (measured, runs of 8,000 steps of 1,000 agents in one JVM:
+     * 12,000-16,000 steps/s in the first runs, 28,000-34,000 from the fourth or fifth); one short
+     * warm-up run measured that settling, not the steps.
      */
     private static final int LOCK_STEP_WARM_UPS = 8;
     private static final int TRANSLATION_WARM_UP = 10;
@@ -300,15 +301,15 @@ public final class Bench {
     }
 
     /**
-     * The lock-step section in a JVM of its own: its minutes of MASON, hand-written pools and MASL
-     * stepping leave the JIT's profiles of shared library code such that the warm translation
-     * measured after them in the same JVM fell from about 95,000 to 55,000-75,000 lines per second.
+     * The lock-step section in a JVM of its own: after its minutes of MASON, hand-written pools and
+     * MASL stepping, the warm translation measured in the same JVM fell from about 95,000 to
+     * 55,000-75,000 lines per second (why was not found).
      */
     private static void lockStepInOwnJvm(Options options) throws Exception {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+        List<String> command = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-D" + OWN_JVM + "=true", "-cp", System.getProperty("java.class.path"), Bench.class.getName(), "--only", "lockstep",
                 "--sizes", options.sizes().stream().map(String::valueOf).collect(Collectors.joining(",")),
-                "--seconds", String.valueOf(options.seconds()), "--thread-limit", String.valueOf(options.threadLimit())));
+                "--seconds", String.valueOf(options.seconds()), "--thread-limit", String.valueOf(options.threadLimit()));
         Process process = new ProcessBuilder(command).inheritIO().start();
         if (process.waitFor() != 0) {
             throw new IllegalStateException("the lock-step section's JVM ended with status " + process.exitValue());
