@@ -1,6 +1,5 @@
 package masl.runtime.entry;
 
-import java.util.List;
 import masl.runtime.Agent;
 import masl.runtime.Mission;
 import masl.runtime.scheduling.AgentTask;
@@ -9,31 +8,43 @@ import masl.runtime.scheduling.WokenBatch;
 
 /**
  * Arrivals at one synchronisation barrier published together by one thread's run of slices
- * ({@link ArrivalCombiner}), in arrival order, linked by {@link Agent#nextArrival} from
- * {@link #first} on. The barrier keeps the chunk as it is, and its trip lets the whole chunk go as
- * one {@link WokenBatch}: the agents are woken by the thread that runs them, preferably the one
- * that ran them before ({@link #home}), where their state still is.
+ * ({@link ArrivalCombiner}), in arrival order. The barrier keeps the chunk as it is, and its trip
+ * lets the whole chunk go as one {@link WokenBatch}: the agents are woken by the thread that runs
+ * them, preferably the one that ran them before ({@link #home}), where their state still is.
+ *
+ * <p>The agents are held in an array made for the chunk, not linked through the agents: an array
+ * that lives one step stays in the young generation, where G1 stores references without a card
+ * mark, while a link between two agents, long-lived and in different regions, costs a card mark
+ * and a refinement scan per agent per step (see {@link WokenBatch#wake}).
  *
  * <p>A chunk's agents are parked at the barrier and only its trip ends their parks, so the ticket
  * each has pending when it is woken is the one of its arrival.
  */
 final class ArrivalChunk implements WokenBatch {
 
-    /** The earliest arrival; the latest links to null. */
-    final Agent first;
+    /** The arrivals in arrival order, in {@code agents[0]} to {@code agents[count - 1]}; after {@link #wake}, the runnable ones. */
+    private final Agent[] agents;
     final int count;
     /** The phase its agents arrived in, set when the barrier counts them. */
     int phase;
     private final SliceRun home;
     private final Mission mission;
+    /** What {@link Agent#warmUp} returned, kept so that its reads are made. */
+    private int warmth;
     /** The chunk published before it, while both wait on the barrier's stack. */
     ArrivalChunk below;
 
-    ArrivalChunk(Agent first, int count, SliceRun home, Mission mission) {
-        this.first = first;
+    /** A chunk of {@code agents[0]} to {@code agents[count - 1]}; it takes the array over. */
+    ArrivalChunk(Agent[] agents, int count, SliceRun home, Mission mission) {
+        this.agents = agents;
         this.count = count;
         this.home = home;
         this.mission = mission;
+    }
+
+    /** The {@code index}th arrival, before {@link #wake}. */
+    Agent arrival(int index) {
+        return agents[index];
     }
 
     @Override
@@ -42,17 +53,26 @@ final class ArrivalChunk implements WokenBatch {
     }
 
     @Override
-    public void wake(List<AgentTask> runnable) {
-        Agent agent = first;
-        while (agent != null) {
-            // Read first: once woken, the agent may arrive again, on another thread.
-            Agent following = agent.nextArrival;
-            agent.nextArrival = null;
+    public int wake() {
+        int warmth = 0;
+        for (int i = 0; i < count; i++) {
+            warmth += agents[i].warmUp();
+        }
+        this.warmth = warmth;
+        int runnable = 0;
+        for (int i = 0; i < count; i++) {
+            Agent agent = agents[i];
+            agents[i] = null;
             if (agent.endPark(agent.pendingTicket()) && agent.leavePark()) {
-                runnable.add(agent);
+                agents[runnable++] = agent;
             }
-            agent = following;
         }
         mission.outsideWakeUpEnded();
+        return runnable;
+    }
+
+    @Override
+    public AgentTask runnable(int index) {
+        return agents[index];
     }
 }

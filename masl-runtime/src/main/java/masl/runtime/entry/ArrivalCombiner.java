@@ -1,5 +1,6 @@
 package masl.runtime.entry;
 
+import java.util.Arrays;
 import masl.runtime.Agent;
 import masl.runtime.Mission;
 import masl.runtime.scheduling.SliceRun;
@@ -24,13 +25,15 @@ import masl.runtime.scheduling.SliceRun;
  */
 final class ArrivalCombiner implements SliceRun.Deferred {
 
+    /** Room for the arrivals of one flush's worth of slices ({@code PoolScheduler} flushes every 32). */
+    private static final int FIRST_CAPACITY = 32;
+
     private final EntryCoordinator coordinator;
     private final Mission mission;
     private final SliceRun run;
     private SynchronisationBarrier barrier;
-    /** The earliest arrival held, linked by {@link Agent#nextArrival} up to the latest; null if none. */
-    private Agent first;
-    private Agent last;
+    /** The arrivals held, in arrival order, in {@code held[0]} to {@code held[count - 1]}; a new array for each chunk. */
+    private Agent[] held;
     private int count;
     /** The barrier of the latest publication that completed no phase, and that phase; null if none. */
     private SynchronisationBarrier awaited;
@@ -51,13 +54,11 @@ final class ArrivalCombiner implements SliceRun.Deferred {
             // Before the agent turns PARKED: the watchdog must not take it for idle for good.
             mission.outsideWakeUpStarted();
             barrier = at;
-            first = agent;
-        } else {
-            last.nextArrival = agent;
+            held = new Agent[FIRST_CAPACITY];
+        } else if (count == held.length) {
+            held = Arrays.copyOf(held, 2 * count);
         }
-        agent.nextArrival = null;
-        last = agent;
-        count++;
+        held[count++] = agent;
     }
 
     @Override
@@ -66,10 +67,9 @@ final class ArrivalCombiner implements SliceRun.Deferred {
             return false;
         }
         SynchronisationBarrier arrivedAt = barrier;
-        ArrivalChunk chunk = new ArrivalChunk(first, count, run, mission);
+        ArrivalChunk chunk = new ArrivalChunk(held, count, run, mission);
         barrier = null;
-        last = null;
-        first = null;
+        held = null;
         count = 0;
         try {
             int completedPhase = arrivedAt.arriveAll(chunk);

@@ -250,19 +250,19 @@ public final class PoolScheduler implements Scheduler {
             if (own != null) {
                 // The common queue would wait for this worker's whole step.
                 shareCommonQueue();
-                sinceFlush += runWoken(own, run);
+                sinceFlush += runWoken(own);
             } else if ((head = runQueue.peek()) != null) {
                 if (head instanceof RunBatch batch) {
                     sinceFlush += runChunk(batch);
                 } else if (head instanceof WokenBatch batch) {
-                    sinceFlush += runQueue.remove(batch) ? runWoken(batch, run) : 0;
+                    sinceFlush += runQueue.remove(batch) ? runWoken(batch) : 0;
                 } else {
                     sinceFlush += runAlone((AgentTask) head);
                 }
             } else {
                 WokenBatch stolen = stealFrom(run);
                 if (stolen != null) {
-                    sinceFlush += runWoken(stolen, run);
+                    sinceFlush += runWoken(stolen);
                 } else {
                     if (!run.flush() && !awaitAnotherRunnersWork(run)) {
                         return;
@@ -341,18 +341,12 @@ public final class PoolScheduler implements Scheduler {
     }
 
     /** Wakes the agents of a batch this runner has taken and runs their slices; returns how many. */
-    private int runWoken(WokenBatch batch, SliceRun run) {
-        List<AgentTask> woken = run.woken;
-        try {
-            batch.wake(woken);
-            int slices = woken.size();
-            for (int i = 0; i < slices; i++) {
-                woken.get(i).runSlice();
-            }
-            return slices;
-        } finally {
-            woken.clear();
+    private int runWoken(WokenBatch batch) {
+        int slices = batch.wake();
+        for (int i = 0; i < slices; i++) {
+            batch.runnable(i).runSlice();
         }
+        return slices;
     }
 
     /**

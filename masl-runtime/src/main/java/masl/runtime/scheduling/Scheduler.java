@@ -53,8 +53,11 @@ public interface Scheduler {
      * wake-up to the thread that runs them.
      */
     default void scheduleWoken(WokenBatch batch) {
-        List<AgentTask> runnable = new ArrayList<>();
-        batch.wake(runnable);
+        int count = batch.wake();
+        List<AgentTask> runnable = new ArrayList<>(count);
+        for (int i = 0; i < count; i++) {
+            runnable.add(batch.runnable(i));
+        }
         scheduleAll(runnable);
     }
 

@@ -1,7 +1,5 @@
 package masl.runtime.scheduling;
 
-import java.util.ArrayList;
-import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.function.Function;
 
@@ -40,8 +38,6 @@ public final class SliceRun {
     }
 
     private Deferred deferred;
-    /** The agents of a {@link WokenBatch} the thread is running, reused from batch to batch. */
-    final List<AgentTask> woken = new ArrayList<>();
     /**
      * Batches whose agents this run ran last, for its thread to run first (a {@link PoolScheduler}
      * worker's); others take them when they have nothing else. Once the thread has ended

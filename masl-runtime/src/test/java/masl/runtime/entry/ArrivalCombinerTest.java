@@ -69,7 +69,35 @@ class ArrivalCombinerTest {
         assertEquals(List.of(agents[1]), letGo);
         assertEquals(1, chunks.size());
         ArrivalChunk chunk = chunks.get(0);
-        assertEquals(List.of(agents[2], agents[0]), List.of(chunk.first, chunk.first.nextArrival));
+        assertEquals(List.of(agents[2], agents[0]), List.of(chunk.arrival(0), chunk.arrival(1)));
         assertEquals(2, chunk.count);
+    }
+
+    @Test
+    void moreArrivalsThanAFlushUsuallyHoldsArePublishedAllInTheirOrder() {
+        FinishingAgents built = new FinishingAgents(MAIN, 70);
+        SynchronisationBarrier big = built.mission.entry(MAIN).barrier;
+        EntryCoordinator coordinator = new EntryCoordinator(built.mission, trace::add, System::nanoTime, new ChangeEpoch());
+        ArrivalCombiner holding = new ArrivalCombiner(coordinator, built.mission, new SliceRun());
+        List<Agent> arrived = new ArrayList<>();
+        for (int i = built.agents.length - 1; i >= 0; i--) {
+            big.addParticipant();
+            if (i > 0) {
+                holding.arrive(built.agents[i], big);
+                arrived.add(built.agents[i]);
+            }
+        }
+        assertTrue(holding.flush());
+        assertEquals(0, big.arrive(built.agents[0]));
+        List<ArrivalChunk> chunks = new ArrayList<>();
+        big.trip(null, agent -> { }, chunks::add);
+        assertEquals(1, chunks.size());
+        ArrivalChunk chunk = chunks.get(0);
+        assertEquals(69, chunk.count);
+        List<Agent> published = new ArrayList<>();
+        for (int i = 0; i < chunk.count; i++) {
+            published.add(chunk.arrival(i));
+        }
+        assertEquals(arrived, published);
     }
 }

@@ -144,7 +144,7 @@ class SynchronisationBarrierTest {
         assertEquals(4, barrier.trip(null, letGo::add, chunks::add));
         assertEquals(List.of(agents[3]), letGo);
         assertEquals(List.of(first, second), chunks, "in the order they were published");
-        assertEquals(agents[2], first.first.nextArrival, "the chunk keeps its arrival order");
+        assertEquals(agents[2], first.arrival(1), "the chunk keeps its arrival order");
         assertFalse(barrier.completes(0), "phase 0 trips once");
     }
 
@@ -165,12 +165,9 @@ class SynchronisationBarrierTest {
         assertThrows(IllegalStateException.class, () -> barrier.arriveAll(chunk(agents[1], agents[2])));
     }
 
-    /** Links agents given in arrival order into a chunk, as an ArrivalCombiner does. */
+    /** A chunk of agents given in arrival order, as an ArrivalCombiner makes it. */
     private ArrivalChunk chunk(Agent... inArrivalOrder) {
-        for (int i = 0; i < inArrivalOrder.length; i++) {
-            inArrivalOrder[i].nextArrival = i + 1 < inArrivalOrder.length ? inArrivalOrder[i + 1] : null;
-        }
-        return new ArrivalChunk(inArrivalOrder[0], inArrivalOrder.length, null, mission);
+        return new ArrivalChunk(inArrivalOrder.clone(), inArrivalOrder.length, null, mission);
     }
 
     private void participants(int count) {

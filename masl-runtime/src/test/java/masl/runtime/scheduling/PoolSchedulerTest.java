@@ -178,8 +178,13 @@ class PoolSchedulerTest {
     private static WokenBatch batch(SliceRun home, AgentTask... tasks) {
         return new WokenBatch() {
             @Override
-            public void wake(List<AgentTask> runnable) {
-                runnable.addAll(List.of(tasks));
+            public int wake() {
+                return tasks.length;
+            }
+
+            @Override
+            public AgentTask runnable(int index) {
+                return tasks[index];
             }
 
             @Override
