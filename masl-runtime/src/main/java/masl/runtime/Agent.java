@@ -349,7 +349,10 @@ public final class Agent implements AgentContext, AgentTask {
      * keeps it (a sum stored in a field) so that the compiler cannot drop the reads.
      */
     public int warmUp() {
-        return program.pc() + memberships.size() + (events.isReacting() ? 1 : 0) + stepsThisSlice
+        // The list is still: others remove only the memberships of agents waiting out of a block
+        // (EntryCoordinator), and one a barrier lets go is active in its innermost block.
+        int innermostActive = memberships.isEmpty() || innermost().status != Membership.Status.ACTIVE ? 0 : 1;
+        return program.pc() + innermostActive + (events.isReacting() ? 1 : 0) + stepsThisSlice
                 + (suspended ? 1 : 0) + (int) progress + (int) run.pendingTicket();
     }
 
