@@ -215,22 +215,27 @@ public final class Bench {
     /** Goal 3 of issue 26: {@link AgentScale}, 100,000 agents in a fresh JVM with the default heap. */
     private static void scale() throws Exception {
         int agents = 100_000;
-        int steps = 200;
+        int steps = 1_000;
         System.out.println("9. Scale: " + String.format(Locale.ROOT, "%,d", agents) + " agents in one synchronous block, "
-                + steps + " steps, a fresh JVM with the default heap (median of 3, " + loadAverage() + ")");
+                + String.format(Locale.ROOT, "%,d", steps) + " steps, a fresh JVM with the default heap (median of 3, "
+                + loadAverage() + ")");
         List<AgentScale.Figures> runs = new ArrayList<>();
         for (int run = 0; run < 3; run++) {
             runs.add(AgentScale.measure(agents, steps));
         }
-        System.out.printf(Locale.ROOT, "%10s | %14s | %14s | %14s | %16s%n", "N", "start", "start (CPU)", "steps / s",
+        String first = "steps / s, 1-" + AgentScale.FIRST_STEPS;
+        String after = "after step " + AgentScale.FIRST_STEPS;
+        System.out.printf(Locale.ROOT, "%10s | %14s | %14s | %18s | %18s | %16s%n", "N", "start", "start (CPU)", first, after,
                 "bytes per agent");
-        System.out.printf(Locale.ROOT, "%10s | %12.2f s | %12.2f s | %14s | %16s%n", String.format(Locale.ROOT, "%,d", agents),
+        System.out.printf(Locale.ROOT, "%10s | %12.2f s | %12.2f s | %18s | %18s | %16s%n", String.format(Locale.ROOT, "%,d", agents),
                 median(runs.stream().mapToDouble(AgentScale.Figures::startSeconds).toArray()),
                 median(runs.stream().mapToDouble(AgentScale.Figures::startCpuSeconds).toArray()),
                 rate(median(runs.stream().mapToDouble(AgentScale.Figures::stepsPerSecond).toArray())),
+                rate(median(runs.stream().mapToDouble(AgentScale.Figures::laterStepsPerSecond).toArray())),
                 rate(median(runs.stream().mapToDouble(AgentScale.Figures::bytesPerAgent).toArray())));
         System.out.println("   (start: the program's text to the end of its first step, translating and javac included;"
-                + " goals: start <= 5 s, >= 100 steps/s)");
+                + " the fresh JVM still compiles the runtime during the first steps;");
+        System.out.println("    goals: start <= 5 s, >= 100 steps/s, a long mission's rate: after step " + AgentScale.FIRST_STEPS + ")");
         System.out.println();
     }
 
