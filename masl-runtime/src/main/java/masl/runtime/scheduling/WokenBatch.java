@@ -1,6 +1,5 @@
 package masl.runtime.scheduling;
 
-
 /**
  * Parked agents let go together whose wake-up is left to the thread that will run them: the
  * thread that lets them go (a barrier trip) hands over the batch without touching each agent, and
