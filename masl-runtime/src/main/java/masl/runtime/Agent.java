@@ -128,8 +128,12 @@ public final class Agent implements AgentContext, AgentTask {
     public boolean departed;
 
     // The agent's latest arrival at a synchronisation barrier (see SynchronisationBarrier): written
-    // by its own slice without the lock, read under the lock by the barrier it arrived at.
-    /** The agent that arrived before it at the same barrier, while it waits on the barrier's stack. */
+    // without the lock by its own slice, or, for an arrival its worker held (ArrivalCombiner), by
+    // that worker when it publishes it; read under the lock by the barrier it arrived at.
+    /**
+     * For an arrival by itself, the agent that arrived before it at the same barrier, while it waits
+     * on the barrier's stack; a published chunk holds its agents in an array of its own.
+     */
     public Agent nextArrival;
     /** The barrier it arrived at last, until it stops taking part in it; null if none. */
     public SynchronisationBarrier arrivedAt;
