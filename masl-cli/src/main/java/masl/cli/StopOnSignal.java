@@ -4,6 +4,7 @@ import java.io.PrintStream;
 import java.time.Duration;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 
 /**
@@ -65,14 +66,27 @@ final class StopOnSignal implements AutoCloseable {
         }
     }
 
-    /** The run is over and reported: a signal from now on is the JVM's alone. */
+    /**
+     * The run is over and reported: a signal from now on is the JVM's alone. If a signal came, never
+     * returns: the JVM is halting with the signal's status.
+     */
     @Override
     public void close() {
         finished.countDown();
         try {
             Runtime.getRuntime().removeShutdownHook(hook);
         } catch (IllegalStateException shuttingDown) {
-            // A signal came: the hook is running and has just been released.
+            // A signal came: the hook is running and has just been released. Once it returns, the JVM
+            // halts with the signal's status (130, 143); a System.exit with the run's own status,
+            // made in the instant between the hooks' end and that halt, would halt it first (seen
+            // once: status 2 after SIGTERM). So this thread waits for the halt.
+            awaitHalt();
+        }
+    }
+
+    private static void awaitHalt() {
+        while (true) {
+            LockSupport.park();
         }
     }
 }
