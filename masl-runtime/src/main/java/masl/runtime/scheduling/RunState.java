@@ -40,7 +40,9 @@ public final class RunState {
     private static final int DONE = 6;
 
     // Fields updated through VarHandles rather than atomic objects of their own: a step reads and
-    // updates both, and one object is one cache line to fetch where three were (issue 26).
+    // updates both, and one object is one cache line to fetch where three were (issue 26). Their
+    // arguments have the field's exact type (0L for the ticket, not 0): a call whose types differ
+    // takes VarHandle's adapting path, a method-handle chain the JIT does not reduce to one CAS.
     private static final VarHandle STATE;
     private static final VarHandle WAKE_TICKET;
 
@@ -155,7 +157,7 @@ public final class RunState {
 
     /** Takes back the pending park {@code ticket}, which nobody has ended: false if someone has. */
     public boolean takeBack(long ticket) {
-        return WAKE_TICKET.compareAndSet(this, ticket, 0);
+        return WAKE_TICKET.compareAndSet(this, ticket, 0L);
     }
 
     /** The ticket of the pending park, or 0 if the agent has none (it is running, not waiting). */
@@ -168,7 +170,7 @@ public final class RunState {
      * that park already ended. The claimant must then call {@link #leavePark()}.
      */
     public boolean endPark(long ticket) {
-        return ticket != 0 && WAKE_TICKET.compareAndSet(this, ticket, 0);
+        return ticket != 0 && WAKE_TICKET.compareAndSet(this, ticket, 0L);
     }
 
     /**
