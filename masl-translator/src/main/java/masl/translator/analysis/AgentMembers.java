@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Optional;
 import java.util.Set;
 import masl.runtime.descriptor.Attribute;
 import masl.runtime.descriptor.Primitive;
@@ -65,7 +64,9 @@ final class AgentMembers {
 
     private List<ImportedType> ordered(ImportedType receiver) {
         List<ImportedType> ordered = new ArrayList<>();
-        Optional.ofNullable(receiver).filter(ImportedType::isLoaded).ifPresent(ordered::add);
+        if (receiver != null && receiver.isLoaded()) {
+            ordered.add(receiver);
+        }
         for (ImportedType type : types) {
             if (type.isLoaded() && !ordered.contains(type)) {
                 ordered.add(type);
@@ -74,7 +75,16 @@ final class AgentMembers {
         return ordered;
     }
 
+    /** The types declaring {@code declarations}, each once, in their order. */
     static List<ImportedType> owners(List<? extends Declared<?>> declarations) {
-        return declarations.stream().map(Declared::owner).distinct().toList();
+        // A loop, not a stream: this runs for every member access, often before the JIT has compiled
+        // it, and a stream pipeline costs the interpreter many calls (issue 26, cold translation).
+        List<ImportedType> owners = new ArrayList<>(declarations.size());
+        for (Declared<?> declaration : declarations) {
+            if (!owners.contains(declaration.owner())) {
+                owners.add(declaration.owner());
+            }
+        }
+        return List.copyOf(owners);
     }
 }

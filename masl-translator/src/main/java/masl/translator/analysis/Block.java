@@ -57,7 +57,11 @@ public final class Block {
 
     /** The child blocks in source order. */
     public List<Block> children() {
-        return sequences.stream().flatMap(sequence -> sequence.blocks().stream()).toList();
+        List<Block> children = new ArrayList<>();
+        for (ESequence sequence : sequences) {
+            children.addAll(sequence.blocks());
+        }
+        return Collections.unmodifiableList(children);
     }
 
     public List<Variable> variables() {

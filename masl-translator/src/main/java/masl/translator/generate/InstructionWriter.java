@@ -292,7 +292,12 @@ final class InstructionWriter {
                     && !queries.mayThrow(expression);
         }
         if (statement instanceof MASLParser.BlockStmtContext block) {
-            return block.block().statement().stream().allMatch(this::isZeroDuration);
+            for (StatementContext inner : block.block().statement()) {
+                if (!isZeroDuration(inner)) {
+                    return false;
+                }
+            }
+            return true;
         }
         if (statement instanceof MASLParser.IfStmtContext ifStmt) {
             return !expressions.suspends(ifStmt.expression()) && isZeroDuration(ifStmt.thenStmt) && (ifStmt.elseStmt == null || isZeroDuration(ifStmt.elseStmt));

@@ -6,7 +6,7 @@ import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.stream.Collectors;
+import java.util.StringJoiner;
 import masl.grammar.MASLParser.StatementContext;
 import masl.grammar.MASLParser;
 import masl.translator.analysis.AnalyzedProgram;
@@ -164,8 +164,11 @@ final class StatementWriter {
             }
         }
         Block last = blocks.get(blocks.size() - 1);
-        cases.place(end, file + ":" + last.tree().getStop().getLine() + ": end of the e-sequence "
-                + blocks.stream().map(Block::name).collect(Collectors.joining(", ", "{", "}")));
+        StringJoiner names = new StringJoiner(", ", "{", "}");
+        for (Block block : blocks) {
+            names.add(block.name());
+        }
+        cases.place(end, file + ":" + last.tree().getStop().getLine() + ": end of the e-sequence " + names);
         cases.suspending("ctx.endOfSequence(" + structure.sequence(sequence) + ")", cases.point());
     }
 
