@@ -50,16 +50,6 @@ public sealed interface MaslType {
 
     /** A primitive Java type ({@code int}, {@code boolean}, …) or {@code void}. */
     record JavaPrimitive(Class<?> type) implements MaslType {
-        @Override
-        public boolean equals(Object o) {
-            return o instanceof JavaPrimitive p && type == p.type;
-        }
-
-        @Override
-        public int hashCode() {
-            return type.hashCode();
-        }
-
         private static final Map<Class<?>, Class<?>> BOXES = Map.of(boolean.class, Boolean.class,
                 byte.class, Byte.class, char.class, Character.class, short.class, Short.class,
                 int.class, Integer.class, long.class, Long.class, float.class, Float.class,
