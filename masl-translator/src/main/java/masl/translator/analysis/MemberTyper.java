@@ -93,6 +93,25 @@ final class MemberTyper {
     }
 
     /**
+     * An attribute read or written through its agent type's name ({@code Worker.LIMIT}): only a static
+     * one belongs to the type; another is each agent's own, read on an agent ({@code w.battery}).
+     */
+    MaslType staticAttribute(ImportedType type, Token name, boolean isWrite, ParserRuleContext access) {
+        MaslType found = attribute(type, name, isWrite, access);
+        if (found == MaslType.ERROR) {
+            return found;
+        }
+        Attribute attribute = agentMembers.attributes(name.getText(), type).get(0).member();
+        if (!attribute.isStatic()) {
+            errors.at(name, name.getText() + " is not a static attribute of " + (type == null ? "an agent type" : type.name())
+                    + ": each agent has its own, used on an agent of that type (a." + name.getText()
+                    + ", or ." + name.getText() + " for the current agent's)");
+            return MaslType.ERROR;
+        }
+        return found;
+    }
+
+    /**
      * An entry member (§6.7).
      *
      * @param arguments the arguments' types, or null for the form without parentheses ({@code e.count})

@@ -162,7 +162,7 @@ final class NameResolver {
             return new MaslType.JavaClass(Class.class);
         }
         if (type instanceof MaslType.AgentRef agentType) {
-            return members.attribute(agentType.type(), name, isWrite, access);
+            return members.staticAttribute(agentType.type(), name, isWrite, access);
         }
         if (type instanceof MaslType.JavaClass javaClass) {
             return members.javaField(javaClass.type(), true, name, isWrite, access);

@@ -47,6 +47,19 @@ class MemberErrorsTest {
     }
 
     @Test
+    void anAgentsOwnAttributeIsNotReadOrWrittenThroughItsType() {
+        analyzeBody("local int b = Khepera.battery;").assertError(7, 23, "battery is not a static attribute of Khepera:"
+                + " each agent has its own, used on an agent of that type (a.battery, or .battery for the current agent's)");
+        analyzeBody("Khepera.battery = 3;").assertError(7, 9, "battery is not a static attribute of Khepera:"
+                + " each agent has its own, used on an agent of that type (a.battery, or .battery for the current agent's)");
+    }
+
+    @Test
+    void aStaticAttributeIsReadThroughItsType() {
+        analyzeBody("local double top = Khepera.MAX_SPEED;\nlocal int own = k.battery;").assertNoError();
+    }
+
+    @Test
     void unknownMethodOnAStringIsReported() {
         analyzeBody("local String s = \"abc\";\n.logln(s.substrin(1));")
                 .assertError(8, 10, "cannot find method substrin(int) in String");
