@@ -94,7 +94,7 @@ final class MemberTyper {
 
     /**
      * An attribute read or written through its agent type's name ({@code Worker.LIMIT}): only a static
-     * one belongs to the type; another is each agent's own, read on an agent ({@code w.battery}).
+     * one belongs to the type; another is each agent's own, used on an agent ({@code w.battery}).
      */
     MaslType staticAttribute(ImportedType type, Token name, boolean isWrite, ParserRuleContext access) {
         MaslType found = attribute(type, name, isWrite, access);
@@ -103,7 +103,8 @@ final class MemberTyper {
         }
         Attribute attribute = agentMembers.attributes(name.getText(), type).get(0).member();
         if (!attribute.isStatic()) {
-            errors.at(name, name.getText() + " is not a static attribute of " + (type == null ? "an agent type" : type.name())
+            String owner = type == null ? "an agent type" : type.name();
+            errors.at(name, name.getText() + " is not a static attribute of " + owner
                     + ": each agent has its own, used on an agent of that type (a." + name.getText()
                     + ", or ." + name.getText() + " for the current agent's)");
             return MaslType.ERROR;
