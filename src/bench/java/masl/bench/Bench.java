@@ -30,6 +30,13 @@ public final class Bench {
     /** Measurements per figure, after a warm-up: the figure is their median. */
     static final int RUNS = 5;
     /**
+     * The invocation and bridge rows take more runs. On 2 cores each of their JADE columns swings by a
+     * quarter from one window to the next (at 10 pairs, 20 JADE threads), raw JADE as much as the
+     * bridge, and a median of 5 left the bridge's ratio anywhere from 0.77x to 1.58x from one full run
+     * to the next (docs/performance.md, stop 25).
+     */
+    static final int INVOCATION_RUNS = 11;
+    /**
      * Warm-up runs of each lock-step column (each a quarter of --seconds): MASL reached its steady
      * rate only after 2-3 s of stepping (measured, runs of 8,000 steps of 1,000 agents in one JVM:
      * 12,000-16,000 steps/s in the first runs, 28,000-34,000 from the fourth or fifth); one short
@@ -86,30 +93,44 @@ public final class Bench {
      * same raw JADE figure (item 3, as a ratio of round-trip times).
      */
     private static void invocations(Options options) throws Exception {
-        System.out.println("2. Invocations: synchronous round trips per second between agent pairs (median of " + RUNS + ")");
+        System.out.println("2. Invocations: synchronous round trips per second between agent pairs (median of "
+                + INVOCATION_RUNS + ")");
         System.out.println("3. Bridge: JADE pingers invoking MASL agents through --platform jade, against raw JADE");
-        System.out.printf(Locale.ROOT, "%6s | %14s | %14s | %10s | %14s | %18s%n", "pairs", "JADE ACL",
-                "MASL in-proc", "MASL/JADE", "JADE->bridge", "bridge/JADE time");
+        System.out.printf(Locale.ROOT, "%6s | %14s | %14s | %10s | %14s | %18s | %14s%n", "pairs", "JADE ACL",
+                "MASL in-proc", "MASL/JADE", "JADE->bridge", "bridge/JADE time", "each round");
         Duration window = Duration.ofMillis((long) (options.seconds * 1000));
         Duration warmUp = window.dividedBy(2);
         JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer());
         try {
             for (int pairs : new int[] {1, 10}) {
-                Map<String, double[]> runs = interleaved(RUNS, List.of(
+                Map<String, double[]> runs = interleaved(INVOCATION_RUNS, List.of(
                         new Measure("jade", () -> AclPingPong.measure(platform, pairs, warmUp, window).roundTripsPerSecond()),
                         new Measure("masl", MaslPingPong.prepare(pairs, (int) (options.seconds * 400_000 / pairs))),
                         new Measure("bridge", () -> BridgePingPong.measure(platform, pairs, warmUp, window).roundTripsPerSecond())));
                 double jade = median(runs.get("jade"));
                 double masl = median(runs.get("masl"));
                 double bridge = median(runs.get("bridge"));
-                System.out.printf(Locale.ROOT, "%6d | %14s | %14s | %10s | %14s | %18s%n", pairs, rate(jade),
-                        rate(masl), ratio(masl, jade), rate(bridge), ratio(jade, bridge));
+                System.out.printf(Locale.ROOT, "%6d | %14s | %14s | %10s | %14s | %18s | %14s%n", pairs, rate(jade),
+                        rate(masl), ratio(masl, jade), rate(bridge), ratio(jade, bridge),
+                        roundRatios(runs.get("jade"), runs.get("bridge")));
             }
         } finally {
             closeQuietly(platform);
         }
-        System.out.println("   (goals: MASL/JADE >= 3x; bridge/JADE round-trip time <= 1.2x)");
+        System.out.println("   (goals: MASL/JADE >= 3x; bridge/JADE round-trip time <= 1.2x;"
+                + " each round: the lowest and highest bridge/JADE of one round's two windows, side by side)");
         System.out.println();
+    }
+
+    /** The range of {@code jade[i] / bridge[i]}, the ratio of each round's two measurements. */
+    private static String roundRatios(double[] jade, double[] bridge) {
+        double lowest = Double.MAX_VALUE;
+        double highest = 0;
+        for (int i = 0; i < jade.length; i++) {
+            lowest = Math.min(lowest, jade[i] / bridge[i]);
+            highest = Math.max(highest, jade[i] / bridge[i]);
+        }
+        return String.format(Locale.ROOT, "%.2f-%.2fx", lowest, highest);
     }
 
     /** Item 4: N agents entering a synchronous block and passing its entry barrier. */
