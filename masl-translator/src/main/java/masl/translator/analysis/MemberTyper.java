@@ -79,17 +79,8 @@ final class MemberTyper {
 
     /** A read or a write of attribute {@code name}; writing a {@code final} attribute is an error. */
     MaslType attribute(ImportedType receiver, Token name, boolean isWrite, ParserRuleContext access) {
-        List<AgentMembers.Declared<Attribute>> declared = agentMembers.attributes(name.getText(), receiver);
-        if (declared.isEmpty()) {
-            reportMissingAgentMember("attribute", name);
-            return MaslType.ERROR;
-        }
-        bindings.bind(access, new Member(Member.Kind.ATTRIBUTE, name.getText(), AgentMembers.owners(declared), null));
-        Attribute attribute = declared.get(0).member();
-        if (isWrite && attribute.isFinal()) {
-            errors.at(name, "cannot assign a value to final attribute " + name.getText());
-        }
-        return typeNames.fromDescriptor(attribute.type());
+        Attribute attribute = declaredAttribute(receiver, name, isWrite, access);
+        return attribute == null ? MaslType.ERROR : typeNames.fromDescriptor(attribute.type());
     }
 
     /**
@@ -97,19 +88,35 @@ final class MemberTyper {
      * one belongs to the type; another is each agent's own, used on an agent ({@code w.battery}).
      */
     MaslType staticAttribute(ImportedType type, Token name, boolean isWrite, ParserRuleContext access) {
-        MaslType found = attribute(type, name, isWrite, access);
-        if (found == MaslType.ERROR) {
-            return found;
+        Attribute attribute = declaredAttribute(type, name, isWrite, access);
+        if (attribute == null) {
+            return MaslType.ERROR;
         }
-        Attribute attribute = agentMembers.attributes(name.getText(), type).get(0).member();
         if (!attribute.isStatic()) {
-            String owner = type == null ? "an agent type" : type.name();
-            errors.at(name, name.getText() + " is not a static attribute of " + owner
+            errors.at(name, name.getText() + " is not a static attribute of " + type.name()
                     + ": each agent has its own, used on an agent of that type (a." + name.getText()
                     + ", or ." + name.getText() + " for the current agent's)");
             return MaslType.ERROR;
         }
-        return found;
+        return typeNames.fromDescriptor(attribute.type());
+    }
+
+    /**
+     * The attribute {@code name} of {@code receiver} (or of any imported type), bound to {@code access};
+     * null, reported, if no type has it. Writing a {@code final} one is reported.
+     */
+    private Attribute declaredAttribute(ImportedType receiver, Token name, boolean isWrite, ParserRuleContext access) {
+        List<AgentMembers.Declared<Attribute>> declared = agentMembers.attributes(name.getText(), receiver);
+        if (declared.isEmpty()) {
+            reportMissingAgentMember("attribute", name);
+            return null;
+        }
+        bindings.bind(access, new Member(Member.Kind.ATTRIBUTE, name.getText(), AgentMembers.owners(declared), null));
+        Attribute attribute = declared.get(0).member();
+        if (isWrite && attribute.isFinal()) {
+            errors.at(name, "cannot assign a value to final attribute " + name.getText());
+        }
+        return attribute;
     }
 
     /**
