@@ -212,21 +212,27 @@ public final class Bench {
      * run and a second run of the unchanged program, interleaved.
      */
     private static void startUp() throws Exception {
-        System.out.println("8. Start-up: masl run missions/hello.masl as a whole process of the installed command, elapsed and"
-                + " the process's CPU time (median of " + RUNS + ", " + loadAverage() + ")");
+        System.out.println("8. Start-up: masl run and masl check of missions/hello.masl as whole processes of the installed command,"
+                + " elapsed and the process's CPU time (median of " + RUNS + ", " + loadAverage() + ")");
         StartUp startUp = StartUp.installed();
         try {
             List<StartUp.Timing> before = new ArrayList<>();
             List<StartUp.Timing> first = new ArrayList<>();
             List<StartUp.Timing> second = new ArrayList<>();
+            List<StartUp.Timing> checkC1 = new ArrayList<>();
+            List<StartUp.Timing> checkC2 = new ArrayList<>();
             Map<String, double[]> figures = interleaved(RUNS, List.of(
                     new Measure("before", () -> record(before, startUp.before())),
                     new Measure("first", () -> record(first, startUp.first())),
-                    new Measure("second", () -> record(second, startUp.second()))));
+                    new Measure("second", () -> record(second, startUp.second())),
+                    new Measure("check C2", () -> record(checkC2, startUp.check(true))),
+                    new Measure("check", () -> record(checkC1, startUp.check(false)))));
             System.out.printf(Locale.ROOT, "%-52s | %10s | %10s | %10s%n", "", "elapsed", "CPU", "goal");
             printStartUp("before: --no-cache, the JDK's class-data archive", figures.get("before"), before, "");
             printStartUp("first run: empty cache, lib/masl.jsa", figures.get("first"), first, "<= before");
             printStartUp("second run: the mission from the cache", figures.get("second"), second, "<= 0.4 s");
+            printStartUp("masl check, C1 and C2 (-XX:TieredStopAtLevel=4)", figures.get("check C2"), checkC2, "");
+            printStartUp("masl check, C1 alone (the command's JIT)", figures.get("check"), checkC1, "<= C1 and C2");
         } finally {
             startUp.close();
         }

@@ -19,6 +19,9 @@ import java.util.stream.Stream;
  *   <li>first: an empty cache, on the archive installing made ({@code lib/masl.jsa});</li>
  *   <li>second: the same again, the mission found in the cache.</li>
  * </ul>
+ *
+ * <p>And {@code masl check} of the same program, which the start script runs on C1 alone, against the
+ * same with C2 given back ({@code -XX:TieredStopAtLevel=4} in {@code JAVA_OPTS}).
  */
 final class StartUp {
 
@@ -67,8 +70,17 @@ final class StartUp {
         return run(cache, "");
     }
 
+    /** {@code masl check} of the program: on C1 alone, as the command runs it, or with C2 too. */
+    Timing check(boolean withC2) throws Exception {
+        return time("check", caches, withC2 ? "-XX:TieredStopAtLevel=4" : "");
+    }
+
     private Timing run(Path cache, String javaOptions, String... options) throws Exception {
-        List<String> command = new ArrayList<>(List.of(masl.toString(), "run", program.toString()));
+        return time("run", cache, javaOptions, options);
+    }
+
+    private Timing time(String subcommand, Path cache, String javaOptions, String... options) throws Exception {
+        List<String> command = new ArrayList<>(List.of(masl.toString(), subcommand, program.toString()));
         command.addAll(List.of(options));
         ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
         Map<String, String> environment = builder.environment();
@@ -81,9 +93,9 @@ final class StartUp {
         String output = new String(process.getInputStream().readAllBytes());
         int status = process.waitFor();
         double elapsed = (System.nanoTime() - start) / 1e9;
-        // The journal's line, after the progress line masl writes if compiling takes a second (a loaded machine).
-        if (status != 0 || output.lines().noneMatch(line -> line.startsWith("Hello from agent"))) {
-            throw new IllegalStateException("masl run failed (" + status + "): " + output);
+        // run: the journal's line, after the progress line masl writes if compiling takes a second (a loaded machine).
+        if (status != 0 || subcommand.equals("run") && output.lines().noneMatch(line -> line.startsWith("Hello from agent"))) {
+            throw new IllegalStateException("masl " + subcommand + " failed (" + status + "): " + output);
         }
         return new Timing(elapsed, (childrenCpuTicks() - cpuBefore) / TICKS_PER_SECOND);
     }
