@@ -34,9 +34,14 @@ import java.util.concurrent.locks.LockSupport;
  * until new work wakes it: the pool's own hand-over of a runner task from a busy worker to an idle
  * one was seen to leave the task queued and the idle worker asleep for whole runs (JDK 17), with
  * one core doing a lock-step mission's work alone. Work queued from outside the runners, or as a
- * wave, wakes an idle runner; an agent that a runner's own slice makes runnable is taken by that
- * runner after the slice, which wakes another only if more work waits then, so agents that take
- * turns (invocations, events) cost no thread wake-up. A runner whose agent blocks in a primitive
+ * wave, wakes an idle runner; an agent that a runner's own slice makes runnable (another agent than
+ * the slice's) goes to that runner's <em>hand-over slot</em> and runs right after the slice, up to
+ * {@value #HAND_OVERS} in a row, then behind the common queue; the runner wakes another only if more
+ * work waits then. So agents that take turns (an invocation and its serving slice, an event and its
+ * reaction) cost no thread wake-up and stay on one core, where their state is; through the common
+ * queue, both runners contend for its head and a round trip may cross cores (issue 26: 10 pairs of
+ * invocations ran at 0.8-2.4 M round trips per second from mission to mission, 2.0-6.0 M with the
+ * slot). A runner whose agent blocks in a primitive
  * ({@link Blocking}) stops counting while it blocks, so another runner takes over the queues on the
  * worker the pool adds meanwhile; one counted above {@link #workers} once it returns ends when it
  * next runs out of work.
@@ -59,6 +64,11 @@ public final class PoolScheduler implements Scheduler {
     private static final int CHUNK = 32;
     /** How long a runner that ran out of work waits for another runner's trip before it stops. */
     private static final long SPIN_NANOS = 100_000;
+    /**
+     * Slices a runner runs in a row from its hand-over slot ({@link Worker#handsOver}) before the
+     * agents its slices make runnable go to the common queue again, behind those waiting there.
+     */
+    private static final int HAND_OVERS = CHUNK;
 
     private final ForkJoinPool pool;
     private final int workers;
@@ -104,11 +114,14 @@ public final class PoolScheduler implements Scheduler {
 
     @Override
     public void schedule(AgentTask agent) {
+        Worker worker = ownWorker();
+        if (worker != null && worker.handsOver(agent)) {
+            return;
+        }
         runQueue.add(agent);
         // A runner's own slice hands its agent over: that runner takes it once the slice ends, and
         // wakes another only if more work waits then (runAlone). Waking one now would cost a
         // thread wake-up per invocation or event for nothing when the agents take turns.
-        Worker worker = ownWorker();
         if (worker == null || worker.blockedCalls > 0) {
             startRunnerIfNeeded();
         }
@@ -187,7 +200,7 @@ public final class PoolScheduler implements Scheduler {
         boolean counted = true;
         try {
             while (!shutDown) {
-                runUntilEmpty(self.run);
+                runUntilEmpty(self);
                 if (leaveIfSurplus()) {
                     counted = false;
                     return;
@@ -198,6 +211,7 @@ public final class PoolScheduler implements Scheduler {
             // Also when a slice throws (a runtime bug): no deferred arrival is left behind, and
             // the count must not keep a dead runner.
             try {
+                releaseHandOver(self);
                 self.run.flush();
             } finally {
                 if (counted) {
@@ -242,27 +256,32 @@ public final class PoolScheduler implements Scheduler {
      * Runs slices until no queue has work and the run has nothing left to flush: first the batches
      * of its own home queue, then the common queue's head, then another worker's home batch.
      */
-    private void runUntilEmpty(SliceRun run) {
+    private void runUntilEmpty(Worker self) {
+        SliceRun run = self.run;
         int sinceFlush = 0;
         while (!shutDown) {
-            WokenBatch own = run.homeQueue.poll();
+            AgentTask handedOver = self.takeHandOver();
+            WokenBatch own;
             Object head;
-            if (own != null) {
+            if (handedOver != null) {
+                shareCommonQueue();
+                sinceFlush += runSlice(self, handedOver);
+            } else if ((own = run.homeQueue.poll()) != null) {
                 // The common queue would wait for this worker's whole step.
                 shareCommonQueue();
-                sinceFlush += runWoken(own);
+                sinceFlush += runWoken(self, own);
             } else if ((head = runQueue.peek()) != null) {
                 if (head instanceof RunBatch batch) {
-                    sinceFlush += runChunk(batch);
+                    sinceFlush += runChunk(self, batch);
                 } else if (head instanceof WokenBatch batch) {
-                    sinceFlush += runQueue.remove(batch) ? runWoken(batch) : 0;
+                    sinceFlush += runQueue.remove(batch) ? runWoken(self, batch) : 0;
                 } else {
-                    sinceFlush += runAlone((AgentTask) head);
+                    sinceFlush += runAlone(self, (AgentTask) head);
                 }
             } else {
                 WokenBatch stolen = stealFrom(run);
                 if (stolen != null) {
-                    sinceFlush += runWoken(stolen);
+                    sinceFlush += runWoken(self, stolen);
                 } else {
                     if (!run.flush() && !awaitAnotherRunnersWork(run)) {
                         return;
@@ -327,7 +346,7 @@ public final class PoolScheduler implements Scheduler {
     }
 
     /** Claims a chunk of the batch at the head of the queue and runs it; returns how many slices it ran. */
-    private int runChunk(RunBatch batch) {
+    private int runChunk(Worker self, RunBatch batch) {
         int from = batch.claim(CHUNK);
         int to = Math.min(from + CHUNK, batch.size());
         if (to == batch.size()) {
@@ -335,18 +354,38 @@ public final class PoolScheduler implements Scheduler {
             runQueue.remove(batch);
         }
         for (int i = from; i < to; i++) {
-            batch.get(i).runSlice();
+            runSlice(self, batch.get(i));
         }
         return to - from;
     }
 
     /** Wakes the agents of a batch this runner has taken and runs their slices; returns how many. */
-    private int runWoken(WokenBatch batch) {
+    private int runWoken(Worker self, WokenBatch batch) {
         int slices = batch.wake();
         for (int i = 0; i < slices; i++) {
-            batch.runnable(i).runSlice();
+            runSlice(self, batch.runnable(i));
         }
         return slices;
+    }
+
+    /** Runs one slice of {@code agent} on {@code self}, which knows meanwhile whose slice it runs; returns 1. */
+    private static int runSlice(Worker self, AgentTask agent) {
+        self.running = agent;
+        try {
+            agent.runSlice();
+        } finally {
+            self.running = null;
+        }
+        return 1;
+    }
+
+    /** Moves the agent in the runner's hand-over slot, if any, to the common queue. */
+    private void releaseHandOver(Worker self) {
+        AgentTask handedOver = self.takeHandOver();
+        if (handedOver != null) {
+            runQueue.add(handedOver);
+            startRunnerIfNeeded();
+        }
     }
 
     /**
@@ -381,13 +420,12 @@ public final class PoolScheduler implements Scheduler {
     }
 
     /** Takes the agent at the head of the queue, unless another runner did, and runs its slice. */
-    private int runAlone(AgentTask agent) {
+    private int runAlone(Worker self, AgentTask agent) {
         if (!runQueue.remove(agent)) {
             return 0;
         }
         shareCommonQueue();
-        agent.runSlice();
-        return 1;
+        return runSlice(self, agent);
     }
 
     /** The current runner is about to block in a primitive: another may take over the queue. */
@@ -407,7 +445,9 @@ public final class PoolScheduler implements Scheduler {
     static void blocking(boolean starts) {
         if (Thread.currentThread() instanceof Worker worker) {
             if (starts) {
-                // Agents whose arrivals the run holds must not wait for however long this blocks.
+                // Agents whose arrivals the run holds, or that it would run next, must not wait for
+                // however long this blocks.
+                worker.scheduler.releaseHandOver(worker);
                 worker.run.flush();
                 worker.blockedCalls++;
                 worker.scheduler.runnerBlocks();
@@ -454,6 +494,12 @@ public final class PoolScheduler implements Scheduler {
         volatile boolean woken;
         /** Blocking calls ({@link Blocking}) the worker is in: its runner is not counted meanwhile. */
         int blockedCalls;
+        /** The agent whose slice the worker runs, null between slices. */
+        AgentTask running;
+        /** The hand-over slot: an agent a slice made runnable, which this worker runs next. */
+        private AgentTask next;
+        /** Slices run in a row from the slot. */
+        private int handedOverInARow;
 
         Worker(ForkJoinPool pool, PoolScheduler scheduler) {
             super(pool);
@@ -465,8 +511,38 @@ public final class PoolScheduler implements Scheduler {
             LockSupport.unpark(this);
         }
 
+        /**
+         * Takes {@code agent}, made runnable by the slice this worker runs, into the hand-over slot,
+         * unless the agent is the slice's own (a slice that yields goes behind the others), the slot
+         * is taken, the worker blocks in a primitive, or it has run {@value #HAND_OVERS} slices from
+         * the slot in a row: agents that take turns (an invocation and its answer) then stay on one
+         * core, without a trip through the common queue that the other runner contends for. True if
+         * it took it.
+         */
+        boolean handsOver(AgentTask agent) {
+            if (running == null || agent == running || next != null || blockedCalls > 0
+                    || handedOverInARow >= HAND_OVERS) {
+                return false;
+            }
+            next = agent;
+            return true;
+        }
+
+        /** The agent in the slot, now taken out of it, or null; counts the slices run from it in a row. */
+        AgentTask takeHandOver() {
+            AgentTask agent = next;
+            if (agent == null) {
+                handedOverInARow = 0;
+                return null;
+            }
+            next = null;
+            handedOverInARow++;
+            return agent;
+        }
+
         @Override
         protected void onTermination(Throwable exception) {
+            scheduler.releaseHandOver(this);
             run.closed = true;
             scheduler.moveToCommonQueue(run);
             scheduler.runs.remove(run);
