@@ -16,9 +16,10 @@ import org.junit.jupiter.api.Timeout;
 
 /**
  * The pool's run queues and runs of slices, on one worker, where the order of slices is the
- * queues': a wave is one item that keeps its place, a worker's home batches come first, and what
- * slices defer to the run is done after a chunk of slices, when the queue is empty, and before a
- * slice blocks; and on two, where a busy worker's home batch is not left waiting.
+ * queues': a wave is one item that keeps its place, a worker's home batches come first, an agent a
+ * slice makes runnable runs right after it (32 in a row at most), and what slices defer to the run
+ * is done after a chunk of slices, when the queue is empty, and before a slice blocks; and on two,
+ * where a busy worker's home batch is not left waiting.
  */
 @Timeout(60)
 class PoolSchedulerTest {
@@ -139,6 +140,45 @@ class PoolSchedulerTest {
 
         assertTrue(done.await(30, TimeUnit.SECONDS));
         assertEquals(List.of(true), ranWhileBlocked, "the only runner blocked, yet the agent its slice scheduled ran");
+    }
+
+    @Test
+    void anAgentASliceMakesRunnableRunsRightAfterThatSlice() throws InterruptedException {
+        CountDownLatch last = new CountDownLatch(1);
+        scheduler.schedule(task(-1, () -> {
+            awaitGate();
+            scheduler.schedule(task(5, () -> { }));
+        }));
+        scheduler.schedule(task(0, () -> { }));
+        scheduler.schedule(task(1, last::countDown));
+        gateOpen.countDown();
+
+        assertTrue(last.await(20, TimeUnit.SECONDS));
+        assertEquals(List.of(-1, 5, 0, 1), ran);
+    }
+
+    @Test
+    void agentsThatTakeTurnsLetTheQueueInAfterThirtyTwoTurns() throws InterruptedException {
+        CountDownLatch queuedRan = new CountDownLatch(1);
+        AgentTask[] pair = new AgentTask[2];
+        for (int i = 0; i < 2; i++) {
+            int other = 1 - i;
+            pair[i] = task(10 + i, () -> {
+                // Each slice makes the other runnable, as an invocation and its serving slice do, until the queued agent ran.
+                if (queuedRan.getCount() > 0) {
+                    scheduler.schedule(pair[other]);
+                }
+            });
+        }
+        scheduler.schedule(task(-1, () -> {
+            awaitGate();
+            scheduler.schedule(pair[0]);
+        }));
+        scheduler.schedule(task(0, queuedRan::countDown));
+        gateOpen.countDown();
+
+        assertTrue(queuedRan.await(20, TimeUnit.SECONDS), "the agent in the common queue ran");
+        assertEquals(32, ran.indexOf(0) - 1, "turns taken before it: " + ran);
     }
 
     @Test
