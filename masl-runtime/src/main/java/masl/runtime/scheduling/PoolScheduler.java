@@ -253,8 +253,9 @@ public final class PoolScheduler implements Scheduler {
     }
 
     /**
-     * Runs slices until no queue has work and the run has nothing left to flush: first the batches
-     * of its own home queue, then the common queue's head, then another worker's home batch.
+     * Runs slices until no queue has work and the run has nothing left to flush: first the agent in
+     * its hand-over slot, then the batches of its own home queue, then the common queue's head, then
+     * another worker's home batch.
      */
     private void runUntilEmpty(Worker self) {
         SliceRun run = self.run;
