@@ -211,7 +211,6 @@ public final class PoolScheduler implements Scheduler {
             // Also when a slice throws (a runtime bug): no deferred arrival is left behind, and
             // the count must not keep a dead runner.
             try {
-                releaseHandOver(self);
                 self.run.flush();
             } finally {
                 if (counted) {
@@ -380,12 +379,14 @@ public final class PoolScheduler implements Scheduler {
         return 1;
     }
 
-    /** Moves the agent in the runner's hand-over slot, if any, to the common queue. */
+    /**
+     * Moves the agent in the runner's hand-over slot, if any, to the common queue. The callers start
+     * a runner for it next, once this one no longer counts (a runner that blocks, a worker that ends).
+     */
     private void releaseHandOver(Worker self) {
         AgentTask handedOver = self.takeHandOver();
         if (handedOver != null) {
             runQueue.add(handedOver);
-            startRunnerIfNeeded();
         }
     }
 
