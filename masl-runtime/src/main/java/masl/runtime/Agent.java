@@ -126,6 +126,13 @@ public final class Agent implements AgentContext, AgentTask {
     public List<SynchronisationBarrier> participatesIn = new ArrayList<>();
     /** Its program died: it counts in no wave, not even the mission's (see {@link EntryCoordinator#leaveAll}). */
     public boolean departed;
+    /**
+     * The barrier its step boundaries arrive at: that of its innermost block if the block is
+     * synchronous and the agent active in it, else null. Kept with the memberships, so that a step
+     * in lock-step reads this field, not the chain of blocks (a list, its array and a membership,
+     * three more cache lines per agent-step).
+     */
+    public SynchronisationBarrier barrierDue;
 
     // The agent's latest arrival at a synchronisation barrier (see SynchronisationBarrier): written
     // without the lock by its own slice, or, for an arrival its worker held (ArrivalCombiner), by
@@ -353,10 +360,7 @@ public final class Agent implements AgentContext, AgentTask {
      * keeps it (a sum stored in a field) so that the compiler cannot drop the reads.
      */
     public int warmUp() {
-        // The list is still: others remove only the memberships of agents waiting out of a block
-        // (EntryCoordinator), and one a barrier lets go is active in its innermost block.
-        int innermostActive = memberships.isEmpty() || innermost().status != Membership.Status.ACTIVE ? 0 : 1;
-        return program.pc() + innermostActive + (events.isReacting() ? 1 : 0) + stepsThisSlice
+        return program.pc() + (barrierDue == null ? 0 : 1) + (events.isReacting() ? 1 : 0) + stepsThisSlice
                 + (suspended ? 1 : 0) + (int) progress + (int) run.pendingTicket();
     }
 
@@ -398,17 +402,17 @@ public final class Agent implements AgentContext, AgentTask {
         atCallBefore();
         requireOutsideReaction("a step boundary");
         progress++;
-        boolean synchronous = isInnermostSynchronous();
-        if (startReactions(synchronous)) {
+        SynchronisationBarrier barrier = barrierDue();
+        if (startReactions(barrier != null)) {
             return false;
         }
-        return completeBoundary(synchronous);
+        return completeBoundary(barrier);
     }
 
-    /** Steps 2 and 3 of a step boundary (§5): pending invocations, then the barrier if one is due. */
-    private boolean completeBoundary(boolean barrier) {
+    /** Steps 2 and 3 of a step boundary (§5): pending invocations, then the barrier if one is due (null: none). */
+    private boolean completeBoundary(SynchronisationBarrier barrier) {
         serveQueuedInvocations();
-        if (barrier && !mission.coordinator().arriveAtBarrier(this)) {
+        if (barrier != null && !mission.coordinator().arriveAtBarrier(this, barrier)) {
             return false;
         }
         return yieldIfSliceUsed();
@@ -420,11 +424,11 @@ public final class Agent implements AgentContext, AgentTask {
         requireAtLevelOf(block.parent(), block);
         requireOutsideReaction("the end of " + block.name());
         progress++;
-        boolean synchronous = isInnermostSynchronous();
-        if (startReactions(synchronous)) {
+        SynchronisationBarrier barrier = barrierDue();
+        if (startReactions(barrier != null)) {
             return false;
         }
-        return completeBoundary(synchronous);
+        return completeBoundary(barrier);
     }
 
     @Override
@@ -436,7 +440,7 @@ public final class Agent implements AgentContext, AgentTask {
         if (startReactions(false)) {
             return false;
         }
-        return completeBoundary(false);
+        return completeBoundary(null);
     }
 
     /** The agent's innermost block must be {@code parent} ({@code null}: no block) when it ends {@code what} in it. */
@@ -457,7 +461,7 @@ public final class Agent implements AgentContext, AgentTask {
         if (startReactions(false)) {
             return false;
         }
-        return completeBoundary(false);
+        return completeBoundary(null);
     }
 
     @Override
@@ -631,7 +635,7 @@ public final class Agent implements AgentContext, AgentTask {
         program.jump(ended.interruptedPc());
         statementPc = ended.statementPc();
         statementIsLoop = ended.statementIsLoop();
-        return completeBoundary(ended.barrierDue());
+        return completeBoundary(ended.barrierDue() ? barrierDue() : null);
     }
 
     @Override
@@ -1036,8 +1040,13 @@ public final class Agent implements AgentContext, AgentTask {
         return false;
     }
 
-    private boolean isInnermostSynchronous() {
-        return !memberships.isEmpty() && innermost().entry.mode() == Mode.SYNCHRONOUS;
+    /** {@link #barrierDue}; an agent held by a barrier of its innermost block is parked, not running. */
+    private SynchronisationBarrier barrierDue() {
+        SynchronisationBarrier barrier = barrierDue;
+        if (barrier == null && isHeld() && innermost().entry.mode() == Mode.SYNCHRONOUS) {
+            throw new IllegalStateException(describe() + " runs while " + innermost());
+        }
+        return barrier;
     }
 
     public Membership innermost() {

@@ -213,15 +213,15 @@ public final class EntryCoordinator {
     }
 
     /**
-     * The synchronisation barrier of the agent's innermost (synchronous) block: true if the agent
+     * The arrival at {@code barrier}, that of the agent's innermost (synchronous) block, in which
+     * it is active ({@link Agent#barrierDue}): true if the agent
      * completed it and tripped it now, false if it is parked until the trip. Only the completing
      * arrival takes the lock (see {@link SynchronisationBarrier} for the races this settles); the
      * agent reads its own memberships without it (see the invariant above). On a scheduler that
      * runs slices in runs, the arrival is left to the run ({@link ArrivalCombiner}), and the agent
      * parks even if it is the last: whoever flushes trips.
      */
-    public boolean arriveAtBarrier(Agent agent) {
-        SynchronisationBarrier barrier = requireActive(agent).entry.barrier;
+    public boolean arriveAtBarrier(Agent agent, SynchronisationBarrier barrier) {
         long ticket = agent.prepareToPark();
         SliceRun run = mission.scheduler().currentRun();
         if (run != null) {
@@ -441,6 +441,17 @@ public final class EntryCoordinator {
         }
         agent.activeIn = waves;
         agent.participatesIn = barriers;
+        agent.barrierDue = barrierDue(agent);
+    }
+
+    /** The barrier the agent's step boundaries arrive at ({@link Agent#barrierDue}), from its memberships. */
+    private static SynchronisationBarrier barrierDue(Agent agent) {
+        if (agent.memberships.isEmpty()) {
+            return null;
+        }
+        Membership innermost = agent.innermost();
+        return innermost.status == Membership.Status.ACTIVE && innermost.entry.mode() == Mode.SYNCHRONOUS
+                ? innermost.entry.barrier : null;
     }
 
     /**
