@@ -214,12 +214,12 @@ public final class EntryCoordinator {
 
     /**
      * The arrival at {@code barrier}, that of the agent's innermost (synchronous) block, in which
-     * it is active ({@link Agent#barrierDue}): true if the agent
-     * completed it and tripped it now, false if it is parked until the trip. Only the completing
-     * arrival takes the lock (see {@link SynchronisationBarrier} for the races this settles); the
-     * agent reads its own memberships without it (see the invariant above). On a scheduler that
-     * runs slices in runs, the arrival is left to the run ({@link ArrivalCombiner}), and the agent
-     * parks even if it is the last: whoever flushes trips.
+     * it is active ({@link Agent#barrierDue}): true if the agent completed it and tripped it now,
+     * false if it is parked until the trip. Only the completing arrival takes the lock (see
+     * {@link SynchronisationBarrier} for the races this settles); the agent reads its own
+     * memberships without it (see the invariant above). On a scheduler that runs slices in runs,
+     * the arrival is left to the run ({@link ArrivalCombiner}), and the agent parks even if it is
+     * the last: whoever flushes trips.
      */
     public boolean arriveAtBarrier(Agent agent, SynchronisationBarrier barrier) {
         long ticket = agent.prepareToPark();
