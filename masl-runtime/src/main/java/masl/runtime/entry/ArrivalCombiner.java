@@ -25,8 +25,16 @@ import masl.runtime.scheduling.SliceRun;
  */
 final class ArrivalCombiner implements SliceRun.Deferred {
 
-    /** Room for the arrivals of one flush's worth of slices ({@code PoolScheduler} flushes every 32). */
-    private static final int FIRST_CAPACITY = 32;
+    /** Room for the arrivals of the smallest flush's worth of slices. */
+    private static final int FIRST_CAPACITY = SliceRun.DEFAULT_SLICES_PER_FLUSH;
+    /** The most room a chunk is given before its arrivals come; more grows it. */
+    private static final int MAX_CAPACITY = 256;
+    /**
+     * Chunks each thread should publish per phase ({@link #slicesPerFlush}): enough for a thread
+     * with nothing left to take a share of another's, few enough that their publications, each a
+     * handful of atomic updates of words every thread writes, cost little per agent.
+     */
+    static final int CHUNKS_PER_THREAD = 4;
 
     private final EntryCoordinator coordinator;
     private final Mission mission;
@@ -35,6 +43,10 @@ final class ArrivalCombiner implements SliceRun.Deferred {
     /** The arrivals held, in arrival order, in {@code held[0]} to {@code held[count - 1]}; a new array for each chunk. */
     private Agent[] held;
     private int count;
+    /** The barrier of the latest publication; null before the first. */
+    private SynchronisationBarrier published;
+    /** The arrivals per chunk {@link #slicesPerFlush} asked for last: the room a new chunk is given. */
+    private int expected;
     /** The barrier of the latest publication that completed no phase, and that phase; null if none. */
     private SynchronisationBarrier awaited;
     private int awaitedPhase;
@@ -54,7 +66,7 @@ final class ArrivalCombiner implements SliceRun.Deferred {
             // Before the agent turns PARKED: the watchdog must not take it for idle for good.
             mission.outsideWakeUpStarted();
             barrier = at;
-            held = new Agent[FIRST_CAPACITY];
+            held = new Agent[Math.max(FIRST_CAPACITY, Math.min(expected, MAX_CAPACITY))];
         } else if (count == held.length) {
             held = Arrays.copyOf(held, 2 * count);
         }
@@ -67,6 +79,7 @@ final class ArrivalCombiner implements SliceRun.Deferred {
             return false;
         }
         SynchronisationBarrier arrivedAt = barrier;
+        published = arrivedAt;
         ArrivalChunk chunk = new ArrivalChunk(held, count, run, mission);
         barrier = null;
         held = null;
@@ -84,6 +97,24 @@ final class ArrivalCombiner implements SliceRun.Deferred {
             mission.outsideWakeUpEnded();
         }
         return true;
+    }
+
+    /**
+     * A phase's arrivals in {@value #CHUNKS_PER_THREAD} chunks per thread: the participants of the
+     * barrier of the latest publication, shared among {@code threads}, in that many chunks (a
+     * mission with no publication yet asks the default). Each chunk's publication and trip update
+     * words that every thread writes (the barrier's count and stack, the home queue, the watchdog's
+     * count): where the cache line of such a word takes 300–700 ns to move between the two cores,
+     * chunks of 32 halved lock-step at 1,000 agents (issue 26, stop 27; docs/performance.md).
+     */
+    @Override
+    public int slicesPerFlush(int threads) {
+        SynchronisationBarrier last = published;
+        if (last == null) {
+            return SliceRun.DEFAULT_SLICES_PER_FLUSH;
+        }
+        expected = last.participants() / (CHUNKS_PER_THREAD * threads);
+        return expected;
     }
 
     @Override

@@ -157,6 +157,11 @@ public final class SynchronisationBarrier {
         return unarrived(state) == 0 ? phase(state) : -1;
     }
 
+    /** How many participants it has now; no lock. */
+    int participants() {
+        return participants(state.get());
+    }
+
     /** Whether {@code phase} is still the current phase, not tripped; no lock. */
     boolean inPhase(int phase) {
         return phase(state.get()) == phase;

@@ -48,8 +48,9 @@ import java.util.concurrent.locks.LockSupport;
  *
  * <p><b>Runs of slices.</b> Each worker is a {@link SliceRun}: its slices may defer their
  * arrivals at barriers to it ({@link #currentRun}). A runner flushes it after every
- * {@value #CHUNK} slices, when it finds the queues empty (then looks again, as the flush may have
- * tripped a barrier) and before its agent blocks in a primitive. A runner whose own agents wait at
+ * {@value #CHUNK} to {@value #MAX_SLICES_PER_FLUSH} slices, as its deferred work asks
+ * ({@link SliceRun.Deferred#slicesPerFlush}), when it finds the queues empty (then looks again, as
+ * the flush may have tripped a barrier) and before its agent blocks in a primitive. A runner whose own agents wait at
  * a barrier for agents another runner is running spins a moment (up to {@value #SPIN_NANOS} ns) for
  * the trip before it goes idle: in lock-step, a thread wake-up per step would cost more than the
  * step. Nothing else makes a runner spin.
@@ -58,10 +59,15 @@ public final class PoolScheduler implements Scheduler {
 
     private static final int STEPS_PER_SLICE = 128;
     /**
-     * Slices a runner runs between two flushes of its run, and the agents it claims of a batch at
-     * once: small enough that two runners share a wave of a few hundred agents evenly.
+     * The agents a runner claims of a batch at once, and the fewest slices it runs between two
+     * flushes of its run: small enough that two runners share a wave of a few hundred agents evenly.
      */
     private static final int CHUNK = 32;
+    /**
+     * The most slices a runner runs between two flushes of its run, whatever its deferred work asks
+     * ({@link SliceRun.Deferred#slicesPerFlush}): the longest an arrival it holds waits for it.
+     */
+    private static final int MAX_SLICES_PER_FLUSH = 256;
     /** How long a runner that ran out of work waits for another runner's trip before it stops. */
     private static final long SPIN_NANOS = 100_000;
     /**
@@ -259,6 +265,7 @@ public final class PoolScheduler implements Scheduler {
     private void runUntilEmpty(Worker self) {
         SliceRun run = self.run;
         int sinceFlush = 0;
+        int flushEvery = slicesPerFlush(run);
         while (!shutDown) {
             AgentTask handedOver = self.takeHandOver();
             WokenBatch own;
@@ -287,13 +294,20 @@ public final class PoolScheduler implements Scheduler {
                         return;
                     }
                     sinceFlush = 0;
+                    flushEvery = slicesPerFlush(run);
                 }
             }
-            if (sinceFlush >= CHUNK) {
+            if (sinceFlush >= flushEvery) {
                 run.flush();
                 sinceFlush = 0;
+                flushEvery = slicesPerFlush(run);
             }
         }
+    }
+
+    /** The slices to run before the next flush of {@code run}: what its deferred work asks, within bounds. */
+    private int slicesPerFlush(SliceRun run) {
+        return Math.max(CHUNK, Math.min(MAX_SLICES_PER_FLUSH, run.slicesPerFlush(workers)));
     }
 
     /** A batch of another worker's home queue, or null if none has one. */

@@ -35,7 +35,19 @@ public final class SliceRun {
          * thread may then expect work back soon.
          */
         boolean awaitsOthers();
+
+        /**
+         * How many slices the thread should run between two flushes, when its scheduler has
+         * {@code threads} threads running slices; the scheduler keeps it within its own bounds.
+         * Asked after each flush. By default {@link #DEFAULT_SLICES_PER_FLUSH}.
+         */
+        default int slicesPerFlush(int threads) {
+            return DEFAULT_SLICES_PER_FLUSH;
+        }
     }
+
+    /** The slices between two flushes that deferred work asks for unless it says otherwise. */
+    public static final int DEFAULT_SLICES_PER_FLUSH = 32;
 
     private Deferred deferred;
     /**
@@ -61,6 +73,11 @@ public final class SliceRun {
     /** {@link Deferred#awaitsOthers()} of the run's deferred work; false if there is none. */
     public boolean awaitsOthers() {
         return deferred != null && deferred.awaitsOthers();
+    }
+
+    /** {@link Deferred#slicesPerFlush} of the run's deferred work; the default if there is none yet. */
+    public int slicesPerFlush(int threads) {
+        return deferred == null ? DEFAULT_SLICES_PER_FLUSH : deferred.slicesPerFlush(threads);
     }
 
     /** Does the deferred work; true if there was any. */

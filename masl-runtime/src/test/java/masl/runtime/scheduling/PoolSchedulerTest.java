@@ -18,7 +18,8 @@ import org.junit.jupiter.api.Timeout;
  * The pool's run queues and runs of slices, on one worker, where the order of slices is the
  * queues': a wave is one item that keeps its place, a worker's home batches come first, an agent a
  * slice makes runnable runs right after it (32 in a row at most), and what slices defer to the run
- * is done after a chunk of slices, when the queue is empty, and before a slice blocks; and on two,
+ * is done after as many slices as it asks (32 to 256), when the queue is empty, and before a slice
+ * blocks; and on two,
  * where a busy worker's home batch is not left waiting.
  */
 @Timeout(60)
@@ -55,6 +56,59 @@ class PoolSchedulerTest {
         assertTrue(deferred.allFlushed.await(20, TimeUnit.SECONDS));
         assertTrue(deferred.flushes.stream().allMatch(held -> held <= 32), "flushed every 32 slices: " + deferred.flushes);
         assertEquals(100, deferred.flushes.stream().mapToInt(Integer::intValue).sum());
+    }
+
+    @Test
+    void theRunIsFlushedAfterAsManySlicesAsItsDeferredWorkAsks() throws InterruptedException {
+        assertFlushedEvery(100, flushesOf(400, 100, true));
+    }
+
+    @Test
+    void theRunIsFlushedAfterNoFewerThan32Slices() throws InterruptedException {
+        assertFlushedEvery(32, flushesOf(200, 1, false));
+    }
+
+    @Test
+    void theRunIsFlushedAfterNoMoreThan256Slices() throws InterruptedException {
+        assertFlushedEvery(256, flushesOf(1_000, 10_000, true));
+    }
+
+    /**
+     * Between the first flush (asked for before any work was deferred) and the last (the queue ran
+     * empty), each flush held {@code slices} to {@code slices + 31}: the runner looks after each
+     * slice it runs alone, and after each chunk of 32 of a wave.
+     */
+    private static void assertFlushedEvery(int slices, List<Integer> flushes) {
+        assertTrue(flushes.size() > 2, "flushes: " + flushes);
+        List<Integer> between = flushes.subList(1, flushes.size() - 1);
+        assertTrue(between.stream().allMatch(held -> held >= slices && held < slices + 32),
+                "flushed every " + slices + " slices: " + flushes);
+    }
+
+    /**
+     * What each flush found held when {@code slices} slices defer, behind a gate, to work that asks
+     * {@code slicesPerFlush}; scheduled as one wave, or one by one (the runner then looks after each
+     * slice). Once per test, as a run keeps the deferred work it made first.
+     */
+    private List<Integer> flushesOf(int slices, int slicesPerFlush, boolean asWave) throws InterruptedException {
+        Counting deferred = new Counting(slices);
+        deferred.slicesPerFlush = slicesPerFlush;
+        CountDownLatch gate = new CountDownLatch(1);
+        scheduler.schedule(task(0, () -> {
+            defer(deferred);
+            await(gate);
+        }));
+        List<AgentTask> rest = IntStream.range(1, slices).mapToObj(id -> task(id, () -> defer(deferred))).toList();
+        if (asWave) {
+            scheduler.scheduleAll(rest);
+        } else {
+            rest.forEach(scheduler::schedule);
+        }
+        gate.countDown();
+
+        assertTrue(deferred.allFlushed.await(20, TimeUnit.SECONDS));
+        assertEquals(slices, deferred.flushes.stream().mapToInt(Integer::intValue).sum());
+        return deferred.flushes;
     }
 
     @Test
@@ -191,6 +245,14 @@ class PoolSchedulerTest {
         deferred.held++;
     }
 
+    private static void await(CountDownLatch gate) {
+        try {
+            assertTrue(gate.await(20, TimeUnit.SECONDS));
+        } catch (InterruptedException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
     private void awaitGate() {
         try {
             assertTrue(gateOpen.await(20, TimeUnit.SECONDS));
@@ -239,6 +301,7 @@ class PoolSchedulerTest {
         final List<Integer> flushes = new CopyOnWriteArrayList<>();
         final CountDownLatch allFlushed;
         int held;
+        int slicesPerFlush = SliceRun.DEFAULT_SLICES_PER_FLUSH;
 
         Counting(int expected) {
             allFlushed = new CountDownLatch(expected);
@@ -260,6 +323,11 @@ class PoolSchedulerTest {
         @Override
         public boolean awaitsOthers() {
             return false;
+        }
+
+        @Override
+        public int slicesPerFlush(int threads) {
+            return slicesPerFlush;
         }
     }
 }
