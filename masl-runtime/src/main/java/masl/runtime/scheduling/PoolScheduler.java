@@ -50,10 +50,10 @@ import java.util.concurrent.locks.LockSupport;
  * arrivals at barriers to it ({@link #currentRun}). A runner flushes it after every
  * {@value #CHUNK} to {@value #MAX_SLICES_PER_FLUSH} slices, as its deferred work asks
  * ({@link SliceRun.Deferred#slicesPerFlush}), when it finds the queues empty (then looks again, as
- * the flush may have tripped a barrier) and before its agent blocks in a primitive. A runner whose own agents wait at
- * a barrier for agents another runner is running spins a moment (up to {@value #SPIN_NANOS} ns) for
- * the trip before it goes idle: in lock-step, a thread wake-up per step would cost more than the
- * step. Nothing else makes a runner spin.
+ * the flush may have tripped a barrier) and before its agent blocks in a primitive. A runner whose
+ * own agents wait at a barrier for agents another runner is running spins a moment (up to
+ * {@value #SPIN_NANOS} ns) for the trip before it goes idle: in lock-step, a thread wake-up per step
+ * would cost more than the step. Nothing else makes a runner spin.
  */
 public final class PoolScheduler implements Scheduler {
 
