@@ -19,8 +19,7 @@ import org.junit.jupiter.api.Timeout;
  * queues': a wave is one item that keeps its place, a worker's home batches come first, an agent a
  * slice makes runnable runs right after it (32 in a row at most), and what slices defer to the run
  * is done after as many slices as it asks (32 to 256), when the queue is empty, and before a slice
- * blocks; and on two,
- * where a busy worker's home batch is not left waiting.
+ * blocks; and on two, where a busy worker's home batch is not left waiting.
  */
 @Timeout(60)
 class PoolSchedulerTest {
@@ -254,11 +253,7 @@ class PoolSchedulerTest {
     }
 
     private void awaitGate() {
-        try {
-            assertTrue(gateOpen.await(20, TimeUnit.SECONDS));
-        } catch (InterruptedException e) {
-            throw new IllegalStateException(e);
-        }
+        await(gateOpen);
     }
 
     private AgentTask task(int id, Runnable slice) {
