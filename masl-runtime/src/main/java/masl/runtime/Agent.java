@@ -371,23 +371,23 @@ public final class Agent implements AgentContext, AgentTask {
 
     /** Ends the park that issued {@code ticket}; ignored if that park already ended. */
     public void unpark(long ticket) {
-        if (endPark(ticket)) {
-            // Counted before the agent leaves PARKED, for the deadlock watchdog (Mission).
+        if (ticket != 0 && run.pendingTicket() == ticket) {
+            // Counted before the agent leaves PARKED, for the deadlock watchdog (Mission). Another
+            // thread may end the park first: one count too many only puts the watchdog's verdict off.
             mission.countSchedule();
-            if (leavePark()) {
+            if (run.unpark(ticket)) {
                 mission.scheduler().schedule(this);
             }
         }
     }
 
-    /** {@link RunState#endPark}: the first half of {@link #unpark}. */
+    /**
+     * Ends the park that issued {@code ticket} ({@link RunState#unpark}), as {@link #unpark} does but
+     * for a caller that counted the wake-up already or holds a pending one, and that schedules the
+     * agent itself: true if it must.
+     */
     public boolean endPark(long ticket) {
-        return run.endPark(ticket);
-    }
-
-    /** {@link RunState#leavePark}: the second half of {@link #unpark}. */
-    public boolean leavePark() {
-        return run.leavePark();
+        return run.unpark(ticket);
     }
 
     // ---- AgentContext --------------------------------------------------------------------------

@@ -63,7 +63,7 @@ final class ArrivalChunk implements WokenBatch {
         for (int i = 0; i < count; i++) {
             Agent agent = agents[i];
             agents[i] = null;
-            if (agent.endPark(agent.pendingTicket()) && agent.leavePark()) {
+            if (agent.endPark(agent.pendingTicket())) {
                 agents[runnable++] = agent;
             }
         }

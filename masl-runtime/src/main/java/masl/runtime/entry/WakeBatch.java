@@ -56,7 +56,7 @@ final class WakeBatch {
         mission.countSchedule();
         for (int i = 0; i < size; i++) {
             Agent agent = agents[i];
-            if (agent.endPark(tickets[i]) && agent.leavePark()) {
+            if (agent.endPark(tickets[i])) {
                 runnable.add(agent);
             }
             agents[i] = null;

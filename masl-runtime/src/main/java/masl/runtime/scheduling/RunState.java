@@ -13,18 +13,26 @@ import java.util.function.Supplier;
  * <p><b>States.</b> {@code SCHEDULED → RUNNING} when a slice starts ({@link #startSlice}). A
  * runtime call that must wait issues a park <em>ticket</em> ({@link #issueTicket}) and the program
  * returns; the slice then ends {@code RUNNING → PARKED} ({@link #park}). Whoever ends the wait
- * claims that ticket ({@link #endPark}): the first claim of the current ticket wins, a stale or
- * repeated one fails. Then {@link #leavePark}: {@code PARKED → SCHEDULED}, and the claimant hands
- * the agent to the scheduler; a wake-up that comes while the slice is still running turns
- * {@code RUNNING → RUNNING_WOKEN}, and the slice reschedules the agent when it returns
- * ({@link #park} fails). A program that has finished leaves the agent {@code DONE}.
+ * {@linkplain #unpark unparks} the agent with that ticket: the first to come with the pending
+ * ticket wins, a stale or repeated one does nothing. The winner finds the agent {@code PARKED},
+ * turns it {@code SCHEDULED} and hands it to the scheduler; a wake-up that comes while the slice is
+ * still running turns {@code RUNNING → RUNNING_WOKEN}, and the slice reschedules the agent when it
+ * returns ({@link #park} fails). A program that has finished leaves the agent {@code DONE}.
  *
  * <p><b>Serving while blocked</b> (MASL §5). An invocation queued for a {@code PARKED} or
  * {@code DONE} agent turns it {@code SERVING} ({@link #claimServing}), and whoever did runs the
- * pending invocations on its behalf, without running its program, then returns it to where it was.
- * A wake-up that comes meanwhile turns {@code SERVING → SERVING_WOKEN}, and the serving slice then
- * schedules the program. So an agent is never run by two threads at once, its program and the
- * invocations it serves never overlap, and no wake-up or invocation is lost.
+ * pending invocations on its behalf, without running its program, then returns it to where it was;
+ * its park's ticket stays pending meanwhile. A wake-up that comes meanwhile turns
+ * {@code SERVING → SERVING_WOKEN}, and the serving slice then schedules the program. So an agent is
+ * never run by two threads at once, its program and the invocations it serves never overlap, and no
+ * wake-up or invocation is lost.
+ *
+ * <p><b>One word.</b> The state and the pending ticket are one {@code long} ({@code ticket << 3 |
+ * state}), so that an unpark checks the ticket and leaves {@code PARKED} in one compare-and-set,
+ * and issuing a ticket is a plain store: while its slice runs with no ticket pending, nobody but
+ * the agent's own slice can change the word (an unpark needs a pending ticket, a serving claim a
+ * parked or finished agent). A lock-step agent-step is then two atomic updates of the agent's
+ * word, its park and its unpark, besides the start of its slice (issue 26).
  *
  * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
  * friend packages), and may change without notice.
@@ -39,26 +47,25 @@ public final class RunState {
     private static final int SERVING_WOKEN = 5;
     private static final int DONE = 6;
 
-    // Fields updated through VarHandles rather than atomic objects of their own: a step reads and
-    // updates both, and one object is one cache line to fetch where three were (issue 26). Their
-    // arguments have the field's exact type (0L for the ticket, not 0): a call whose types differ
-    // takes VarHandle's adapting path, a method-handle chain the JIT does not reduce to one CAS.
-    private static final VarHandle STATE;
-    private static final VarHandle WAKE_TICKET;
+    private static final int STATE_BITS = 3;
+    private static final long STATE_MASK = (1L << STATE_BITS) - 1;
+
+    // Updated through a VarHandle rather than an AtomicLong of its own: one object is one cache line
+    // to fetch where two were (issue 26). Its arguments have the field's exact type (long): a call
+    // whose types differ (an int literal) takes VarHandle's adapting path, a method-handle chain the
+    // JIT does not reduce to one CAS.
+    private static final VarHandle WORD;
 
     static {
         try {
-            MethodHandles.Lookup lookup = MethodHandles.lookup();
-            STATE = lookup.findVarHandle(RunState.class, "state", int.class);
-            WAKE_TICKET = lookup.findVarHandle(RunState.class, "wakeTicket", long.class);
+            WORD = MethodHandles.lookup().findVarHandle(RunState.class, "word", long.class);
         } catch (ReflectiveOperationException e) {
             throw new ExceptionInInitializerError(e);
         }
     }
 
-    private volatile int state = SCHEDULED;
-    /** The ticket of the pending park, 0 if none. */
-    private volatile long wakeTicket;
+    /** {@code pendingTicket << STATE_BITS | state}; the pending ticket is 0 if none. */
+    private volatile long word = SCHEDULED;
     /** Confined to the agent's slices (successive slices are ordered). */
     private long lastTicket;
     private final Supplier<String> owner;
@@ -73,46 +80,61 @@ public final class RunState {
         this.countSchedule = countSchedule;
     }
 
+    private static int stateOf(long word) {
+        return (int) (word & STATE_MASK);
+    }
+
+    private static long ticketOf(long word) {
+        return word >>> STATE_BITS;
+    }
+
+    private static long withState(long word, int state) {
+        return (word & ~STATE_MASK) | state;
+    }
+
     /** {@code SERVING} or {@code SERVING_WOKEN}: the slice about to run serves invocations only. */
     public boolean isServing() {
-        int current = state;
+        int current = stateOf(word);
         return current == SERVING || current == SERVING_WOKEN;
     }
 
     /** {@code SCHEDULED → RUNNING}; false, and no change, from any other state (a runtime bug). */
     public boolean startSlice() {
-        return STATE.compareAndSet(this, SCHEDULED, RUNNING);
+        return WORD.compareAndSet(this, (long) SCHEDULED, (long) RUNNING);
     }
 
     /** The state's name, for the message of a broken rule. */
     public String describeState() {
-        return String.valueOf(state);
+        return String.valueOf(stateOf(word));
     }
 
     /**
      * Ends the current slice, running ({@code serving} false) or serving, {@code → PARKED}: false if
-     * a wake-up came meanwhile, and the caller must then {@link #reschedule}.
+     * a wake-up came meanwhile, and the caller must then {@link #reschedule}. Only a wake-up changes
+     * the word of a running or serving slice, so a failed update is one.
      */
     public boolean park(boolean serving) {
-        return STATE.compareAndSet(this, serving ? SERVING : RUNNING, PARKED);
+        long current = word;
+        return stateOf(current) == (serving ? SERVING : RUNNING)
+                && WORD.compareAndSet(this, current, withState(current, PARKED));
     }
 
-    /** Back to {@code SCHEDULED}: the caller hands the agent to the scheduler. */
+    /** Back to {@code SCHEDULED}, after a wake-up ended the park: the caller hands the agent to the scheduler. */
     public void reschedule() {
-        state = SCHEDULED;
+        word = SCHEDULED;
     }
 
     /** The agent's program is over. */
     public void done() {
-        state = DONE;
+        word = DONE;
     }
 
     public boolean isDone() {
-        return state == DONE;
+        return stateOf(word) == DONE;
     }
 
     public boolean isParked() {
-        return state == PARKED;
+        return stateOf(word) == PARKED;
     }
 
     /**
@@ -121,7 +143,7 @@ public final class RunState {
      * the one read of the state here says whether the agent was idle at that instant.
      */
     public boolean isIdle(boolean nothingQueued, BooleanSupplier attentive) {
-        int current = state;
+        int current = stateOf(word);
         if (current == DONE) {
             return nothingQueued;
         }
@@ -131,70 +153,75 @@ public final class RunState {
     /**
      * Turns a blocked or finished agent {@code SERVING} while {@code servable} says invocations wait
      * for it: true if this caller did and must now serve them (or have them served). Leaving
-     * {@code PARKED} is counted as a schedule, as a wake-up is; {@code SERVING} is not idle.
+     * {@code PARKED} is counted as a schedule, as a wake-up is; {@code SERVING} is not idle. The
+     * pending ticket stays: the agent still waits for its park to end.
      */
     public boolean claimServing(BooleanSupplier servable) {
         while (servable.getAsBoolean()) {
-            int current = state;
-            if (current == PARKED) {
+            long current = word;
+            int state = stateOf(current);
+            if (state == PARKED) {
                 countSchedule.run();
-            } else if (current != DONE) {
+            } else if (state != DONE) {
                 return false;
             }
-            if (STATE.compareAndSet(this, current, SERVING)) {
+            if (WORD.compareAndSet(this, current, withState(current, SERVING))) {
                 return true;
             }
         }
         return false;
     }
 
-    /** Issues the ticket of a park, which becomes the pending one. */
+    /**
+     * Issues the ticket of a park, which becomes the pending one. Called by the agent's running
+     * slice with no ticket pending, when nobody else can change the word: a release store is enough,
+     * and whoever learns the ticket (through the barrier, the future or the queue it is handed to)
+     * sees it pending.
+     */
     public long issueTicket() {
         long ticket = ++lastTicket;
-        wakeTicket = ticket;
+        long current = (long) WORD.getOpaque(this);
+        WORD.setRelease(this, ticket << STATE_BITS | stateOf(current));
         return ticket;
     }
 
     /** Takes back the pending park {@code ticket}, which nobody has ended: false if someone has. */
     public boolean takeBack(long ticket) {
-        return WAKE_TICKET.compareAndSet(this, ticket, 0L);
+        long current = word;
+        return ticketOf(current) == ticket && WORD.compareAndSet(this, current, current & STATE_MASK);
     }
 
     /** The ticket of the pending park, or 0 if the agent has none (it is running, not waiting). */
     public long pendingTicket() {
-        return wakeTicket;
+        return ticketOf(word);
     }
 
     /**
-     * Claims the end of the park that issued {@code ticket}, the first half of a wake-up: false if
-     * that park already ended. The claimant must then call {@link #leavePark()}.
+     * Ends the park that issued {@code ticket}, unless it has ended already: true if the agent went
+     * {@code PARKED → SCHEDULED} and the caller must hand it to the scheduler; false if that park
+     * had ended (a stale or repeated ticket), or if the agent's slice, running or serving, notes the
+     * wake-up and reschedules it. The caller counts the wake-up for the deadlock watchdog before,
+     * or holds a pending one.
      */
-    public boolean endPark(long ticket) {
-        return ticket != 0 && WAKE_TICKET.compareAndSet(this, ticket, 0L);
-    }
-
-    /**
-     * The second half of a wake-up whose {@link #endPark} succeeded, after the watchdog's count:
-     * true if the agent went {@code PARKED → SCHEDULED} and the caller must hand it to the
-     * scheduler; false if its slice (running or serving) notes the wake-up and reschedules it.
-     */
-    public boolean leavePark() {
+    public boolean unpark(long ticket) {
+        if (ticket == 0) {
+            return false;
+        }
         while (true) {
-            int current = state;
-            if (current == PARKED && STATE.compareAndSet(this, PARKED, SCHEDULED)) {
-                return true;
-            }
-            if (current == RUNNING && STATE.compareAndSet(this, RUNNING, RUNNING_WOKEN)) {
+            long current = word;
+            if (ticketOf(current) != ticket) {
                 return false;
             }
-            if (current == SERVING && STATE.compareAndSet(this, SERVING, SERVING_WOKEN)) {
-                return false;
-            }
-            if (current == DONE) {
-                return false;
-            }
-            if (current == SCHEDULED || current == RUNNING_WOKEN || current == SERVING_WOKEN) {
-                throw new IllegalStateException(owner.get() + " woken twice");
+            int state = stateOf(current);
+            int next = switch (state) {
+                case PARKED -> SCHEDULED;
+                case RUNNING -> RUNNING_WOKEN;
+                case SERVING -> SERVING_WOKEN;
+                case DONE -> DONE;
+                default -> throw new IllegalStateException(owner.get() + " woken twice");
+            };
+            if (WORD.compareAndSet(this, current, (long) next)) {
+                return state == PARKED;
             }
         }
     }
