@@ -119,6 +119,15 @@ public final class Agent implements AgentContext, AgentTask {
     private int statementPc;
     /** Whether {@link #statementPc} is a loop's head, whose statement is the loop, not the last one of its body. */
     private boolean statementIsLoop;
+    /**
+     * From the start of an event processing to its ending (resumed or abandoned) or the program's
+     * death: false says that {@link #events} has no reaction running or ending, without reading it.
+     * Every step boundary and loop iteration asks; in lock-step, this field saves an agent-step the
+     * cache line of another object (issue 26).
+     */
+    private boolean reactionsUnderway;
+    /** Whether the latest park is a {@code wait(state)}'s, the only one that makes the agent attentive. */
+    private boolean parkAttends;
 
     // Guarded by the EntryCoordinator's lock (see its invariant for the agent's own reads).
     public final List<Membership> memberships = new ArrayList<>();
@@ -235,8 +244,9 @@ public final class Agent implements AgentContext, AgentTask {
      * {@link Mission}, "Deadlock watchdog").
      */
     private boolean endSliceParked(boolean serving) {
-        // Only the agent's own program makes it attentive: no wait can begin during this call.
-        boolean attentiveNow = invocations.isAttentive();
+        // Only the agent's own program makes it attentive, in a wait(state)'s park: no wait can begin
+        // during this call.
+        boolean attentiveNow = parkAttends && invocations.isAttentive();
         if (attentiveNow) {
             mission.outsideWakeUpStarted();
         }
@@ -320,6 +330,7 @@ public final class Agent implements AgentContext, AgentTask {
         mission.trace().record(new TraceEvent.AgentFailed(now(), id, String.valueOf(failure), source()));
         try {
             events.abandon();
+            reactionsUnderway = false;
             fireCountermeasures(0);
             mission.coordinator().leaveAll(this);
         } catch (RuntimeException leaving) {
@@ -338,6 +349,7 @@ public final class Agent implements AgentContext, AgentTask {
         }
         suspended = true;
         busyWaitPark = false;
+        parkAttends = false;
         return run.issueTicket();
     }
 
@@ -360,7 +372,7 @@ public final class Agent implements AgentContext, AgentTask {
      * keeps it (a sum stored in a field) so that the compiler cannot drop the reads.
      */
     public int warmUp() {
-        return program.pc() + (barrierDue == null ? 0 : 1) + (events.isReacting() ? 1 : 0) + stepsThisSlice
+        return program.pc() + (barrierDue == null ? 0 : 1) + (reactionsUnderway ? 1 : 0) + stepsThisSlice
                 + (suspended ? 1 : 0) + (int) progress + (int) run.pendingTicket();
     }
 
@@ -455,7 +467,7 @@ public final class Agent implements AgentContext, AgentTask {
     public boolean loopIteration() {
         atLoopHead();
         progress++;
-        if (events.isReacting()) {
+        if (reactionsUnderway && events.isReacting()) {
             return yieldIfSliceUsed();
         }
         if (startReactions(false)) {
@@ -509,7 +521,7 @@ public final class Agent implements AgentContext, AgentTask {
     public void breakOut(EntryDefinition outermost) {
         atCurrentCase();
         requireNoReactionRunning("break");
-        events.abandonEnding();
+        abandonEnding();
         fireCountermeasures(depthOf(outermost));
         mission.coordinator().leaveUpTo(this, mission.entry(outermost), LeaveCause.BREAK);
     }
@@ -518,7 +530,7 @@ public final class Agent implements AgentContext, AgentTask {
     public void reelect(EntryDefinition block) {
         atCurrentCase();
         requireNoReactionRunning("reelect");
-        events.abandonEnding();
+        abandonEnding();
         fireCountermeasures(depthOf(block));
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.REELECT);
     }
@@ -527,7 +539,7 @@ public final class Agent implements AgentContext, AgentTask {
     public void restart(EntryDefinition block) {
         atCurrentCase();
         requireNoReactionRunning("restart");
-        events.abandonEnding();
+        abandonEnding();
         fireCountermeasures(depthOf(block) + 1);
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.RESTART);
     }
@@ -629,6 +641,7 @@ public final class Agent implements AgentContext, AgentTask {
     @Override
     public boolean resumeInterrupted() {
         ReactionRun ended = events.takeEnding();
+        reactionsUnderway = false;
         if (ended == null) {
             throw new IllegalStateException(describe() + ": resume without a reaction that just ended");
         }
@@ -887,6 +900,7 @@ public final class Agent implements AgentContext, AgentTask {
         }
         long ticket = prepareToPark();
         invocations.attend(attentiveTo, ticket);
+        parkAttends = true;
         if (ms >= 0) {
             mission.outsideWakeUpStarted();
             mission.scheduler().scheduleAfter(ms, () -> {
@@ -981,6 +995,7 @@ public final class Agent implements AgentContext, AgentTask {
         if (events.start(chain, program.pc(), barrierDue, statementPc, statementIsLoop, dropped) == null) {
             return false;
         }
+        reactionsUnderway = true;
         progress++;
         redirectToNextReaction();
         return true;
@@ -1007,9 +1022,15 @@ public final class Agent implements AgentContext, AgentTask {
         return mission.scheduler().nanoTime();
     }
 
+    /** The processing's ending is a break, restart or reelect: nothing is underway any more. */
+    private void abandonEnding() {
+        events.abandonEnding();
+        reactionsUnderway = false;
+    }
+
     /** A reaction runs in one go (§8): from its start to {@link #endReaction()}, no block operation or boundary. */
     private void requireNoReactionRunning(String what) {
-        if (events.isReacting()) {
+        if (reactionsUnderway && events.isReacting()) {
             throw new IllegalStateException(describe() + ": " + what + " inside a reaction");
         }
     }
@@ -1017,7 +1038,7 @@ public final class Agent implements AgentContext, AgentTask {
     /** Neither in a reaction, nor between the last one's end and its ending (resume, break, …). */
     private void requireOutsideReaction(String what) {
         requireNoReactionRunning(what);
-        if (events.isEnding()) {
+        if (reactionsUnderway && events.isEnding()) {
             throw new IllegalStateException(describe() + ": " + what
                     + " after endReaction(): a reaction ends with resumeInterrupted, break, restart or reelect");
         }
