@@ -348,7 +348,10 @@ public final class Agent implements AgentContext, AgentTask {
             throw new IllegalStateException(describe() + ": runtime called again after a suspension");
         }
         suspended = true;
-        busyWaitPark = false;
+        // A volatile write costs a fence; in lock-step no park is a busy-wait's, and this reads it.
+        if (busyWaitPark) {
+            busyWaitPark = false;
+        }
         parkAttends = false;
         return run.issueTicket();
     }
@@ -368,8 +371,10 @@ public final class Agent implements AgentContext, AgentTask {
      * Reads the state a slice of this agent reads first, bringing it into the calling core's cache.
      * A thread about to wake and run a batch of agents calls it on each of them first: their cache
      * misses then overlap, instead of coming one after the other inside each slice. At 100,000
-     * agents, most of an agent-step was that wait (issue 26). The result means nothing; the caller
-     * keeps it (a sum stored in a field) so that the compiler cannot drop the reads.
+     * agents, most of an agent-step was that wait (issue 26); at a few thousand, the state is still
+     * in the core's cache, and a chunk's wake-up skips it ({@code ArrivalCombiner.WARM_FROM}). The
+     * result means nothing; the caller keeps it (a sum stored in a field) so that the compiler
+     * cannot drop the reads.
      */
     public int warmUp() {
         return program.pc() + (barrierDue == null ? 0 : 1) + (reactionsUnderway ? 1 : 0) + stepsThisSlice
