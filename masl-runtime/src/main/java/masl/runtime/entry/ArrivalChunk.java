@@ -29,17 +29,23 @@ final class ArrivalChunk implements WokenBatch {
     int phase;
     private final SliceRun home;
     private final Mission mission;
+    /** Whether {@link #wake} warms its agents first ({@link ArrivalCombiner#WARM_FROM}). */
+    private final boolean warm;
     /** What {@link Agent#warmUp} returned, kept so that its reads are made. */
     private int warmth;
     /** The chunk published before it, while both wait on the barrier's stack. */
     ArrivalChunk below;
 
-    /** A chunk of {@code agents[0]} to {@code agents[count - 1]}; it takes the array over. */
-    ArrivalChunk(Agent[] agents, int count, SliceRun home, Mission mission) {
+    /**
+     * A chunk of {@code agents[0]} to {@code agents[count - 1]}; it takes the array over. If
+     * {@code warm}, its wake-up first reads each agent's state ({@link Agent#warmUp}).
+     */
+    ArrivalChunk(Agent[] agents, int count, SliceRun home, Mission mission, boolean warm) {
         this.agents = agents;
         this.count = count;
         this.home = home;
         this.mission = mission;
+        this.warm = warm;
     }
 
     /** The {@code index}th arrival, before {@link #wake}. */
@@ -54,11 +60,13 @@ final class ArrivalChunk implements WokenBatch {
 
     @Override
     public int wake() {
-        int warmth = 0;
-        for (int i = 0; i < count; i++) {
-            warmth += agents[i].warmUp();
+        if (warm) {
+            int warmth = 0;
+            for (int i = 0; i < count; i++) {
+                warmth += agents[i].warmUp();
+            }
+            this.warmth = warmth;
         }
-        this.warmth = warmth;
         int runnable = 0;
         for (int i = 0; i < count; i++) {
             Agent agent = agents[i];

@@ -167,7 +167,7 @@ class SynchronisationBarrierTest {
 
     /** A chunk of agents given in arrival order, as an ArrivalCombiner makes it. */
     private ArrivalChunk chunk(Agent... inArrivalOrder) {
-        return new ArrivalChunk(inArrivalOrder.clone(), inArrivalOrder.length, null, mission);
+        return new ArrivalChunk(inArrivalOrder.clone(), inArrivalOrder.length, null, mission, true);
     }
 
     private void participants(int count) {
