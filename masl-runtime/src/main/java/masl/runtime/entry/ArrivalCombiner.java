@@ -38,9 +38,9 @@ final class ArrivalCombiner implements SliceRun.Deferred {
     /**
      * The participants from which a chunk's wake-up warms its agents first ({@link Agent#warmUp}):
      * below, the state of the agents a core ran is still in its cache, and the reads only cost.
-     * Measured on two workers with 512 KB of L2 cache each (issue 26, docs/performance.md): warming
-     * cost 11% of the steps at 3,000 agents and 15% at 1,000, and gained 10% at 10,000 and 16% at
-     * 100,000.
+     * Measured on two workers with 512 KB of L2 cache each (issue 26, stop 28, docs/performance.md):
+     * without warming, 1,000 and 3,000 agents stepped 11% faster; with it, 10,000 agents 10% and
+     * 100,000 agents 16% faster.
      */
     static final int WARM_FROM = 4_096;
 
