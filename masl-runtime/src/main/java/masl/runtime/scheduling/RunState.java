@@ -29,7 +29,7 @@ import java.util.function.Supplier;
  *
  * <p><b>One word.</b> The state and the pending ticket are one {@code long} ({@code ticket << 3 |
  * state}), so that an unpark checks the ticket and leaves {@code PARKED} in one compare-and-set,
- * and issuing a ticket is a plain store: while its slice runs with no ticket pending, nobody but
+ * and issuing a ticket is a release store: while its slice runs with no ticket pending, nobody but
  * the agent's own slice can change the word (an unpark needs a pending ticket, a serving claim a
  * parked or finished agent). A lock-step agent-step is then two atomic updates of the agent's
  * word, its park and its unpark, besides the start of its slice (issue 26).
