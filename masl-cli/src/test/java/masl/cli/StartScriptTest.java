@@ -18,7 +18,8 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * The generated start script ({@code bin/masl}) chooses the JIT of each command: the commands that run
  * no mission get C1 alone, those that run one keep the JVM's default, and the user's own options come
- * last, so they decide. Run with a stand-in {@code java} that prints the arguments it was given.
+ * last, so they decide; and a command starts one JVM, its own. Run with a stand-in {@code java} that
+ * prints the arguments it was given.
  */
 class StartScriptTest {
 
@@ -55,6 +56,18 @@ class StartScriptTest {
         assertEquals(List.of("masl.cli.Main", "check", "my program.masl"), jvm.subList(jvm.size() - 3, jvm.size()));
     }
 
+    /**
+     * Debian's template asked the JVM whether it takes {@code --add-opens} with a {@code java -version}
+     * of its own before every run: a second JVM, a fifth of a {@code masl run} from the cache (issue 26).
+     * masl needs Java 17, which takes it: the option is given, and no other JVM is started.
+     */
+    @Test
+    void aCommandStartsOneJvmWhichOpensJavaLangAsTheTemplateDid() throws Exception {
+        List<String> jvm = javaArguments(Map.of(), "run", "a.masl");
+        assertEquals(List.of("started"), Files.readAllLines(home.resolve("jdk/bin/starts")));
+        assertEquals("java.base/java.lang=ALL-UNNAMED", jvm.get(jvm.indexOf("--add-opens") + 1), jvm::toString);
+    }
+
     /** The arguments the script gives java for {@code masl arguments...}, one per line from the stand-in. */
     private List<String> javaArguments(Map<String, String> environment, String... arguments) throws Exception {
         ProcessBuilder builder = new ProcessBuilder(script.toString());
@@ -73,8 +86,7 @@ class StartScriptTest {
 
     /**
      * A copy of the generated script in an installation's place ({@code bin/} beside {@code lib/}), and a
-     * JDK whose {@code java} prints its arguments. The script first asks java whether it takes
-     * {@code --add-opens}, with {@code -version}: that call prints nothing.
+     * JDK whose {@code java} notes each start in {@code starts} beside it and prints its arguments.
      */
     @BeforeEach
     void install() throws IOException {
@@ -82,7 +94,7 @@ class StartScriptTest {
         Files.createDirectories(java.getParent());
         Files.writeString(java, """
                 #!/bin/sh
-                for argument in "$@"; do [ "$argument" = -version ] && exit 0; done
+                echo started >> "$(dirname "$0")/starts"
                 for argument in "$@"; do printf '%s\\n' "$argument"; done
                 """);
         Files.setPosixFilePermissions(java, PosixFilePermissions.fromString("rwxr-xr-x"));
