@@ -145,6 +145,29 @@ public final class InMemoryCompiler {
             this.classes = Map.copyOf(classes);
         }
 
+        /**
+         * The program's own classes are defined here without asking the parent first: no jar of the
+         * class path or agent path can stand in for a class the checker accepted, and loading one
+         * does not make the parent open every jar looking for it (45 ms of a 0.3 s {@code masl run}
+         * from the cache, issue 26). Every other class is loaded the parent's way.
+         */
+        @Override
+        protected Class<?> loadClass(String name, boolean resolve) throws ClassNotFoundException {
+            if (!classes.containsKey(name)) {
+                return super.loadClass(name, resolve);
+            }
+            synchronized (getClassLoadingLock(name)) {
+                Class<?> loaded = findLoadedClass(name);
+                if (loaded == null) {
+                    loaded = findClass(name);
+                }
+                if (resolve) {
+                    resolveClass(loaded);
+                }
+                return loaded;
+            }
+        }
+
         @Override
         protected Class<?> findClass(String name) throws ClassNotFoundException {
             byte[] bytes = classes.get(name);
