@@ -118,10 +118,10 @@ class EntrySemanticsTest {
 
     /**
      * {@code program}'s {@code PAUSE} is how long one agent sleeps before its test, so that it
-     * comes last: {@value #LATE_MS} ms on the pool and on threads, where the others would pass
-     * theirs first anyway; none under a seed, whose scheduler orders the slices itself and explores
-     * the late agent's turn among the others, where a pause would only cost time ({@value #SEEDS}
-     * seeds of {@value #LATE_MS} ms).
+     * comes last: {@value #LATE_MS} ms on the pool and on threads, where the others then pass theirs
+     * first; none under a seed, whose scheduler orders the slices itself and explores the late
+     * agent's turn among the others, so that a pause would only cost time ({@value #SEEDS} seeds of
+     * {@value #LATE_MS} ms).
      */
     private static void assertEveryScheduleGivesWithALateAgent(String name, String program, String journal) {
         MaslMission seeded = MaslMission.fromString(name, program.replace("PAUSE", "0"));

@@ -119,7 +119,8 @@ public final class DescriptorLoader {
             return cached;
         }
         Problems problems = new Problems(source.displayName());
-        DescriptorReader.Result read = DescriptorReader.read(source, !VALIDATED_BEFORE.get() && !ShippedDescriptors.contains(source));
+        boolean validatedBefore = VALIDATED_BEFORE.get();
+        DescriptorReader.Result read = DescriptorReader.read(source, !validatedBefore && !ShippedDescriptors.contains(source));
         problems.addAll(read.problems());
         Declaration declaration = read.root() == null ? null : DeclarationReader.read(read.root(), problems);
         if (declaration == null) {
@@ -139,7 +140,7 @@ public final class DescriptorLoader {
                 problems.throwIfAny();
             }
             AgentType type = TypeAssembler.assemble(declaration, supertype, source, problems);
-            if (!VALIDATED_BEFORE.get()) {
+            if (!validatedBefore) {
                 ImplementationChecker.check(declaration, supertype, implementationClasses, problems);
             }
             problems.throwIfAny();
