@@ -10,7 +10,7 @@ import masl.runtime.trace.TraceEvent;
 import masl.translator.MissionLoader;
 
 /**
- * Goal 3 of issue 26: a mission of 100,000 agents in one synchronous block, in a fresh JVM with the
+ * A mission of 100,000 agents in one synchronous block, in a fresh JVM with the
  * default heap, started as the command starts its JVM ({@link ColdTranslation#runFresh}). {@link
  * #main} is that JVM: it prints the time to start (the program's source to the end of its first step:
  * translating, javac, creating the agents, the first wave), the steps per second of the first

@@ -17,7 +17,7 @@ import masl.jade.JadePlatform;
 
 /**
  * {@code gradle bench}: runs MASL and its baselines side by side in one JVM and prints tables of
- * throughput with ratios against the baselines (issue 13). Every figure is the median of
+ * throughput with ratios against the baselines. Every figure is the median of
  * {@value #RUNS} runs after one warm-up run, the runs of one row interleaved, so that a
  * disturbance of the machine hits every column alike. Not a test: nothing is asserted.
  *
@@ -33,7 +33,7 @@ public final class Bench {
      * The invocation and bridge rows take more runs. On 2 cores each of their JADE columns swings by a
      * quarter from one window to the next (at 10 pairs, 20 JADE threads), raw JADE as much as the
      * bridge, and a median of 5 left the bridge's ratio anywhere from 0.77x to 1.58x from one full run
-     * to the next (docs/performance.md, stop 25).
+     * to the next (docs/performance.md, "Method").
      */
     static final int INVOCATION_RUNS = 11;
     /**
@@ -155,7 +155,7 @@ public final class Bench {
         Callable<Double> elapsed = MaslTranslation.prepare(lines, false);
         Callable<Double> cpu = MaslTranslation.prepare(lines, true);
         System.out.printf(Locale.ROOT, "%26s | %14s | %14s | %12s%n", "first in this JVM (cpu)", "-", rate(cpu.call()), "");
-        // Goal 4 of issue 26: what masl run pays without its cache, in fresh JVMs started as the command starts them.
+        // What masl run pays without its cache, in fresh JVMs started as the command starts them.
         Map<String, double[]> cold = interleaved(RUNS, List.of(
                 new Measure("archive", () -> ColdTranslation.measure(lines, true)),
                 new Measure("plain", () -> ColdTranslation.measure(lines, false))));
@@ -192,7 +192,7 @@ public final class Bench {
         System.out.println();
     }
 
-    /** Item 7 (issue 27): the editor's wait for diagnostics after a change, {@link LspLatency}. */
+    /** The editor's wait for diagnostics after a change, {@link LspLatency}. */
     private static void lsp() throws Exception {
         System.out.println("7. Editor: masl lsp's diagnostics after a one-line change to a generated " + String.format(Locale.ROOT,
                 "%,d", LspLatency.LINES) + "-line program, from didChange sent to publishDiagnostics received");
@@ -208,7 +208,7 @@ public final class Bench {
     }
 
     /**
-     * Goal 2 of issue 26: {@code masl run} as whole processes, {@link StartUp}: before the cache, a first
+     * {@code masl run} as whole processes, {@link StartUp}: before the cache, a first
      * run and a second run of the unchanged program, interleaved.
      */
     private static void startUp() throws Exception {
@@ -239,7 +239,7 @@ public final class Bench {
         System.out.println();
     }
 
-    /** Goal 3 of issue 26: {@link AgentScale}, 100,000 agents in a fresh JVM with the default heap. */
+    /** {@link AgentScale}, 100,000 agents in a fresh JVM with the default heap. */
     private static void scale() throws Exception {
         int agents = 100_000;
         int steps = 1_000;

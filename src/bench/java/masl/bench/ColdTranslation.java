@@ -7,7 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Goal 4 of issue 26: the first translation in a fresh JVM, what {@code masl run} pays every time its
+ * The first translation in a fresh JVM, what {@code masl run} pays every time its
  * cache has not got the program. {@link #main} is that JVM: it translates the benchmark's program once
  * and prints lines per second of the translating thread's CPU time. {@link #measure} starts it as the
  * installed command starts its JVM: masl's jars on the class path, in the command's order, and the

@@ -7,7 +7,7 @@ import java.util.concurrent.atomic.AtomicLong;
  * How far apart two of the machine's cores are now: the time a value takes to go from one thread to
  * another and back through one shared word. On the 2-core virtual machines the bench runs on, the
  * host places the two CPUs near each other or far apart, and moves them from time to time (a round
- * trip of 65-150 ns against 330-700 ns, issue 26, stop 27). Two lock-step workers, which exchange a
+ * trip of 65-150 ns against 330-700 ns). Two lock-step workers, which exchange a
  * few cache lines per chunk of agents, run slower when they are far; MASON's one thread does not
  * notice. The lock-step section prints it beside each row, so that a reader knows which kind of run
  * the row was.

@@ -33,7 +33,7 @@ import org.eclipse.lsp4j.services.LanguageClient;
 import org.eclipse.lsp4j.services.LanguageServer;
 
 /**
- * Item 7 (issue 27): how long an editor waits for {@code masl lsp}'s diagnostics after a change to a
+ * How long an editor waits for {@code masl lsp}'s diagnostics after a change to a
  * 10,000-line program (the translation benchmark's). The server runs in this JVM behind LSP4J's JSON-RPC over
  * piped streams, as {@code masl lsp} does over standard input and output; each change is one line edited
  * (alternately breaking and repairing a name), timed from sending {@code didChange} to receiving the

@@ -11,7 +11,7 @@ import masl.runtime.trace.TraceEvent;
 import masl.translator.MissionLoader;
 
 /**
- * The joining benchmark (issue 13, item 4): the time for N agents to enter a synchronous block and
+ * The joining benchmark: the time for N agents to enter a synchronous block and
  * pass its entry barrier, from the start of the mission (its agents made runnable on a fresh pool)
  * to the release of the last of them, read from the trace. Translating, compiling and creating
  * the agents come before and are left out.

@@ -9,7 +9,7 @@ import masl.runtime.scheduling.PoolScheduler;
 import masl.translator.MissionLoader;
 
 /**
- * MASL's side of the invocation benchmark (issue 13, item 2): pairs of agents in one mission on the
+ * MASL's side of the invocation benchmark: pairs of agents in one mission on the
  * default pool, each pinger invoking its pong's primitive {@code nop} synchronously a fixed number
  * of times, as the JADE pingers of {@code AclPingPong} do; the rate is all the round trips over the
  * mission's run. The pongs skip {@code main} and finish, so each invocation is served on the pong's

@@ -21,7 +21,7 @@ import masl.sim.scenario.SimulationResult;
 import masl.sim.xode.XodeSource;
 
 /**
- * The simulation benchmark (issue 13, item 6): {@value #ROBOTS} wheeled robots on a floor, step
+ * The simulation benchmark: {@value #ROBOTS} wheeled robots on a floor, step
  * 0.01 s, lock-step, each driven by a MASL program that sets its wheel speeds every step, against
  * a bare loop that loads the same bodies into an ode4j world of the same settings and sets the
  * same speeds before every step, in Java, on one thread. Both report simulated seconds per

@@ -11,7 +11,7 @@ import masl.translator.Translator;
 import masl.translator.source.SourceFile;
 
 /**
- * The translation benchmark (issue 13, item 5): MASL lines per second from source text to Java
+ * The translation benchmark: MASL lines per second from source text to Java
  * source text (parsing, analysis against the descriptors, generation; javac left out), on a
  * generated program of about {@code lines} lines: one {@code main} holding a sequence of
  * asynchronous blocks, each with locals, a loop, a condition, a shared update and primitive calls.

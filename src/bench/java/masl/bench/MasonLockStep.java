@@ -7,7 +7,7 @@ import sim.engine.SimState;
 import sim.engine.Steppable;
 
 /**
- * The peer of issue 26: MASON 14, the standard Java library for stepping many agents in lock-step,
+ * The peer a user would pick: MASON 14, the standard Java library for stepping many agents in lock-step,
  * with the same trivial step as the other columns ({@code i++}). One step is one tick of MASON's
  * {@link Schedule} on the calling thread.
  *

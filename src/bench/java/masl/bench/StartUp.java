@@ -10,7 +10,7 @@ import java.util.Map;
 import java.util.stream.Stream;
 
 /**
- * Goal 2 of issue 26: {@code masl run missions/hello.masl} as whole processes of the installed command
+ * {@code masl run missions/hello.masl} as whole processes of the installed command
  * ({@code masl-cli/build/install}, which {@code gradle bench} installs first), elapsed time and the
  * child's CPU time (user and system, from this JVM's {@code /proc/self/stat} once the child is reaped):
  *

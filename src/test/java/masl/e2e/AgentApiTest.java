@@ -18,7 +18,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * The agent API from MASL source (issues 7 and 8, contract §8): invocations of other agents'
+ * The agent API from MASL source (contract §8): invocations of other agents'
  * primitives, futures, attributes, permeability, countermeasures and labels, with the Worker type
  * of {@code src/test/resources/workers}. Each mission runs on the pool, with a thread per agent and
  * over seeds of the deterministic scheduler.

@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Faults of agents from MASL source through {@code masl run} (issue 12): a primitive that throws, and
+ * Faults of agents from MASL source through {@code masl run}: a primitive that throws, and
  * an agent whose program dies while the others go on.
  */
 @Timeout(120)

@@ -17,7 +17,7 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * One front end, one set of diagnostics (issue 20, item 4): {@code masl check} reports every error
+ * One front end, one set of diagnostics: {@code masl check} reports every error
  * {@code masl run} and {@code masl compile} would, the constructs the translator refuses included,
  * with the same text and status; and a program {@code check} accepts, {@code run} runs. The Worker
  * and Scout types of {@code src/test/resources/workers}, found on the class path.

@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Three deliberate deadlocks from MASL source through {@code masl run} (issue 12): each ends by
+ * Three deliberate deadlocks from MASL source through {@code masl run}: each ends by
  * itself with exit status 2 and a report naming, for every agent, the MASL line it waits at. The
  * mission's own duration is read from its trace (first record to {@code mission-ended}), so the
  * time to translate and compile does not count; it is printed with the time from the last change.
@@ -23,7 +23,7 @@ import org.junit.jupiter.api.io.TempDir;
 @Timeout(120)
 class DeadlockReportTest {
 
-    /** Issue 12: "each end within 2 s" (measured: 200-300 ms, the watchdog's two looks 100 ms apart). */
+    /** Each ends within 2 s (measured: 200-300 ms, the watchdog's two looks 100 ms apart). */
     private static final long MISSION_BOUND_NANOS = 2_000_000_000L;
 
     private static final ObjectMapper JSON = new ObjectMapper();

@@ -9,7 +9,7 @@ import java.util.stream.IntStream;
 import masl.translator.parse.Nesting;
 
 /**
- * Random MASL programs at the edges of what the generated Java can hold (issue 22), for {@link FuzzTest}:
+ * Random MASL programs at the edges of what the generated Java can hold, for {@link FuzzTest}:
  * names that are the generated code's own or Java's, literals full of escapes, numbers at and past
  * their type's limits, programs of thousands of statements, blocks, declarations, events or agents,
  * and constructs nested around the depths masl translates. Each program is valid MASL unless an edge

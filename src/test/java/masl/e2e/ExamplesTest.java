@@ -22,9 +22,9 @@ import org.junit.jupiter.params.provider.MethodSource;
 class ExamplesTest {
 
     private static final int RUNS = 50;
-    /** Issue 6: E4 passes 100 times in a row, on each scheduler. */
+    /** E4 passes 100 times in a row, on each scheduler. */
     private static final int E4_RUNS_IN_A_ROW = 100;
-    /** Issue 8: E5 gives exactly its journal 100 times in a row, on each scheduler. */
+    /** E5 gives exactly its journal 100 times in a row, on each scheduler. */
     private static final int E5_RUNS_IN_A_ROW = 100;
     private static final int SEEDS = 500;
 

@@ -39,12 +39,12 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Bad input never crashes masl (issue 12): the example programs (E1 to E8, the missions; 200 mutants
+ * Bad input never crashes masl: the example programs (E1 to E8, the missions; 200 mutants
  * each) and the shipped descriptors (250 each), mutated with a seeded {@link Random} (tokens and
  * lines deleted, duplicated and swapped, random bytes written over or inserted, the text cut short),
  * are translated (or, for a descriptor, analysed with a program importing it): nothing may throw,
  * and a mutant that fails has only positioned diagnostics ({@code file:line:col}). Generated programs
- * at the edges of what Java holds (issue 22: names, escapes, numbers, sizes, depths) must also
+ * at the edges of what Java holds (names, escapes, numbers, sizes, depths) must also
  * compile when they translate, and generated XODE nested up to and past the loader's limit must
  * load or be refused with located problems. A failing case is written to {@code build/fuzz/} to be
  * replayed with {@code masl check}.
@@ -121,7 +121,7 @@ class FuzzTest {
     }
 
     /**
-     * Programs at the edges of what Java holds (issue 22): names, escapes, numbers, sizes, depths
+     * Programs at the edges of what Java holds: names, escapes, numbers, sizes, depths
      * ({@link EdgePrograms}). Each translates to Java that javac compiles and whose mission class
      * loads, or fails with positioned diagnostics only. The Java of all of them is compiled at once;
      * if javac refuses it, each program is compiled alone to name the one at fault.

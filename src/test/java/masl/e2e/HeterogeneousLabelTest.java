@@ -12,7 +12,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * Labels over members only some types have (issue 20, item 4; MASL §4, §10): for an addressee whose
+ * Labels over members only some types have (MASL §4, §10): for an addressee whose
  * type lacks the primitive, the label's invocation is a {@code nop()} that counts as done at once and
  * stores nothing. A team of a Worker and a Scout ({@code src/test/resources/workers}): only the Scout
  * has {@code sweep} (asynchronous), {@code scan} (synchronous) and {@code range}.

@@ -8,8 +8,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * A labelled call of a synchronous primitive completes before the instruction ends (MASL §10,
- * issue 20 item 5): right after {@code l.got = b.twice(i);} the label has nothing pending and
+ * A labelled call of a synchronous primitive completes before the instruction ends (MASL §10):
+ * right after {@code l.got = b.twice(i);} the label has nothing pending and
  * {@code got} holds the result. The two Workers call each other, so every call is external and
  * is served on the callee's thread while the caller waits: the case where the caller used to wake
  * before the label had counted the call.

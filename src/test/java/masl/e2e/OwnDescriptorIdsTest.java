@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * Member ids belong to their descriptor (issue 20 item 6, agent-types.md, components.md "Agent path"):
+ * Member ids belong to their descriptor (agent-types.md, components.md "Agent path"):
  * a redefinition with an id of its own, and a user's own Default.xml next to the program, which is
  * the root type with its own ids and states.
  */

@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Issue 11, mission 3: {@code missions/planner-team.masl}, three wheeled robots and a software
+ * The mixed team mission: {@code missions/planner-team.masl}, three wheeled robots and a software
  * planner through {@code masl run --sim}, lock-step. Two boxes the robots do not know about stand
  * across the paths of k0 and k2; they report them to the planner by events, drive around them on
  * the way-points the planner returns to their asynchronous invocations (collected by labels), and

@@ -12,7 +12,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Issue 11, mission 1: {@code missions/row-walking.masl}, one program, walks a row of 3 and of 6
+ * The row-walking mission: {@code missions/row-walking.masl}, one program, walks a row of 3 and of 6
  * atoms forward through {@code masl run --sim}, in lock-step, the same way twice.
  */
 class RowWalkingMissionTest {

@@ -27,7 +27,7 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * 500 agents for 30 s (issue 12): 494 joiners enter and leave the synchronous blocks {@code work}
+ * 500 agents for 30 s: 494 joiners enter and leave the synchronous blocks {@code work}
  * and its child {@code inner} by {@code reelect} and {@code break(work)}, 5 emitters emit {@code tick}
  * to everyone, a keeper releases whoever waits at the locked entry barriers. The trace, checked as it
  * streams ({@link MembershipChecker}), must show no barrier trip missing a member and no member lost;

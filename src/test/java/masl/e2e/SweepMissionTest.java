@@ -16,7 +16,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
 /**
- * Issue 11, mission 2: {@code missions/sweep.masl}, four wheeled robots sweeping four lanes through
+ * The sweep mission: {@code missions/sweep.masl}, four wheeled robots sweeping four lanes through
  * {@code masl run --sim}, lock-step. One robot fails mid-lane (in the second scenario, the leader):
  * the whole arena is still swept, the failed robot's lane by another robot, and the trace shows the
  * failed robot dropping out, the lead passing on, and the leader asking the robot it re-elects the

@@ -17,7 +17,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * {@code masl run --trace}: every record of an agent at a statement carries that statement's MASL
- * line and source (issue 12), shown on example E4 (events), seeded.
+ * line and source, shown on example E4 (events), seeded.
  */
 @Timeout(120)
 class TraceSourcePositionTest {

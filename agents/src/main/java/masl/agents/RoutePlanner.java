@@ -6,7 +6,7 @@ import java.util.Locale;
 
 /**
  * A software agent that plans robots' routes around the obstacles they report (descriptor
- * {@code RoutePlanner.xml}, issue 11's mixed team). An obstacle is known as a disc: a robot reports
+ * {@code RoutePlanner.xml}, the mixed team of missions/planner-team.masl). An obstacle is known as a disc: a robot reports
  * where its ray hit something, and the planner assumes a body of up to {@link #DEPTH} behind that
  * point and keeps {@link #RADIUS} around its centre free. A route goes straight to the goal unless
  * it crosses a disc; then it side-steps the disc by two way-points (the first disc it meets first),

@@ -13,7 +13,7 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Programs at the edges of what Java holds (issue 22) end with the statuses a user expects: 0 when
+ * Programs at the edges of what Java holds end with the statuses a user expects: 0 when
  * they simply work, 1 with a positioned error when Java cannot hold them; never 70, the internal
  * error each of them was.
  */

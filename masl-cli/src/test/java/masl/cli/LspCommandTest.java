@@ -53,7 +53,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * {@code masl lsp} as an editor meets it (issue 27): the command runs with its standard input and output
+ * {@code masl lsp} as an editor meets it: the command runs with its standard input and output
  * piped to an LSP4J client, which opens a program, edits it and asks for completion, hover and definitions.
  */
 class LspCommandTest {

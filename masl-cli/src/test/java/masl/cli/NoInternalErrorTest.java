@@ -16,8 +16,8 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Inputs that once made {@code masl} fail with an internal error (status 70) or leak a stack trace
- * (issue 22): each is now a usage error, a clear one-line error, or simply works.
+ * Inputs that once made {@code masl} fail with an internal error (status 70) or leak a stack trace:
+ * each is now a usage error, a clear one-line error, or simply works.
  */
 @Timeout(120)
 class NoInternalErrorTest {

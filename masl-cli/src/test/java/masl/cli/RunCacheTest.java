@@ -28,7 +28,7 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * {@code masl run}'s cache of compiled missions (issue 26): an unchanged program runs from it, a
+ * {@code masl run}'s cache of compiled missions: an unchanged program runs from it, a
  * changed program or descriptor never runs a stale entry, a tampered entry is not run, and masl
  * processes writing the same entry at once leave one that runs.
  */

@@ -58,7 +58,7 @@ class StartScriptTest {
 
     /**
      * Debian's template asked the JVM whether it takes {@code --add-opens} with a {@code java -version}
-     * of its own before every run: a second JVM, a fifth of a {@code masl run} from the cache (issue 26).
+     * of its own before every run: a second JVM, a fifth of a {@code masl run} from the cache.
      * masl needs Java 17, which takes it: the option is given, and no other JVM is started.
      */
     @Test

@@ -24,8 +24,8 @@ import masl.runtime.AgentImplementation;
  * the watchdog and interrupts the primitives still running, whose requesters are refused.
  *
  * <p>On the serving thread, not handed to a thread of its own: the hand-over and the wake-up back
- * cost two thread switches per request, which made the bridge's round trip 1.5× raw JADE's
- * (issue 26, goal 5). The price: a primitive that ignores interruption holds the agent until it
+ * cost two thread switches per request, which made the bridge's round trip 1.5× raw JADE's.
+ * The price: a primitive that ignores interruption holds the agent until it
  * returns; its requester is then answered the same {@code TimeoutException}.
  */
 final class OutsideCalls implements AutoCloseable {

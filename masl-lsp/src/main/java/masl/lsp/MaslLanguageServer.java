@@ -23,7 +23,7 @@ import org.eclipse.lsp4j.services.WorkspaceService;
 
 /**
  * The MASL language server: diagnostics, completion, hover, go to definition, the outline and folding of
- * MASL programs (issue 27). {@link MaslLsp#serve} runs it over a pair of streams.
+ * MASL programs. {@link MaslLsp#serve} runs it over a pair of streams.
  */
 public final class MaslLanguageServer implements LanguageServer, LanguageClientAware {
 

@@ -10,7 +10,7 @@ import org.eclipse.lsp4j.InsertTextFormat;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
-/** Completion (issue 27): what the editor offers after a dot, in a jump, in an emit, and among plain names. */
+/** Completion: what the editor offers after a dot, in a jump, in an emit, and among plain names. */
 class CompletionTest {
 
     private final Editor editor = new Editor();

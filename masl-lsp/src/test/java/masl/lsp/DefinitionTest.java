@@ -12,7 +12,7 @@ import org.eclipse.lsp4j.Location;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
-/** Go to definition (issue 27): names to their declarations, types to their imports, imports to descriptors. */
+/** Go to definition: names to their declarations, types to their imports, imports to descriptors. */
 class DefinitionTest {
 
     private final Editor editor = new Editor();

@@ -18,7 +18,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Diagnostics (issue 27): the front end's, placed where the editor underlines them, for the program and
+ * Diagnostics: the front end's, placed where the editor underlines them, for the program and
  * for the descriptors it imports, and cleared when they are gone.
  */
 class DiagnosticsTest {

@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
-/** Hover (issue 27): what a primitive, an attribute, a block and a declared name are, in the editor's words. */
+/** Hover: what a primitive, an attribute, a block and a declared name are, in the editor's words. */
 class HoverTest {
 
     private final Editor editor = new Editor();

@@ -8,7 +8,7 @@ import org.eclipse.lsp4j.DocumentSymbol;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
-/** Document symbols (issue 27): the types, the agents, then the block tree with declarations and reactions. */
+/** Document symbols: the types, the agents, then the block tree with declarations and reactions. */
 class OutlineTest {
 
     private final Editor editor = new Editor();

@@ -92,7 +92,7 @@ public final class Agent implements AgentContext, AgentTask {
      * Set after an invocation is queued; cleared by the agent's own boundary before it serves its
      * queue, and set again if some stay queued. A boundary, or the end of a slice, that finds it
      * clear reads no queue: the queue is objects of their own, cache lines an agent-step would
-     * otherwise fetch for nothing (issue 26).
+     * otherwise fetch for nothing.
      */
     private volatile boolean invocationsQueued;
     /**
@@ -123,7 +123,7 @@ public final class Agent implements AgentContext, AgentTask {
      * From the start of an event processing to its ending (resumed or abandoned) or the program's
      * death: false says that {@link #events} has no reaction running or ending, without reading it.
      * Every step boundary and loop iteration asks; in lock-step, this field saves an agent-step the
-     * cache line of another object (issue 26).
+     * cache line of another object.
      */
     private boolean reactionsUnderway;
     /** Whether the latest park is a {@code wait(state)}'s, the only one that makes the agent attentive. */
@@ -371,7 +371,7 @@ public final class Agent implements AgentContext, AgentTask {
      * Reads the state a slice of this agent reads first, bringing it into the calling core's cache.
      * A thread about to wake and run a batch of agents calls it on each of them first: their cache
      * misses then overlap, instead of coming one after the other inside each slice. At 100,000
-     * agents, most of an agent-step was that wait (issue 26); at a few thousand, the state is still
+     * agents, most of an agent-step was that wait; at a few thousand, the state is still
      * in the core's cache, and a chunk's wake-up skips it ({@code ArrivalCombiner.WARM_FROM}). The
      * result means nothing; the caller keeps it (a sum stored in a field) so that the compiler
      * cannot drop the reads.

@@ -21,7 +21,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
 /**
- * Agent faults (issue 12): a primitive that hangs past the call timeout gives {@code timeout} and its
+ * Agent faults: a primitive that hangs past the call timeout gives {@code timeout} and its
  * default value, internal, external or launched; one that throws gives {@code uncaught_exception};
  * an agent whose program dies leaves its blocks, the others go on, the trace says why.
  */

@@ -6,7 +6,7 @@ import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 
 /**
- * Issue 3: an agent reaches an e-sequence (MASL §6.3) when it enters one of its blocks, or tests
+ * An agent reaches an e-sequence (MASL §6.3) when it enters one of its blocks, or tests
  * and skips them all; failing the test of the first block only is not reaching it. Counting that
  * failure let the first block's free entry barrier open before the failing agents had tested the
  * second block, and some seeds then deadlocked.

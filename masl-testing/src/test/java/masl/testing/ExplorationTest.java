@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
 
-/** Issue 4: exploring seeded schedules finds the interleavings a mission's correctness depends on. */
+/** Exploring seeded schedules finds the interleavings a mission's correctness depends on. */
 class ExplorationTest {
 
     /**

@@ -7,7 +7,7 @@ import java.util.HashSet;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 
-/** Issue 4: a seed reproduces a run, journal and trace alike. */
+/** A seed reproduces a run, journal and trace alike. */
 class ReplayTest {
 
     /** Asynchronous interleavings, a scalar block run by whichever agent comes first, a sleep. */

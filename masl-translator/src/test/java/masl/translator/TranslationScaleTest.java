@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * Checking and translating take time linear in the size of the program (issue 22: {@code masl check}
+ * Checking and translating take time linear in the size of the program ({@code masl check}
  * of 100,000 agents took 100 s, of 12,500 agents 1.1 s). Doubling the input may not more than triple
  * the time. Each size is measured several times, interleaved with the other, after a warm-up, and
  * the least CPU time of each is compared: CPU time, not elapsed time, because other jobs on a loaded

@@ -17,7 +17,7 @@ import masl.jade.JadeOptions;
 import masl.jade.JadePlatform;
 
 /**
- * The baseline of issue 13: raw JADE {@code REQUEST}/{@code INFORM} round trips per second between
+ * The invocation benchmark's baseline: raw JADE {@code REQUEST}/{@code INFORM} round trips per second between
  * pairs of agents in one container, no MASL involved. Each pinger sends a request with the
  * bridge's JSON content and a fresh {@code reply-with}, waits for its pong's {@code INFORM}, and
  * sends the next; round trips are counted over a measuring window that follows a warm-up, all pairs

@@ -23,7 +23,7 @@ import masl.runtime.descriptor.AgentType;
 import masl.runtime.descriptor.DescriptorLoader;
 
 /**
- * The bridge's overhead (issue 13, item 3): the ping-pong of {@link AclPingPong}, but each pong is
+ * The bridge's overhead: the ping-pong of {@link AclPingPong}, but each pong is
  * a MASL agent running inside JADE through the bridge ({@link JadeLauncher}), whose primitive
  * {@code nop} the pinger invokes; the request is served as MASL §5 serves external invocations (the
  * agent is blocked, so on its behalf, on its program's thread). Printed side by side with the raw

@@ -239,7 +239,7 @@ final class DescriptorReader {
     private static XMLInputFactory secureInputFactory() {
         // Made directly: XMLInputFactory.newFactory() looks its provider up through the system
         // properties, jaxp.properties and every jar's META-INF/services, 35-40 ms of a 0.3 s masl run
-        // from the cache (issue 26), and might find another one on a build tool's class path.
+        // from the cache, and might find another one on a build tool's class path.
         XMLInputFactory factory = new WstxInputFactory();
         factory.setProperty(XMLInputFactory.SUPPORT_DTD, false);
         factory.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false);

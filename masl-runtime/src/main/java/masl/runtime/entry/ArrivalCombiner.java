@@ -38,7 +38,7 @@ final class ArrivalCombiner implements SliceRun.Deferred {
     /**
      * The participants from which a chunk's wake-up warms its agents first ({@link Agent#warmUp}):
      * below, the state of the agents a core ran is still in its cache, and the reads only cost.
-     * Measured on two workers with 512 KB of L2 cache each (issue 26, stop 28, docs/performance.md):
+     * Measured on two workers with 512 KB of L2 cache each (a measurement, not kept in docs/performance.md):
      * without warming, 1,000 and 3,000 agents stepped 11% faster; with it, 10,000 agents 10% and
      * 100,000 agents 16% faster.
      */
@@ -115,7 +115,7 @@ final class ArrivalCombiner implements SliceRun.Deferred {
      * mission with no publication yet asks the default). Each chunk's publication and trip update
      * words that every thread writes (the barrier's count and stack, the home queue, the watchdog's
      * count): where the cache line of such a word takes 300–700 ns to move between the two cores,
-     * chunks of 32 halved lock-step at 1,000 agents (issue 26, stop 27; docs/performance.md).
+     * chunks of 32 halved lock-step at 1,000 agents (measured on two workers).
      */
     @Override
     public int slicesPerFlush(int threads) {

@@ -39,7 +39,7 @@ import java.util.concurrent.locks.LockSupport;
  * {@value #HAND_OVERS} in a row, then behind the common queue; the runner wakes another only if more
  * work waits then. So agents that take turns (an invocation and its serving slice, an event and its
  * reaction) cost no thread wake-up and stay on one core, where their state is; through the common
- * queue, both runners contend for its head and a round trip may cross cores (issue 26: 10 pairs of
+ * queue, both runners contend for its head and a round trip may cross cores (10 pairs of
  * invocations ran at 0.8-2.4 M round trips per second from mission to mission, 2.0-6.0 M with the
  * slot). A runner whose agent blocks in a primitive
  * ({@link Blocking}) stops counting while it blocks, so another runner takes over the queues on the

@@ -32,7 +32,7 @@ import java.util.function.Supplier;
  * and issuing a ticket is a release store: while its slice runs with no ticket pending, nobody but
  * the agent's own slice can change the word (an unpark needs a pending ticket, a serving claim a
  * parked or finished agent). A lock-step agent-step is then two atomic updates of the agent's
- * word, its park and its unpark, besides the start of its slice (issue 26).
+ * word, its park and its unpark, besides the start of its slice.
  *
  * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
  * friend packages), and may change without notice.
@@ -51,7 +51,7 @@ public final class RunState {
     private static final long STATE_MASK = (1L << STATE_BITS) - 1;
 
     // Updated through a VarHandle rather than an AtomicLong of its own: one object is one cache line
-    // to fetch where two were (issue 26). Its arguments have the field's exact type (long): a call
+    // to fetch where two were. Its arguments have the field's exact type (long): a call
     // whose types differ (an int literal) takes VarHandle's adapting path, a method-handle chain the
     // JIT does not reduce to one CAS.
     private static final VarHandle WORD;

@@ -23,7 +23,7 @@ public interface WokenBatch {
      * <p>The runnable agents stay in the batch: a batch lives for one step, so its array is in the
      * young generation, and filling it writes no reference into long-lived memory. A reference stored
      * there (a list kept from batch to batch) costs G1 a card mark, a fence and later a refinement
-     * thread's scan per agent per step (issue 26, 100,000 agents).
+     * thread's scan per agent per step (at 100,000 agents).
      */
     int wake();
 

@@ -78,7 +78,7 @@ final class AgentMembers {
     /** The types declaring {@code declarations}, each once, in their order. */
     static List<ImportedType> owners(List<? extends Declared<?>> declarations) {
         // A loop, not a stream: this runs for every member access, often before the JIT has compiled
-        // it, and a stream pipeline costs the interpreter many calls (issue 26, cold translation).
+        // it, and a stream pipeline costs the interpreter many calls (the cold translation).
         List<ImportedType> owners = new ArrayList<>(declarations.size());
         for (Declared<?> declaration : declarations) {
             if (!owners.contains(declaration.owner())) {

@@ -23,7 +23,7 @@ import masl.translator.source.SourceFile;
 
 /**
  * The compiled missions of earlier runs, so that running an unchanged program again skips
- * translating and compiling it (issue 26; the threat model is in docs/decisions.md, "The cache of
+ * translating and compiling it (the threat model is in docs/decisions.md, "The cache of
  * compiled missions"). An entry is found by its {@link MissionKey}, a digest of everything the
  * translation read, so a changed program, descriptor, agent class, masl or JDK finds no entry. An
  * entry is written whole to a temporary file and renamed into place, so readers, and other masl

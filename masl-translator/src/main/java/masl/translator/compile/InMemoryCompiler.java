@@ -149,7 +149,7 @@ public final class InMemoryCompiler {
          * The program's own classes are defined here without asking the parent first: no jar of the
          * class path or agent path can stand in for a class the checker accepted, and loading one
          * does not make the parent open every jar looking for it (45 ms of a 0.3 s {@code masl run}
-         * from the cache, issue 26). Every other class is loaded the parent's way.
+         * from the cache). Every other class is loaded the parent's way.
          */
         @Override
         protected Class<?> loadClass(String name, boolean resolve) throws ClassNotFoundException {

@@ -21,7 +21,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * Deep nesting translates, compiles and runs, whatever the caller's stack (issue 22: 2,000 levels of
+ * Deep nesting translates, compiles and runs, whatever the caller's stack (2,000 levels of
  * brackets, blocks or operators overflowed the stack, an internal error); past masl's limit it is a
  * positioned error naming the limit.
  */

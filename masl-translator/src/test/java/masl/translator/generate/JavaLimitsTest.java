@@ -14,7 +14,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * What Java cannot hold is a positioned error of the program, never javac's error on the generated
- * code (issue 22: each was an internal error, exit 70): a number literal out of range, a string
+ * code (each was once an internal error, exit 70): a number literal out of range, a string
  * constant over 65,535 bytes, a statement over the 64 KB of a method; and MASL names that are the
  * generated code's own names are renamed, not clashed with.
  */

@@ -13,7 +13,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * Programs of any size compile (issue 22: a block of 3,000 statements was javac's "code too large",
+ * Programs of any size compile (a block of 3,000 statements was javac's "code too large",
  * an internal error): the state machine, the class initialiser of the static structure and
  * {@code reactionPc} are split between methods and classes, and the program still runs as written.
  */

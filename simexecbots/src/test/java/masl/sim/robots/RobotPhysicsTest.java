@@ -12,7 +12,7 @@ import masl.sim.xode.XodeException;
 import masl.sim.xode.XodeSource;
 import org.junit.jupiter.api.Test;
 
-/** The checks of issue 10, "How it is checked", physics part, on the simulated robots. */
+/** The physics checks of the simulated robots: each robot moves, turns, falls and latches as its model says. */
 class RobotPhysicsTest {
 
     /** The ground z = 0 and a wall whose face towards the origin is the plane x = {@code 0.5}. */

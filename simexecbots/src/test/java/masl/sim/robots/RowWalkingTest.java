@@ -9,7 +9,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
- * A row of atoms latched foot to foot walks with the gait of issue 11, driven here straight from
+ * A row of atoms latched foot to foot walks with the gait of missions/row-walking.masl, driven here straight from
  * Java: all side legs back on the ground; then the odd atoms' left legs and the even atoms' right
  * legs lift, swing forward and land; then the other side legs; repeat.
  */

@@ -123,7 +123,7 @@ class ScenarioLoaderTest {
         assertEquals(1, load("<scenario><physics slicesPerStep=\"1\"/></scenario>").slicesPerStep(), "one slice per step");
     }
 
-    /** A physics step cannot be interrupted: numbers that would make one run for hours are errors (issue 22). */
+    /** A physics step cannot be interrupted: numbers that would make one run for hours are errors. */
     @Test
     void numbersThatWouldMakeAStepEndlessAreBounded() throws Exception {
         assertEquals(List.of(

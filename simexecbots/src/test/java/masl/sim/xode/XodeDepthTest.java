@@ -7,7 +7,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
 
 /**
- * Deeply nested XODE loads whatever the caller's stack (issue 22: 2,000 nested bodies overflowed
+ * Deeply nested XODE loads whatever the caller's stack (2,000 nested bodies overflowed
  * it, an internal error); past the limit it is a located error naming the limit.
  */
 class XodeDepthTest {
