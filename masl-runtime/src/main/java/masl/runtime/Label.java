@@ -14,6 +14,12 @@ import masl.runtime.scheduling.ChangeEpoch;
  * {@link #isFinished()} true reads every stored result. Completions advance the mission's change
  * epoch, so a busy-wait on {@code isFinished()} parks instead of spinning and wakes at the last one.
  *
+ * <p><b>Memory consistency effects.</b> The store of a completion's result and its count happen-before
+ * any read of the label ({@link #isFinished()}, {@link #getRemainingInvocations()}) that sees the count,
+ * and so before what the program does after it (checked by the jcstress test
+ * {@code LabelStoreBeforeCount}); a registration is never lost to a concurrent completion
+ * ({@code LabelRegisterWhileCompleting}).
+ *
  * <p>{@link #register} gives back a future that completes only once the completion is stored and
  * counted: a synchronous call awaits that one, so the instruction that made it ends with the
  * call done, counted and its result stored (§10), whichever thread served it.

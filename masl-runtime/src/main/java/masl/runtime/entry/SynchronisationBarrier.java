@@ -60,6 +60,14 @@ import masl.runtime.Agent;
  * two trips is lost: an arrival for the next phase is pushed only once its agent was let go by the
  * trip, or, for a joiner, after its join, which comes after the previous trip under the lock.
  *
+ * <p><b>Memory consistency effects.</b> Actions of an agent's slice before its arrival happen-before
+ * the actions of the thread that trips the phase (the arrival's push and count are atomic updates
+ * that the completing arrival or the tripping change reads), and the trip's hand-over of the agents
+ * to the scheduler makes them happen-before each agent's next slice: what every participant wrote in
+ * a step is visible to every participant in the next. Checked by the jcstress tests
+ * {@code BarrierLastArrival} (concurrent arrivals) and {@code BarrierArrivalOrJoin} (an arrival
+ * against a join).
+ *
  * <p><b>Trace.</b> An arrival writes no trace record: it changes no membership, and a record of
  * it, written without the lock, could only be ordered against the others by a clock. The trip is
  * the record of a completed phase, written under the lock among the membership changes.

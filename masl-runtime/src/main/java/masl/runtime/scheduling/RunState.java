@@ -34,6 +34,14 @@ import java.util.function.Supplier;
  * parked or finished agent). A lock-step agent-step is then two atomic updates of the agent's
  * word, its park and its unpark, besides the start of its slice.
  *
+ * <p><b>Memory consistency effects.</b> Actions of a slice before it issues a ticket happen-before
+ * the actions of whoever reads that ticket pending and {@linkplain #unpark unparks} with it (a
+ * release store, read by the unpark's volatile read and compare-and-set). Actions of a thread before
+ * a successful {@code unpark} or {@code claimServing} happen-before the actions of the slice that the
+ * scheduler then runs for the agent. Actions of a slice before {@link #park} happen-before the
+ * actions of a waker whose {@code unpark} returns true. These races are checked by the jcstress
+ * tests {@code RunStateParkOrWakeUp}, {@code RunStateTwoWakeUps} and {@code RunStateServeOrWakeUp}.
+ *
  * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
  * friend packages), and may change without notice.
  */
