@@ -1,6 +1,5 @@
 package masl.runtime.descriptor;
 
-import com.ctc.wstx.stax.WstxInputFactory;
 import java.io.FileNotFoundException;
 import java.io.IOException;
 import java.io.InputStream;
@@ -18,7 +17,6 @@ import java.util.Map;
 import java.util.Optional;
 import javax.xml.XMLConstants;
 import javax.xml.stream.Location;
-import javax.xml.stream.XMLInputFactory;
 import javax.xml.stream.XMLStreamConstants;
 import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamReader;
@@ -26,7 +24,7 @@ import javax.xml.transform.stream.StreamSource;
 import javax.xml.validation.Schema;
 import javax.xml.validation.SchemaFactory;
 import javax.xml.validation.ValidatorHandler;
-import org.codehaus.stax2.XMLInputFactory2;
+import masl.runtime.xml.SecureXml;
 import org.xml.sax.ErrorHandler;
 import org.xml.sax.Locator;
 import org.xml.sax.SAXException;
@@ -35,16 +33,13 @@ import org.xml.sax.helpers.AttributesImpl;
 
 /**
  * Reads a descriptor into an {@link XmlElement} tree and validates it against {@code agent-type.xsd} in
- * the same pass. Reading uses Woodstox's StAX factory ({@link WstxInputFactory}), configured so
- * that no DTD is processed (a {@code <!DOCTYPE>} line is skipped, nothing is fetched) and no entity is
- * expanded (a reference to one is an error). The validator is fed the reader's events directly, so its
+ * the same pass. Reading uses masl's one XML reader ({@link SecureXml}): no DTD is processed, nothing
+ * is fetched and no entity is expanded. The validator is fed the reader's events directly, so its
  * errors carry the reader's positions and it never sees a DTD. Thread-safe.
  */
 final class DescriptorReader {
 
     static final String SCHEMA_RESOURCE = "agent-type.xsd";
-
-    private static final XMLInputFactory INPUT = secureInputFactory();
 
     /** The tree (null when the file is not well-formed or unreadable) and the problems found. */
     record Result(XmlElement root, List<DescriptorProblem> problems) {
@@ -70,7 +65,7 @@ final class DescriptorReader {
         List<DescriptorProblem> problems = new ArrayList<>();
         String file = source.displayName();
         try (InputStream in = source.open()) {
-            XMLStreamReader reader = INPUT.createXMLStreamReader(source.uri().toString(), in);
+            XMLStreamReader reader = SecureXml.reader(source.uri().toString(), in);
             try {
                 return new Result(readValidating(reader, file, problems, validate), problems);
             } finally {
@@ -90,7 +85,7 @@ final class DescriptorReader {
     /** The {@code full_class_name} of the root element, or empty when unreadable or absent. */
     static Optional<String> peekFullClassName(DescriptorSource source) {
         try (InputStream in = source.open()) {
-            XMLStreamReader reader = INPUT.createXMLStreamReader(source.uri().toString(), in);
+            XMLStreamReader reader = SecureXml.reader(source.uri().toString(), in);
             try {
                 while (reader.hasNext()) {
                     if (reader.next() == XMLStreamConstants.START_ELEMENT) {
@@ -172,22 +167,14 @@ final class DescriptorReader {
      * not UTF-8, found by the decoder under the parser) is placed at the first such byte.
      */
     private static DescriptorProblem notWellFormed(String file, XMLStreamException e, DescriptorSource source) {
-        Location location = e.getLocation();
-        String message = String.valueOf(e.getMessage());
-        // Woodstox appends "\n at [row,col ...]" to its messages; the position has its own fields.
-        int positionSuffix = message.indexOf("\n at [");
-        if (positionSuffix >= 0) {
-            message = message.substring(0, positionSuffix);
-        }
-        int line = location == null ? 0 : Math.max(location.getLineNumber(), 0);
-        // At the end of the input the parser may give column 0: the position is the line's start.
-        int column = location == null ? 0 : Math.max(location.getColumnNumber(), 1);
+        int line = SecureXml.lineOf(e);
+        int column = SecureXml.columnOf(e);
         if (line == 0) {
             int[] position = firstMalformedUtf8(source);
             line = position[0];
             column = position[1];
         }
-        return new DescriptorProblem(file, line, column, "not well-formed XML: " + message.strip());
+        return new DescriptorProblem(file, line, column, "not well-formed XML: " + SecureXml.messageOf(e));
     }
 
     /** Line and column (from 1) of the first byte of {@code source} that is not UTF-8, or of its start if none. */
@@ -234,25 +221,6 @@ final class DescriptorReader {
 
     private static String nonNull(String namespace) {
         return namespace == null ? "" : namespace;
-    }
-
-    private static XMLInputFactory secureInputFactory() {
-        // Made directly: XMLInputFactory.newFactory() looks its provider up through the system
-        // properties, jaxp.properties and every jar's META-INF/services, 35-40 ms of a 0.3 s masl run
-        // from the cache, and might find another one on a build tool's class path.
-        XMLInputFactory factory = new WstxInputFactory();
-        factory.setProperty(XMLInputFactory.SUPPORT_DTD, false);
-        factory.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false);
-        factory.setProperty(XMLInputFactory.IS_NAMESPACE_AWARE, true);
-        factory.setProperty(XMLInputFactory.IS_COALESCING, true);
-        if (factory.isPropertySupported(XMLInputFactory2.P_LAZY_PARSING)) {
-            // Errors then surface from next(), where they are caught, not later from getText().
-            factory.setProperty(XMLInputFactory2.P_LAZY_PARSING, false);
-        }
-        factory.setXMLResolver((publicId, systemId, baseUri, namespace) -> {
-            throw new XMLStreamException("external resource " + systemId + " is not loaded");
-        });
-        return factory;
     }
 
     private static Schema loadSchema() {

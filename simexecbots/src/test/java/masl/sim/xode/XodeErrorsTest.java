@@ -36,7 +36,7 @@ class XodeErrorsTest {
     @Test
     void malformedXmlIsLocated() {
         XodeException e = Xode.failure("<xode version=\"1.0r23\">\n<world>\n</xode>\n", LoadOptions.defaults());
-        assertSingle(e, 3, 3, "", "malformed XML");
+        assertSingle(e, 3, 6, "", "malformed XML: Unexpected close tag </xode>; expected </world>");
     }
 
     @Test
