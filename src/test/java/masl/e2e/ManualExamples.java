@@ -36,7 +36,7 @@ final class ManualExamples {
             asynchronous entry main (true) {
             """;
 
-    private static final Set<String> EXPECTATIONS = Set.of("journal", "error");
+    private static final Set<String> EXPECTATIONS = Set.of("journal", "error", "failure");
     private static final String TIMEOUT_SECONDS = "60";
 
     private final ManualPage page;
@@ -102,18 +102,38 @@ final class ManualExamples {
         if (next.language().equals("error")) {
             return new Check(block.where(), () -> expectErrors(block, next));
         }
+        if (next.language().equals("failure")) {
+            return new Check(block.where(), () -> expectFailure(block, next));
+        }
         return new Check(block.where(), () -> expectJournal(block, next));
     }
 
     private void expectErrors(CodeBlock block, CodeBlock errors) {
         Path program = programFile(block, block.text());
         MaslCommand check = MaslCommand.run("check", program.toString(), "--agent-path", folder.toString());
-        String shown = check.err().replace(program.getParent() + "/", "");
+        String shown = withoutFolders(check.err(), program);
         if (check.status() != 1 || !shown.equals(errors.text())) {
             throw new AssertionError(block.where() + ": masl check gives status " + check.status()
                     + " and, instead of the errors shown at " + errors.where() + ":\n" + errors.text()
                     + "this:\n" + shown);
         }
+    }
+
+    private void expectFailure(CodeBlock block, CodeBlock failure) {
+        Path program = programFile(block, block.text());
+        MaslCommand run = MaslCommand.run("run", program.toString(), "--agent-path", folder.toString(), "--timeout",
+                TIMEOUT_SECONDS);
+        String shown = withoutFolders(run.err(), program);
+        if (run.status() != 2 || !shown.equals(failure.text())) {
+            throw new AssertionError(block.where() + ": masl run gives status " + run.status()
+                    + " and, instead of the report shown at " + failure.where() + ":\n" + failure.text()
+                    + "this:\n" + shown);
+        }
+    }
+
+    /** Messages as a user who ran the command in the program's folder, next to the page's files, reads them. */
+    private String withoutFolders(String messages, Path program) {
+        return messages.replace(program.getParent() + "/", "").replace(folder + "/", "");
     }
 
     private void expectJournal(CodeBlock block, CodeBlock journal) {

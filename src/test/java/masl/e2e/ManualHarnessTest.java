@@ -52,6 +52,18 @@ class ManualHarnessTest {
     }
 
     @Test
+    void aFailureReportThatMaslRunDoesNotGiveFails() {
+        String stuck = "```masl file=stuck.masl\nimport Default.xml as Default;\nDefault a = newAgent(Default);\n"
+                + "asynchronous entry main (true) {\n  shared boolean done = false;\n  while (!done) {}\n}\n```\n";
+        String report = "masl: the mission deadlocked: no agent can make progress\n"
+                + "agent a (0) at pc 2 (stuck.masl:5: while (!done)): [main]\n";
+        verify(stuck + "```failure\n" + report + "```\n");
+        AssertionError failure = assertThrows(AssertionError.class,
+                () -> verify(stuck + "```failure\n" + report.replace("a (0)", "b (1)") + "```\n"));
+        assertTrue(failure.getMessage().contains("instead of the report shown"), failure::getMessage);
+    }
+
+    @Test
     void aProgramWithNothingUnderItFails() {
         AssertionError failure = assertThrows(AssertionError.class, () -> verify(PROGRAM));
         assertTrue(failure.getMessage().contains("no ```journal or ```error block under it"), failure::getMessage);
