@@ -97,7 +97,11 @@ final class ManualExamples {
 
     private Check program(CodeBlock block, CodeBlock next) {
         if (next == null || !EXPECTATIONS.contains(next.language())) {
-            return failure(block, "a MASL program with no ```journal or ```error block under it");
+            return failure(block, "a MASL program with no ```journal, ```error or ```failure block under it");
+        }
+        String source = block.attributes().get("source");
+        if (source != null && !block.text().equals(read(Path.of(source)))) {
+            return failure(block, "the program differs from " + source + ", which it says it is");
         }
         if (next.language().equals("error")) {
             return new Check(block.where(), () -> expectErrors(block, next));
@@ -212,6 +216,14 @@ final class ManualExamples {
             for (Path file : files.sorted(Comparator.reverseOrder()).toList()) {
                 Files.delete(file);
             }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    private static String read(Path file) {
+        try {
+            return Files.readString(file);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }

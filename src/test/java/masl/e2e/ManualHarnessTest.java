@@ -64,9 +64,18 @@ class ManualHarnessTest {
     }
 
     @Test
+    void aProgramThatDiffersFromTheFileItNamesFails() {
+        String e1 = "src/test/resources/examples/e1_scalar_main.masl";
+        AssertionError failure = assertThrows(AssertionError.class,
+                () -> verify("```masl source=" + e1 + "\n" + PROGRAM.lines().skip(1).limit(5).map(line -> line + "\n")
+                        .reduce("", String::concat) + "```\n```journal any-order\nagent 0\nagent 1\n```\n"));
+        assertTrue(failure.getMessage().contains("differs from " + e1), failure::getMessage);
+    }
+
+    @Test
     void aProgramWithNothingUnderItFails() {
         AssertionError failure = assertThrows(AssertionError.class, () -> verify(PROGRAM));
-        assertTrue(failure.getMessage().contains("no ```journal or ```error block under it"), failure::getMessage);
+        assertTrue(failure.getMessage().contains("no ```journal, ```error or ```failure block under it"), failure::getMessage);
     }
 
     @Test
