@@ -67,7 +67,7 @@ final class AssignmentWriter {
         MaslType type = program.typeOf(target);
         Symbol symbol = program.symbolOf(target).orElse(null);
         if (target instanceof MASLParser.FieldAccessContext access
-                && expressions.labelForm(access.expression()) != null) {
+                && expressions.labels().labelForm(access.expression()) != null) {
             return labelAssignment(access, symbol, value);
         }
         if (symbol instanceof Variable variable) {
@@ -134,18 +134,18 @@ final class AssignmentWriter {
         }
         String callee = agent == null ? "self" : expressions.expr(agent);
         String store;
-        ExpressionWriter.LabelForm form = expressions.labelForm(target.expression());
-        boolean toVariable = expressions.label(target.expression()) != null;
+        LabelWriter.LabelForm form = expressions.labels().labelForm(target.expression());
+        boolean toVariable = expressions.labels().label(target.expression()) != null;
         if (toVariable && symbol instanceof Variable variable) {
             String converted = MaslType.STRING.equals(variable.type()) ? "String.valueOf(value)" : "value";
             store = variable.sharing() == Sharing.SHARED
                     ? "value -> ctx.shared(" + structure.shared(variable) + ").set(" + converted + ")"
                     : "value -> " + expressions.local(variable) + " = " + converted;
         } else {
-            store = expressions.attributeStore(form.agent(), expressions.addressee(form), target.identifier().getText(),
+            store = expressions.members().attributeStore(form.agent(), expressions.labels().addressee(form), target.identifier().getText(),
                     target);
         }
-        return expressions.labelLaunch(form.label(), agent, callee, name, arguments, store, value);
+        return expressions.labels().labelLaunch(form.label(), agent, callee, name, arguments, store, value);
     }
 
     /**
@@ -180,7 +180,7 @@ final class AssignmentWriter {
             MaslType operandType = value == null ? MaslType.INT : program.typeOf(value);
             written = compound(type, current, operator.substring(0, operator.length() - 1), operand, operandType);
         }
-        return expressions.attributeWrite(owner, member.name(), written, target);
+        return expressions.members().attributeWrite(owner, member.name(), written, target);
     }
 
     /** Evaluates {@code value} into a new temporary, before the statement; returns the temporary. */

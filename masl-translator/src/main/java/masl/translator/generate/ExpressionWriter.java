@@ -3,20 +3,14 @@ package masl.translator.generate;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
-import java.util.function.Predicate;
 import masl.grammar.MASLParser;
 import masl.grammar.MASLParser.ExpressionContext;
-import masl.runtime.descriptor.AgentType;
-import masl.runtime.descriptor.Attribute;
-import masl.runtime.descriptor.Parameter;
 import masl.runtime.descriptor.Primitive;
 import masl.translator.analysis.AgentDecl;
 import masl.translator.analysis.AnalyzedProgram;
 import masl.translator.analysis.Block;
 import masl.translator.analysis.EntryRef;
 import masl.translator.analysis.EventDecl;
-import masl.translator.analysis.Label;
 import masl.translator.analysis.ImportedType;
 import masl.translator.analysis.MaslType;
 import masl.translator.analysis.Member;
@@ -51,7 +45,6 @@ final class ExpressionWriter {
     private final JavaNames.Unique fields = new JavaNames.Unique("self");
     private final Map<Block, String> keepFlags = new java.util.HashMap<>();
     private final Map<Variable, String> locals = new java.util.LinkedHashMap<>();
-    private final Map<Label, String> localLabels = new java.util.LinkedHashMap<>();
     private final AgentCalls calls = new AgentCalls();
     /** The agents named in the program that it uses, with the program's field holding each. */
     private final Map<AgentDecl, String> agents = new java.util.LinkedHashMap<>();
@@ -62,6 +55,8 @@ final class ExpressionWriter {
     private ExpressionContext unawaited;
     private boolean usesDynamicMembers;
     private final TypeTests typeTests;
+    private final AgentMemberWriter members;
+    private final LabelWriter labels;
     /** Inside the function of an atomic update: the variable updated and the function's parameter. */
     private Variable updated;
     private String updatedParameter;
@@ -76,6 +71,8 @@ final class ExpressionWriter {
         this.typeTests = new TypeTests(program, selfType);
         this.assignments = new AssignmentWriter(program, structure, this, queries, unsupported);
         this.futures = new FutureVariables(program, queries);
+        this.members = new AgentMemberWriter(program, selfType, unsupported, this);
+        this.labels = new LabelWriter(program, structure, selfType, unsupported, this, members);
     }
 
     /**
@@ -94,7 +91,7 @@ final class ExpressionWriter {
 
     /** Whether {@code tree} waits for a result: an external invocation, a read of a future (§3.11). */
     boolean suspends(org.antlr.v4.runtime.tree.ParseTree tree) {
-        if (tree instanceof ExpressionContext expression && isAsynchronousLabelLaunch(expression)) {
+        if (tree instanceof ExpressionContext expression && labels.isAsynchronousLabelLaunch(expression)) {
             // Launched and registered with the label, not waited for: only its arguments may wait.
             ExpressionContext call = expression instanceof MASLParser.AssignExprContext assignment ? assignment.value
                     : expression;
@@ -137,131 +134,6 @@ final class ExpressionWriter {
     /** The named agents the program uses: each is a field of the program, set from the population. */
     Map<AgentDecl, String> agents() {
         return agents;
-    }
-
-    /** The field of an {@code LLabel}: {@code block$name}. */
-    String localLabel(Label label) {
-        return localLabels.computeIfAbsent(label, l -> fields.take(l.block().name() + "$" + l.name()));
-    }
-
-    /** The {@code LLabel}s used so far, with their fields. */
-    Map<Label, String> localLabels() {
-        return localLabels;
-    }
-
-    /** The label a name stands for, or null. */
-    Label label(ExpressionContext expression) {
-        return program.symbolOf(expression).orElse(null) instanceof Label label ? label : null;
-    }
-
-    /** The Java value of a label: its field, or the wave's label of an {@code SLabel}. */
-    String labelValue(Label label) {
-        return label.sharing() == Sharing.SHARED ? "ctx.shared(" + structure.sharedLabel(label) + ").get()"
-                : localLabel(label);
-    }
-
-    /**
-     * The label and addressee of a label form's receiver: {@code l.a} (a named agent or a variable
-     * holding one), {@code l.this} or {@code l} (the current agent, agent null); null if it is none.
-     */
-    record LabelForm(Label label, ExpressionContext agent) {
-    }
-
-    LabelForm labelForm(ExpressionContext receiver) {
-        if (receiver instanceof MASLParser.LabelSelfContext self && label(self.expression()) != null) {
-            return new LabelForm(label(self.expression()), null);
-        }
-        if (receiver instanceof MASLParser.FieldAccessContext access && label(access.expression()) != null) {
-            return new LabelForm(label(access.expression()), access);
-        }
-        Label label = label(receiver);
-        return label == null ? null : new LabelForm(label, null);
-    }
-
-    /** The Java of the agent a label form addresses. */
-    String addressee(LabelForm form) {
-        if (form.agent() == null) {
-            return "self";
-        }
-        Symbol symbol = program.symbolOf(form.agent()).orElse(null);
-        if (symbol instanceof AgentDecl agent) {
-            return agent(agent);
-        }
-        if (symbol instanceof Variable variable) {
-            return read(variable);
-        }
-        return unsupported.report(form.agent(), "this label addressee");
-    }
-
-    /**
-     * A launch registered with a label (§10, contract §8.3): {@code l.a.m(…)}, and the value of
-     * {@code l.x = a.m(…)} with {@code store} the Java consumer of the result (null for none). An
-     * asynchronous primitive is launched and the instruction ends at once; a synchronous one is
-     * invoked and awaited, registered as done. An addressee that may lack the primitive (§4) goes
-     * through a helper that registers the call, or its {@code nop()}, itself.
-     */
-    String labelLaunch(Label label, ExpressionContext agent, String callee, String name,
-            List<ExpressionContext> arguments, String store, ParserRuleContext where) {
-        AgentType calleeType = labelCallee(agent, name, where);
-        if (calleeType == null) {
-            return unsupported.report(where, "a label invocation of a primitive the agent's own type lacks, inside an"
-                    + " expression,");
-        }
-        AgentType receiverType = agent == null ? selfType.descriptor() : queries.descriptorOf(agent);
-        Primitive primitive = calleeType.findPrimitive(name).orElseThrow();
-        List<String> java = arguments(primitive, arguments);
-        AgentCalls.Kind kind = primitive.synchronous() ? AgentCalls.Kind.INVOKE : AgentCalls.Kind.LAUNCH;
-        Primitive countermeasure = primitive.synchronous() || primitive.countermeasure() == null ? null
-                : calleeType.findPrimitive(primitive.countermeasure()).orElse(null);
-        String calleeClass = calleeType.fullClassName();
-        String receiverClass = receiverClass(receiverType, calleeType);
-        String registered = calleeClass.equals(receiverClass)
-                ? labelValue(label) + ".register(" + calls.call(kind, primitive, countermeasure, calleeClass, callee, java)
-                        + (store == null ? ")" : ", " + store + ")")
-                : calls.registered(kind, primitive, countermeasure, calleeClass, receiverClass, labelValue(label), callee,
-                        java, store);
-        if (!primitive.synchronous()) {
-            return registered;
-        }
-        String future = assignments.temporary(AgentCalls.futureType(primitive));
-        suspensions.add(new Suspension(future + " = " + registered + ";", future,
-                "the result of " + JavaText.snippet(where)));
-        return future + ".join()";
-    }
-
-    /** Whether a statement is a label launch of an asynchronous primitive: zero duration (§5, §10). */
-    boolean isAsynchronousLabelLaunch(ExpressionContext expression) {
-        ExpressionContext call = expression instanceof MASLParser.AssignExprContext assignment ? assignment.value
-                : expression;
-        boolean labelForm = expression instanceof MASLParser.AssignExprContext assignment
-                ? assignment.target instanceof MASLParser.FieldAccessContext access
-                        && labelForm(access.expression()) != null
-                : call instanceof MASLParser.MethodCallContext method && labelForm(method.expression()) != null;
-        if (!labelForm) {
-            return false;
-        }
-        String name = call instanceof MASLParser.MethodCallContext method ? method.identifier().getText()
-                : call instanceof MASLParser.PrimaryExprContext primary
-                        && primary.primary() instanceof MASLParser.SelfInvocationContext self
-                        ? self.identifier().getText() : null;
-        if (name == null) {
-            return false;
-        }
-        ExpressionContext agent = expression instanceof MASLParser.AssignExprContext
-                ? (call instanceof MASLParser.MethodCallContext method && !TreeQueries.isThis(method.expression())
-                        ? method.expression() : null)
-                : labelForm(((MASLParser.MethodCallContext) call).expression()).agent();
-        AgentType calleeType = labelCallee(agent, name, call);
-        return calleeType != null && !calleeType.findPrimitive(name).orElseThrow().synchronous();
-    }
-
-    /**
-     * The type whose primitive {@code name} a label's invocation {@code where} of {@code agent}
-     * (null for the current agent) calls, as {@link #declaringType} finds it.
-     */
-    private AgentType labelCallee(ExpressionContext agent, String name, ParserRuleContext where) {
-        var receiverType = agent == null ? selfType.descriptor() : queries.descriptorOf(agent);
-        return declaringType(receiverType, agent, where, type -> type.findPrimitive(name).isPresent());
     }
 
     /** The field of a local variable: {@code block$name}. */
@@ -488,9 +360,9 @@ final class ExpressionWriter {
         } else if (primary instanceof MASLParser.ThisExprContext) {
             return "self";
         } else if (primary instanceof MASLParser.SelfInvocationContext call) {
-            return primitiveCall(null, call.identifier().getText(), arguments(call.arguments()), expression);
+            return members.primitiveCall(null, call.identifier().getText(), arguments(call.arguments()), expression);
         } else if (primary instanceof MASLParser.SelfAttributeContext attribute) {
-            return attributeRead(null, attribute.identifier().getText(), expression);
+            return members.attributeRead(null, attribute.identifier().getText(), expression);
         } else if (primary instanceof MASLParser.NameExprContext) {
             return name(expression);
         } else if (primary instanceof MASLParser.NewExprContext creation) {
@@ -499,7 +371,7 @@ final class ExpressionWriter {
             return literal.getText();
         } else if (primary instanceof MASLParser.PlainCallContext call) {
             // isFinished(l), the one call without a receiver (MASL 10).
-            return labelValue(label(arguments(call.arguments()).get(0))) + ".isFinished()";
+            return labels.labelValue(labels.label(arguments(call.arguments()).get(0))) + ".isFinished()";
         } else if (primary instanceof MASLParser.GetAcceptStateExprContext state) {
             return state.agent == null ? "ctx.getAcceptState()" : "ctx.getAcceptState(" + expr(state.agent) + ")";
         } else if (primary instanceof MASLParser.GetMessageExprContext message) {
@@ -520,7 +392,7 @@ final class ExpressionWriter {
             return agent(agent);
         }
         if (symbol instanceof Member member && member.kind() == Member.Kind.ATTRIBUTE) {
-            return attributeRead(null, member.name(), expression);
+            return members.attributeRead(null, member.name(), expression);
         }
         return unsupported.report(expression, "this name");
     }
@@ -598,7 +470,7 @@ final class ExpressionWriter {
         }
         return switch (member.kind()) {
             case ENTRY_MEMBER -> entry(access.expression()) + "." + name + "()";
-            case ATTRIBUTE -> attributeRead(access.expression(), name, access);
+            case ATTRIBUTE -> members.attributeRead(access.expression(), name, access);
             case JAVA_FIELD -> receiver(access.expression()) + "." + name;
             case DYNAMIC -> dynamicField(access.expression(), name);
             default -> unsupported.report(access, "this member access");
@@ -609,19 +481,19 @@ final class ExpressionWriter {
         Symbol symbol = program.symbolOf(call).orElse(null);
         String name = call.identifier().getText();
         List<ExpressionContext> arguments = arguments(call.arguments());
-        LabelForm form = labelForm(call.expression());
+        LabelWriter.LabelForm form = labels.labelForm(call.expression());
         if (form != null && !(symbol instanceof Member labelMember && labelMember.kind() == Member.Kind.LABEL_MEMBER)) {
-            return labelLaunch(form.label(), form.agent(), addressee(form), name, arguments, null, call);
+            return labels.labelLaunch(form.label(), form.agent(), labels.addressee(form), name, arguments, null, call);
         }
         if (!(symbol instanceof Member member)) {
             return unsupported.report(call, "this call");
         }
         return switch (member.kind()) {
-            case PRIMITIVE -> primitiveCall(call.expression(), name, arguments, call);
+            case PRIMITIVE -> members.primitiveCall(call.expression(), name, arguments, call);
             case ENTRY_MEMBER -> entryCall(call.expression(), name, arguments);
             case JAVA_METHOD -> receiver(call.expression()) + "." + name + "(" + String.join(", ", all(arguments))
                     + ")";
-            case LABEL_MEMBER -> labelValue(label(call.expression())) + "." + name + "()";
+            case LABEL_MEMBER -> labels.labelValue(labels.label(call.expression())) + "." + name + "()";
             case DYNAMIC -> dynamicCall(call.expression(), name, arguments);
             default -> unsupported.report(call, "this call");
         };
@@ -666,181 +538,24 @@ final class ExpressionWriter {
         return agents.computeIfAbsent(agent, a -> fields.take("agent$" + a.name()));
     }
 
-    /**
-     * An invocation of primitive {@code name} (§9) of {@code receiver}'s agent, or of the current
-     * agent when {@code receiver} is null or {@code this}: through the runtime, which filters it by
-     * permeability (contract §8.1). A synchronous external one, and an asynchronous one whose value
-     * is used, are suspension points: the expression reads the future's value once awaited.
-     */
-    private String primitiveCall(ExpressionContext receiver, String name, List<ExpressionContext> arguments,
-            ParserRuleContext where) {
-        boolean internal = receiver == null || TreeQueries.isThis(receiver);
-        if (!internal && queries.namedType(receiver) != null) {
-            // Permeability filters an invocation by its callee: a type is none (as for static attributes).
-            return unsupported.report(where, "an invocation of a primitive through its type");
-        }
-        var receiverType = internal ? selfType.descriptor() : queries.descriptorOf(receiver);
-        // Polymorphism (MASL 4): for another agent, a type the receiver may be of may declare it.
-        var calleeType = declaringType(receiverType, receiver, where, type -> type.findPrimitive(name).isPresent());
-        Optional<Primitive> found = calleeType == null ? Optional.empty() : calleeType.findPrimitive(name);
-        if (found.isEmpty()) {
-            return unsupported.report(where, internal
-                    ? "a primitive call the agent's type lacks, inside an expression,"
-                    : "an invocation of a primitive that the receiver's declared type lacks");
-        }
-        Primitive primitive = found.get();
-        String callee = internal ? "self" : expr(receiver);
-        List<String> java = arguments(primitive, arguments);
-        String calleeClass = calleeType.fullClassName();
-        String receiverClass = receiverClass(receiverType, calleeType);
-        if (primitive.synchronous() && internal) {
-            return calls.call(AgentCalls.Kind.INVOKE_SELF, primitive, null, calleeClass, callee, java);
-        }
-        if (primitive.synchronous()) {
-            return awaited(calls.call(AgentCalls.Kind.INVOKE, primitive, null, calleeClass, receiverClass, callee, java),
-                    primitive, where);
-        }
-        Primitive countermeasure = primitive.countermeasure() == null ? null
-                : calleeType.findPrimitive(primitive.countermeasure()).orElse(null);
-        String launch = calls.call(AgentCalls.Kind.LAUNCH, primitive, countermeasure, calleeClass, receiverClass,
-                callee, java);
-        return where == unawaited ? launch : awaited(launch, primitive, where);
-    }
-
-    private List<ImportedType> declaringTypes(ParserRuleContext call) {
-        return program.symbolOf(call).orElse(null) instanceof Member member ? member.declaringTypes() : List.of();
-    }
-
-    /** The arguments of a call, converted for the primitive's parameters (§3). */
-    List<String> arguments(Primitive primitive, List<ExpressionContext> arguments) {
-        List<Parameter> parameters = primitive.parameters();
-        List<String> java = new ArrayList<>();
-        for (int i = 0; i < arguments.size(); i++) {
-            MaslType parameter = parameterType(parameters.get(i).type());
-            java.add(parameter == null ? expr(arguments.get(i)) : converted(parameter, arguments.get(i)));
-        }
-        return java;
-    }
-
     /** A future started before the statement, awaited, and read where the call stood. */
-    private String awaited(String start, Primitive primitive, ParserRuleContext call) {
+    String awaited(String start, Primitive primitive, ParserRuleContext call) {
         String future = assignments.temporary(AgentCalls.futureType(primitive));
         suspensions.add(new Suspension(future + " = " + start + ";", future, "the result of " + JavaText.snippet(call)));
         return future + ".join()";
     }
 
-    /** A read of attribute {@code name} of {@code owner}'s agent (the current one when null or {@code this}), §8.4. */
-    private String attributeRead(ExpressionContext owner, String name, ParserRuleContext where) {
-        boolean own = owner == null || TreeQueries.isThis(owner);
-        var receiverType = own ? selfType.descriptor() : queries.descriptorOf(owner);
-        var ownerType = declaringType(receiverType, owner, where, type -> type.findAttribute(name).isPresent());
-        if (ownerType == null) {
-            return unsupported.report(where, "an attribute that the owner's declared type lacks");
-        }
-        Attribute attribute = ownerType.findAttribute(name).orElseThrow();
-        String constant = constant(attribute);
-        if (constant != null) {
-            return constant;
-        }
-        if (!own && queries.namedType(owner) != null) {
-            return unsupported.report(where, "a static attribute read through its type, unless a constant,");
-        }
-        return calls.read(attribute, ownerType.fullClassName(), receiverClass(receiverType, ownerType),
-                own ? "self" : expr(owner));
+    /** Whether {@code call} is the asynchronous invocation whose future, not its value, is wanted. */
+    boolean isUnawaited(ParserRuleContext call) {
+        return call == unawaited;
     }
 
-    /** A write of attribute {@code name} of {@code owner}'s agent, §8.4; {@code value} is Java. */
-    String attributeWrite(ExpressionContext owner, String name, String value, ParserRuleContext where) {
-        boolean own = owner == null || TreeQueries.isThis(owner);
-        var receiverType = own ? selfType.descriptor() : queries.descriptorOf(owner);
-        var ownerType = declaringType(receiverType, owner, where, type -> type.findAttribute(name).isPresent());
-        if (ownerType == null) {
-            return unsupported.report(where, "an attribute that the owner's declared type lacks");
-        }
-        if (!own && queries.namedType(owner) != null) {
-            return unsupported.report(where, "a write of a static attribute through its type");
-        }
-        return calls.write(ownerType.findAttribute(name).orElseThrow(), ownerType.fullClassName(),
-                receiverClass(receiverType, ownerType), own ? "self" : expr(owner), value);
+    LabelWriter labels() {
+        return labels;
     }
 
-    /**
-     * The type whose member an access uses: the receiver's static type if it has it. For another
-     * agent ({@code receiver} neither null nor {@code this}), else a subtype some imported type
-     * declaring the member is (§4), else any type declaring it: no agent the receiver may be has the
-     * member, so the helper's class test makes the access a {@code nop()} for all. Null for the
-     * current agent's member its type lacks, and for a member read through a type that lacks it.
-     */
-    private AgentType declaringType(AgentType receiverType, ExpressionContext receiver, ParserRuleContext where,
-            Predicate<AgentType> has) {
-        if (receiverType == null || has.test(receiverType)) {
-            return receiverType;
-        }
-        if (receiver == null || TreeQueries.isThis(receiver)) {
-            return null;
-        }
-        AgentType unrelated = null;
-        for (ImportedType declaring : declaringTypes(where)) {
-            if (declaring.isLoaded() && has.test(declaring.descriptor())) {
-                if (declaring.descriptor().isSubtypeOf(receiverType)) {
-                    return declaring.descriptor();
-                }
-                unrelated = unrelated == null ? declaring.descriptor() : unrelated;
-            }
-        }
-        return queries.namedType(receiver) == null ? unrelated : null;
-    }
-
-    /**
-     * The class a member's helper takes its receiver as: the receiver's static type's, or, when the
-     * declaring type is no subtype of it, the root type's (the class test then always fails).
-     */
-    private static String receiverClass(AgentType receiverType, AgentType declaring) {
-        if (declaring.isSubtypeOf(receiverType)) {
-            return receiverType.fullClassName();
-        }
-        AgentType root = receiverType;
-        while (root.supertype() != null) {
-            root = root.supertype();
-        }
-        return root.fullClassName();
-    }
-
-    /** The consumer storing a label's result in attribute {@code name} of an agent (§10): no permeability filter. */
-    String attributeStore(ExpressionContext owner, String ownerJava, String name, ParserRuleContext where) {
-        var receiverType = owner == null ? selfType.descriptor() : queries.descriptorOf(owner);
-        var ownerType = declaringType(receiverType, owner, where, type -> type.findAttribute(name).isPresent());
-        if (ownerType == null) {
-            return unsupported.report(where, "an attribute that the owner's declared type lacks");
-        }
-        return calls.store(ownerType.findAttribute(name).orElseThrow(), ownerType.fullClassName(),
-                receiverClass(receiverType, ownerType), ownerJava);
-    }
-
-    /** The value of a {@code final} attribute with a {@code value}: a Java constant (§9); null otherwise. */
-    private static String constant(Attribute attribute) {
-        if (!attribute.isFinal() || attribute.value() == null) {
-            return null;
-        }
-        String value = attribute.value().trim();
-        return switch (attribute.type()) {
-            case "java.lang.String" -> JavaText.quote(attribute.value());
-            case "boolean", "int" -> value;
-            case "long" -> value + "L";
-            case "float" -> value + "f";
-            case "double" -> value + "d";
-            default -> null;
-        };
-    }
-
-    private static MaslType parameterType(String descriptorType) {
-        return switch (descriptorType) {
-            case "java.lang.String" -> MaslType.STRING;
-            case "byte" -> MaslType.BYTE;
-            case "short" -> MaslType.SHORT;
-            case "char" -> MaslType.CHAR;
-            default -> null;
-        };
+    AgentMemberWriter members() {
+        return members;
     }
 
     // ------------------------------------------------------------------ helpers

@@ -259,7 +259,7 @@ final class InstructionWriter {
 
     /** Entry members and accessor primitives take no time: no step boundary after them (MASL 5). */
     private boolean isZeroDuration(ExpressionContext expression) {
-        if (expressions.isAsynchronousLabelLaunch(expression) && !expressions.suspends(expression)) {
+        if (expressions.labels().isAsynchronousLabelLaunch(expression) && !expressions.suspends(expression)) {
             return true;
         }
         if (expression instanceof MASLParser.PrimaryExprContext primary

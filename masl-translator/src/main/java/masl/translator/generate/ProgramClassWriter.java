@@ -101,7 +101,7 @@ final class ProgramClassWriter {
             out.add("    private final " + agent.getKey().instantiatedType().descriptor().fullClassName() + " "
                     + agent.getValue() + ";");
         }
-        for (String label : expressions.localLabels().values()) {
+        for (String label : expressions.labels().localLabels().values()) {
             out.add("    private Label " + label + ";");
         }
         for (Map.Entry<Variable, String> local : expressions.locals().entrySet()) {

@@ -231,7 +231,7 @@ final class StatementWriter {
             // One label per member (LLabel) or per wave (SLabel, the first member of the wave makes it), MASL 10.
             cases.line(label.sharing() == Sharing.SHARED
                     ? "ctx.shared(" + structure.sharedLabel(label) + ").initialise(ctx::newLabel);"
-                    : expressions.localLabel(label) + " = ctx.newLabel();");
+                    : expressions.labels().localLabel(label) + " = ctx.newLabel();");
         }
         for (Variable variable : variables) {
             if (variable.sharing() == Sharing.SHARED && variable.initializer() != null) {
