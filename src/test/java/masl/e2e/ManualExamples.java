@@ -113,25 +113,25 @@ final class ManualExamples {
     }
 
     private void expectErrors(CodeBlock block, CodeBlock errors) {
-        Path program = programFile(block, block.text());
-        MaslCommand check = MaslCommand.run("check", program.toString(), "--agent-path", folder.toString());
-        String shown = withoutFolders(check.err(), program);
-        if (check.status() != 1 || !shown.equals(errors.text())) {
-            throw new AssertionError(block.where() + ": masl check gives status " + check.status()
-                    + " and, instead of the errors shown at " + errors.where() + ":\n" + errors.text()
-                    + "this:\n" + shown);
-        }
+        expectStandardError(block, errors, 1, "errors", "check");
     }
 
     private void expectFailure(CodeBlock block, CodeBlock failure) {
+        expectStandardError(block, failure, 2, "report", "run", "--timeout", TIMEOUT_SECONDS);
+    }
+
+    /** {@code masl COMMAND program --agent-path folder OPTIONS…} exits with {@code status}, its standard error {@code shown}. */
+    private void expectStandardError(CodeBlock block, CodeBlock shown, int status, String what, String command,
+            String... options) {
         Path program = programFile(block, block.text());
-        MaslCommand run = MaslCommand.run("run", program.toString(), "--agent-path", folder.toString(), "--timeout",
-                TIMEOUT_SECONDS);
-        String shown = withoutFolders(run.err(), program);
-        if (run.status() != 2 || !shown.equals(failure.text())) {
-            throw new AssertionError(block.where() + ": masl run gives status " + run.status()
-                    + " and, instead of the report shown at " + failure.where() + ":\n" + failure.text()
-                    + "this:\n" + shown);
+        List<String> arguments = new ArrayList<>(List.of(command, program.toString(), "--agent-path", folder.toString()));
+        arguments.addAll(List.of(options));
+        MaslCommand masl = MaslCommand.run(arguments.toArray(String[]::new));
+        String err = withoutFolders(masl.err(), program);
+        if (masl.status() != status || !err.equals(shown.text())) {
+            throw new AssertionError(block.where() + ": masl " + command + " gives status " + masl.status()
+                    + " and, instead of the " + what + " shown at " + shown.where() + ":\n" + shown.text()
+                    + "this:\n" + err);
         }
     }
 
