@@ -44,18 +44,21 @@ public class MaslRun extends JavaExec {
 
     /**
      * JavaExec's main class is {@code main} up to Gradle 6.3 (removed in 8) and the property
-     * {@code mainClass} from 6.4, which the Gradle API of 4.4 this plug-in compiles against lacks.
+     * {@code mainClass} from 6.4 (absent from 4.4): each is called reflectively, so that the plug-in
+     * compiles against the API of both.
      */
     @SuppressWarnings("unchecked")
     static void setMainClassName(JavaExec task, String name) {
-        if (GradleVersion.current().compareTo(GradleVersion.version("6.4")) < 0) {
-            task.setMain(name);
-            return;
-        }
+        boolean before64 = GradleVersion.current().compareTo(GradleVersion.version("6.4")) < 0;
         try {
-            ((Property<String>) JavaExec.class.getMethod("getMainClass").invoke(task)).set(name);
+            if (before64) {
+                JavaExec.class.getMethod("setMain", String.class).invoke(task, name);
+            } else {
+                ((Property<String>) JavaExec.class.getMethod("getMainClass").invoke(task)).set(name);
+            }
         } catch (ReflectiveOperationException absent) {
-            throw new IllegalStateException("JavaExec.getMainClass() is missing from Gradle " + GradleVersion.current().getVersion(), absent);
+            throw new IllegalStateException("JavaExec." + (before64 ? "setMain" : "getMainClass") + "() is missing from Gradle "
+                    + GradleVersion.current().getVersion(), absent);
         }
     }
 
