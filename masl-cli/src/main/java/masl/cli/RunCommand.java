@@ -9,9 +9,12 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.descriptor.AgentPath;
+import masl.runtime.scheduling.ReplayCommand;
 import masl.runtime.scheduling.SeededScheduler;
 import masl.runtime.scheduling.ThreadPerAgentScheduler;
 import masl.runtime.trace.JsonLinesTrace;
@@ -106,7 +109,7 @@ final class RunCommand {
             if (!signals.stops(mission::stop)) {
                 return Masl.MISSION_FAILED;
             }
-            return report(run(mission, timeout), line.seed, signals, journal);
+            return report(run(mission, timeout), line.seed == null ? null : replay(line, source), signals, journal);
         } finally {
             out.flush();
             closeTrace(trace, line.traceFile);
@@ -139,7 +142,7 @@ final class RunCommand {
      * The exit status of a run and its one report on standard error. A journal that could not be
      * written fails the run whatever the mission did; a signal's stop is said in one line.
      */
-    private int report(MissionOutcome outcome, Long seed, StopOnSignal signals, JournalOutput journal) {
+    private int report(MissionOutcome outcome, String replay, StopOnSignal signals, JournalOutput journal) {
         if (journal.failed()) {
             err.println("masl: cannot write the journal to standard output");
             return Masl.MISSION_FAILED;
@@ -170,10 +173,32 @@ final class RunCommand {
         if (!outcome.report().isEmpty()) {
             err.println(outcome.report().stripTrailing());
         }
-        if (seed != null) {
-            err.println("masl: the same run again: --seed " + seed);
+        if (replay != null) {
+            err.println("masl: the same run again: " + replay);
         }
         return Masl.MISSION_FAILED;
+    }
+
+    /**
+     * The command that runs this seeded run again where it was started: the build's task when a build
+     * plug-in started masl ({@link ReplayCommand#PROPERTY}), otherwise masl run with the options that
+     * make the run what it was.
+     */
+    private static String replay(CommandLine line, SourceFile source) {
+        ReplayCommand command = ReplayCommand.fromSystemProperty().orElseGet(() -> {
+            List<String> options = new ArrayList<>();
+            if (!line.agentPath.isEmpty()) {
+                options.addAll(List.of("--agent-path", line.agentPath));
+            }
+            if (line.timeoutSeconds != null) {
+                options.addAll(List.of("--timeout", line.timeoutSeconds.toString()));
+            }
+            if (line.callTimeoutMillis != null) {
+                options.addAll(List.of("--call-timeout", line.callTimeoutMillis.toString()));
+            }
+            return ReplayCommand.masl(source.name(), options);
+        });
+        return command.forSeed(line.seed);
     }
 
     private static Writer openTrace(String file) throws UsageException {

@@ -93,17 +93,19 @@ class RunCommandTest {
 
     @Test
     void aProgramThatThrowsFailsTheMissionWithTwoAndNoStackTrace() throws IOException {
-        Run run = Run.of("run", "--seed", "7", write("crash.masl", HEADER + """
+        String program = write("crash.masl", HEADER + """
                 asynchronous entry main (true) {
                   .logln(10 / (.getProxyID() - .getProxyID()));
                 }
-                """));
+                """);
+        Run run = Run.of("run", "--seed", "7", program, "--call-timeout", "500");
         assertEquals(2, run.status());
         assertTrue(run.err().startsWith("masl: the mission failed"), run.err());
         assertTrue(run.err().contains("ArithmeticException"), run.err());
         assertTrue(run.err().contains("(crash.masl:4: .logln(10 / (.getProxyID() - .getProxyID()));) failed"),
                 run.err());
-        assertTrue(run.err().contains("--seed 7"), run.err());
+        assertTrue(run.err().endsWith("masl: the same run again: masl run " + program + " --call-timeout 500 --seed 7\n"),
+                run.err());
         assertFalse(run.err().contains("\tat "), run.err());
     }
 

@@ -1,10 +1,12 @@
 package masl.gradle;
 
 import java.io.File;
+import java.io.OutputStream;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
 import java.util.stream.Collectors;
+import masl.runtime.scheduling.ReplayCommand;
 import org.gradle.api.GradleException;
 import org.gradle.api.file.ConfigurableFileCollection;
 import org.gradle.api.file.FileCollection;
@@ -20,8 +22,9 @@ import org.gradle.util.GradleVersion;
  * output, as it is written; progress and diagnostics on standard error. The class path is the
  * configuration {@code maslTool} (masl-cli, masl-jade-bridge only for {@code platform=jade}) with the
  * project's runtime class path and compiled classes, so agent classes of the project run as they do
- * in its tests. A program error or a mission that does not complete fails the task. Never up to date:
- * running is the point.
+ * in its tests. A program error or a mission that does not complete fails the task, saying why (masl's
+ * first line about it) and with which exit status; a seeded run's replay hint names this task
+ * ({@link ReplayCommand#gradle}). Never up to date: running is the point.
  */
 public class MaslRun extends JavaExec {
 
@@ -131,19 +134,38 @@ public class MaslRun extends JavaExec {
         this.callTimeoutMillis = callTimeoutMillis;
     }
 
-    /** JavaExec's action, with the arguments of the mission chosen and masl's failure named as such. */
+    /**
+     * JavaExec's action, with the arguments of the mission chosen, this task as the replay hint, and
+     * masl's failure named as such: why and with which exit status.
+     */
     @Override
     @TaskAction
     public void exec() {
         File program = chosenProgram();
         setArgs(arguments(program));
+        systemProperty(ReplayCommand.PROPERTY, ReplayCommand.gradle(missionName(program), sameRunProperties()).template());
+        OutputStream errors = getErrorOutput();
+        MaslErrorLines report = new MaslErrorLines(errors);
+        setErrorOutput(report);
         try {
             super.exec();
         } catch (RuntimeException failed) {
-            throw new GradleException("mission " + missionName(program) + " failed, masl's report is above ("
-                    + failed.getMessage() + "; exit status 1: errors in the program or its descriptors, 2: the mission"
-                    + " failed, deadlocked or timed out)", failed);
+            throw new GradleException(MaslExit.describe(missionName(program), failed, report.why()), failed);
+        } finally {
+            setErrorOutput(errors);
         }
+    }
+
+    /** The project properties besides the mission and the seed that make a run what it was. */
+    private List<String> sameRunProperties() {
+        List<String> properties = new ArrayList<>();
+        if (timeoutSeconds != null) {
+            properties.add("timeout=" + timeoutSeconds);
+        }
+        if (callTimeoutMillis != null) {
+            properties.add("callTimeout=" + callTimeoutMillis);
+        }
+        return properties;
     }
 
     private List<String> arguments(File program) {

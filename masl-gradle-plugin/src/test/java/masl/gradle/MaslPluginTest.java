@@ -81,13 +81,18 @@ class MaslPluginTest {
     }
 
     @Test
-    void aMissionThatFailsFailsMaslRunWithMaslsReport() throws IOException {
+    void aMissionThatFailsFailsMaslRunSayingWhyWithWhichStatusAndHowToRunItAgain() throws IOException {
         write(project.resolve("src/main/masl/team.masl"), E1.replace(".logln(\"team\");", ".logln(\"team\" + (1 / 0));"));
 
-        BuildResult result = gradle(project, "maslRun").buildAndFail();
+        BuildResult result = gradle(project, "maslRun", "-Pseed=3", "-PcallTimeout=500").buildAndFail();
 
-        assertTrue(result.getOutput().contains("masl: the mission failed"), result.getOutput());
-        assertTrue(result.getOutput().contains("mission team failed, masl's report is above"), result.getOutput());
+        String output = result.getOutput();
+        assertTrue(output.contains("masl: the mission failed"), output);
+        assertTrue(output.contains("masl: the same run again: gradle maslRun -Pmission=team -PcallTimeout=500 -Pseed=3\n"), output);
+        assertTrue(output.contains("> mission team failed: the mission failed: "), output);
+        assertTrue(output.contains("ArithmeticException"), output);
+        assertTrue(output.contains(" (masl exit status 2: the mission failed, deadlocked, timed out or was stopped);"
+                + " masl's report is above"), output);
     }
 
     /**

@@ -1,0 +1,48 @@
+package masl.gradle;
+
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * The message of a failed {@code maslRun}: which mission, why, and masl's exit status with what it
+ * means. Gradle 4.4's {@code JavaExec} gives no exit status but in the message of its failure ("…
+ * finished with non-zero exit value 2"), which every Gradle since words the same way.
+ */
+final class MaslExit {
+
+    private static final Pattern EXIT_VALUE = Pattern.compile("exit value (\\d+)");
+
+    private MaslExit() {
+    }
+
+    static String describe(String mission, RuntimeException failure, String why) {
+        StringBuilder message = new StringBuilder("mission ").append(mission).append(" failed");
+        if (!why.isEmpty()) {
+            message.append(": ").append(why);
+        }
+        Integer status = status(failure);
+        message.append(status == null ? " (" + failure.getMessage() + ")" : " (masl exit status " + status + ": " + meaning(status) + ")");
+        return message.append("; masl's report is above").toString();
+    }
+
+    private static Integer status(RuntimeException failure) {
+        for (Throwable cause = failure; cause != null; cause = cause.getCause()) {
+            Matcher value = cause.getMessage() == null ? null : EXIT_VALUE.matcher(cause.getMessage());
+            if (value != null && value.find()) {
+                return Integer.valueOf(value.group(1));
+            }
+        }
+        return null;
+    }
+
+    /** The statuses of the {@code masl} command, as its README lists them. */
+    private static String meaning(int status) {
+        return switch (status) {
+            case 1 -> "errors in the program or its descriptors";
+            case 2 -> "the mission failed, deadlocked, timed out or was stopped";
+            case 64 -> "masl was called wrongly";
+            case 70 -> "an internal error of masl";
+            default -> "not one of masl's";
+        };
+    }
+}
