@@ -6,7 +6,7 @@ import java.util.Arrays;
 import java.util.List;
 import masl.jade.JadePlatform;
 import masl.jade.Readiness;
-import masl.jade.testing.JadePlatformExtension;
+import masl.testing.jade.JadePlatformExtension;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.RegisterExtension;

@@ -19,7 +19,7 @@ import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import masl.jade.JadePlatform;
 import masl.jade.Readiness;
-import masl.jade.testing.JadePlatformExtension;
+import masl.testing.jade.JadePlatformExtension;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.RegisterExtension;

@@ -13,7 +13,7 @@ import java.util.List;
 import java.util.regex.Pattern;
 import masl.cli.Main;
 import masl.jade.JadeThreads;
-import masl.jade.testing.SecondJvm;
+import masl.testing.jade.SecondJvm;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

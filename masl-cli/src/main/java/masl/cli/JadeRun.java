@@ -5,7 +5,6 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -62,7 +61,7 @@ final class JadeRun {
                     + " --main-port join one instead");
         }
         this.loaded = loaded;
-        this.descriptors = new DescriptorLoader(nextToProgram(source, agentPath));
+        this.descriptors = new DescriptorLoader(agentPath.withFirst(source.folder()));
         this.options = line.mainHost != null ? JadeOptions.join(line.mainHost, line.mainPort)
                 : line.port != null ? JadeOptions.mainContainer().withPort(line.port) : JadeOptions.mainContainer();
         this.placement = line.place == null ? Map.of() : placement(line.place, loaded);
@@ -92,16 +91,6 @@ final class JadeRun {
             }
         }
         return placement;
-    }
-
-    /** Descriptors are looked up in the program's folder first, as the translator looked them up. */
-    private static AgentPath nextToProgram(SourceFile source, AgentPath agentPath) {
-        List<Path> entries = new ArrayList<>();
-        if (source.folder() != null) {
-            entries.add(source.folder());
-        }
-        entries.addAll(agentPath.entries());
-        return AgentPath.of(entries, agentPath.resources());
     }
 
     /**

@@ -59,7 +59,8 @@ class SampleProjectTest {
 
         BuildResult build = gradle(copy, "build").build();
         assertEquals(TaskOutcome.SUCCESS, build.task(UserBuild.JUNIT_TASK).getOutcome());
-        assertTrue(testReports().contains("tests=\"2\"") && !testReports().contains("failures=\"1"), testReports());
+        assertTrue(UserBuild.testReports(copy).contains("tests=\"2\"") && !UserBuild.testReports(copy).contains("failures=\"1"),
+                UserBuild.testReports(copy));
 
         BuildResult run = gradle(copy, "-q", "maslRun", "-Pmission=count").build();
         assertEquals("total=9\n", run.getOutput());
@@ -118,16 +119,6 @@ class SampleProjectTest {
                 Files.createDirectories(target.getParent());
                 Files.copy(file, target);
             }
-        }
-    }
-
-    private String testReports() throws IOException {
-        try (Stream<Path> files = Files.walk(copy.resolve("build/test-results"))) {
-            StringBuilder all = new StringBuilder();
-            for (Path report : files.filter(file -> file.getFileName().toString().endsWith(".xml")).toList()) {
-                all.append(Files.readString(report));
-            }
-            return all.toString();
         }
     }
 

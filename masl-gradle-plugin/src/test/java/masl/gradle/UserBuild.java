@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.stream.Stream;
 import org.gradle.testkit.runner.GradleRunner;
 import org.gradle.util.GradleVersion;
 
@@ -54,6 +55,17 @@ final class UserBuild {
                 .withGradleInstallation(new File(System.getProperty("masl.gradleHome")))
                 .withProjectDir(project.toFile())
                 .withArguments(all);
+    }
+
+    /** The JUnit XML reports of the project's tests, one after the other. */
+    static String testReports(Path project) throws IOException {
+        try (Stream<Path> files = Files.walk(project.resolve("build/test-results"))) {
+            StringBuilder all = new StringBuilder();
+            for (Path report : files.filter(file -> file.getFileName().toString().endsWith(".xml")).toList()) {
+                all.append(Files.readString(report));
+            }
+            return all.toString();
+        }
     }
 
     static void write(Path file, String text) throws IOException {

@@ -5,7 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
-import masl.jade.testing.SecondJvm;
+import masl.testing.jade.SecondJvm;
 import masl.runtime.MissionProgram;
 
 /**

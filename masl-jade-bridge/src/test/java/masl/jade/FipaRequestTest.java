@@ -17,7 +17,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.Reply;
-import masl.jade.testing.JadePlatformExtension;
+import masl.testing.jade.JadePlatformExtension;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
 import org.junit.jupiter.api.BeforeAll;

@@ -20,7 +20,7 @@ import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import masl.jade.acl.AclInvocations;
-import masl.jade.testing.JadePlatformExtension;
+import masl.testing.jade.JadePlatformExtension;
 import masl.runtime.AgentContext;
 import masl.runtime.EntryDefinition;
 import masl.runtime.MissionOutcome;

@@ -17,7 +17,7 @@ import java.net.URI;
 import java.nio.file.Files;
 import java.util.List;
 import java.util.Optional;
-import masl.jade.testing.ThreadSnapshot;
+import masl.testing.jade.ThreadSnapshot;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

@@ -4,8 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import jade.lang.acl.ACLMessage;
-import masl.jade.testing.JadePlatformExtension;
-import masl.jade.testing.SecondJvm;
+import masl.testing.jade.JadePlatformExtension;
+import masl.testing.jade.SecondJvm;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.RegisterExtension;

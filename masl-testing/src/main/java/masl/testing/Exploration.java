@@ -30,10 +30,10 @@ public final class Exploration {
     }
 
     /** Each distinct journal, in order of first appearance, with the schedules that gave it. */
-    public Map<String, List<Schedule>> distinctJournals() {
-        Map<String, List<Schedule>> journals = new LinkedHashMap<>();
+    public Map<String, List<MissionPlatform>> distinctJournals() {
+        Map<String, List<MissionPlatform>> journals = new LinkedHashMap<>();
         for (MissionRun run : runs) {
-            journals.computeIfAbsent(run.journal(), journal -> new ArrayList<>()).add(run.schedule());
+            journals.computeIfAbsent(run.journal(), journal -> new ArrayList<>()).add(run.platform());
         }
         return journals;
     }
@@ -70,7 +70,7 @@ public final class Exploration {
         StringBuilder report = new StringBuilder(mission).append(": ").append(runs.size()).append(" runs, ")
                 .append(distinctJournals().size()).append(" distinct journals");
         distinctJournals().forEach((journal, schedules) -> report.append("\n--- ").append(schedules.size())
-                .append(" run(s), first under ").append(schedules.get(0)).append(":\n").append(journal));
+                .append(" run(s), first ").append(schedules.get(0)).append(":\n").append(journal));
         return report.toString();
     }
 

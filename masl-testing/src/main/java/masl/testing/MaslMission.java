@@ -7,10 +7,11 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.stream.LongStream;
-import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.descriptor.AgentPath;
+import masl.runtime.scheduling.ReplayCommand;
 import masl.runtime.trace.MemoryTrace;
 import masl.translator.MissionLoader;
 import masl.translator.Translation;
@@ -28,7 +29,10 @@ import masl.translator.source.SourceFile;
  * e2.explore(500).assertEveryRun(run -> run.assertEveryBefore("n=.*", "mine=.*"));
  * }</pre>
  *
- * A program with errors fails the test with its diagnostics ({@code file:line:col: error: ...}).
+ * A program with errors fails the test with its diagnostics ({@code file:line:col: error: ...}). A run
+ * under a seed that fails an assertion says how to run it again: {@code runWith(Schedule.seed(n))},
+ * and for a program read from a file, the {@code masl run} command with its agent path and call
+ * timeout ({@link ReplayCommand}).
  */
 public final class MaslMission {
 
@@ -39,7 +43,7 @@ public final class MaslMission {
     private String agentPath = "";
     private Duration timeout = DEFAULT_TIMEOUT;
     private Duration callTimeout;
-    private MissionLoader loaded;
+    private TranslatedMission translated;
 
     private MaslMission(SourceFile source) {
         this.source = source;
@@ -62,7 +66,7 @@ public final class MaslMission {
     /** Folders and jars with descriptors and their classes, {@code :}-separated, as {@code --agent-path}. */
     public MaslMission agentPath(String path) {
         this.agentPath = path;
-        this.loaded = null;
+        this.translated = null;
         return this;
     }
 
@@ -78,6 +82,7 @@ public final class MaslMission {
      */
     public MaslMission callTimeout(Duration callTimeout) {
         this.callTimeout = callTimeout;
+        this.translated = null;
         return this;
     }
 
@@ -86,23 +91,41 @@ public final class MaslMission {
         return runWith(Schedule.pool());
     }
 
+    /** One run in this JVM under {@code schedule}. */
     public MissionRun runWith(Schedule schedule) {
+        return runOn(schedule);
+    }
+
+    /** One run on {@code platform}: in this JVM under a {@link Schedule}, or inside an agent platform. */
+    public MissionRun runOn(MissionPlatform platform) {
         MemoryTrace trace = new MemoryTrace();
         MissionOutcome outcome;
         try {
-            Mission.Builder mission = loaded().newMission()
-                    .scheduler(schedule.newScheduler())
-                    .journal(new StringBuilder())
-                    .trace(trace);
-            if (callTimeout != null) {
-                mission.callTimeout(callTimeout);
-            }
-            outcome = mission.build().run(timeout);
+            outcome = platform.run(translated(), trace, timeout);
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
-            throw new AssertionError(source.name() + " was interrupted under " + schedule, interrupted);
+            throw new AssertionError(source.name() + " was interrupted " + platform, interrupted);
         }
-        return new MissionRun(source.name(), schedule, outcome, trace.events());
+        return new MissionRun(source.name(), platform, outcome, trace.events(), replayHint(platform));
+    }
+
+    /** How to run a failed seeded run again, in the test and with the masl command; empty for other runs. */
+    private Optional<String> replayHint(MissionPlatform platform) {
+        if (!(platform instanceof Schedule.Seeded seeded)) {
+            return Optional.empty();
+        }
+        String inTheTest = "runWith(Schedule.seed(" + seeded.seed() + "L))";
+        if (source.folder() == null) {
+            return Optional.of("replay: " + inTheTest);
+        }
+        List<String> options = new ArrayList<>();
+        if (!agentPath.isEmpty()) {
+            options.addAll(List.of("--agent-path", agentPath));
+        }
+        if (callTimeout != null) {
+            options.addAll(List.of("--call-timeout", Long.toString(callTimeout.toMillis())));
+        }
+        return Optional.of("replay: " + inTheTest + ", or " + ReplayCommand.masl(source.name(), options).forSeed(seeded.seed()));
     }
 
     /** Runs under seeds 0 to {@code seeds - 1}. */
@@ -120,16 +143,17 @@ public final class MaslMission {
         return new Exploration(source.name(), runs);
     }
 
-    private MissionLoader loaded() {
-        if (loaded == null) {
+    private TranslatedMission translated() {
+        if (translated == null) {
             AgentPath path = AgentPath.parse(agentPath);
             Translation translation = new Translator(path).translate(source);
             if (!translation.succeeded()) {
                 throw new AssertionError(diagnostics(translation));
             }
-            loaded = MissionLoader.load(translation, path);
+            translated = new TranslatedMission(MissionLoader.load(translation, path), path.withFirst(source.folder()),
+                    Optional.ofNullable(callTimeout));
         }
-        return loaded;
+        return translated;
     }
 
     private String diagnostics(Translation translation) {

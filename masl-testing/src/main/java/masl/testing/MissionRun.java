@@ -3,6 +3,7 @@ package masl.testing;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Predicate;
 import java.util.regex.Pattern;
 import masl.runtime.MissionOutcome;
@@ -10,25 +11,29 @@ import masl.runtime.trace.TraceEvent;
 
 /**
  * One finished run of a mission: its outcome, journal and trace, and assertions on them. Every
- * failed assertion names the mission and the schedule, so a run that failed under a seed can be
- * replayed exactly.
+ * failed assertion names the mission and where it ran; one that failed under a seed says how to
+ * replay it exactly.
  */
 public final class MissionRun {
 
     private final String mission;
-    private final Schedule schedule;
+    private final MissionPlatform platform;
     private final MissionOutcome outcome;
     private final List<TraceEvent> trace;
+    private final Optional<String> replayHint;
 
-    MissionRun(String mission, Schedule schedule, MissionOutcome outcome, List<TraceEvent> trace) {
+    MissionRun(String mission, MissionPlatform platform, MissionOutcome outcome, List<TraceEvent> trace,
+            Optional<String> replayHint) {
         this.mission = mission;
-        this.schedule = schedule;
+        this.platform = platform;
         this.outcome = outcome;
         this.trace = List.copyOf(trace);
+        this.replayHint = replayHint;
     }
 
-    public Schedule schedule() {
-        return schedule;
+    /** Where it ran: the {@link Schedule} of an in-process run, or the agent platform. */
+    public MissionPlatform platform() {
+        return platform;
     }
 
     public MissionOutcome outcome() {
@@ -134,11 +139,11 @@ public final class MissionRun {
     }
 
     AssertionError failure(String what) {
-        return new AssertionError(mission + " under " + schedule + ": " + what);
+        return new AssertionError(mission + " " + platform + ": " + what + replayHint.map(hint -> "\n" + hint).orElse(""));
     }
 
     @Override
     public String toString() {
-        return mission + " under " + schedule + ": " + outcome.status();
+        return mission + " " + platform + ": " + outcome.status();
     }
 }

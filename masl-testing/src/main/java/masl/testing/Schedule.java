@@ -1,17 +1,32 @@
 package masl.testing;
 
+import java.time.Duration;
+import masl.runtime.Mission;
+import masl.runtime.MissionOutcome;
 import masl.runtime.scheduling.PoolScheduler;
 import masl.runtime.scheduling.Scheduler;
 import masl.runtime.scheduling.SeededScheduler;
 import masl.runtime.scheduling.ThreadPerAgentScheduler;
+import masl.runtime.trace.Trace;
 
 /**
- * Who runs a mission's agents: the real pool, one thread per agent, or one thread drawing every
- * choice from a seed on a virtual clock (reproducible). Its text says how to replay a run.
+ * Who runs a mission's agents in this JVM: the real pool, one thread per agent, or one thread drawing
+ * every choice from a seed on a virtual clock (reproducible).
  */
-public sealed interface Schedule {
+public sealed interface Schedule extends MissionPlatform {
 
     Scheduler newScheduler();
+
+    /** A fresh in-process mission of the program, its agents run by this schedule's scheduler. */
+    @Override
+    default MissionOutcome run(TranslatedMission mission, Trace trace, Duration timeout) throws InterruptedException {
+        Mission.Builder run = mission.loader().newMission()
+                .scheduler(newScheduler())
+                .journal(new StringBuilder())
+                .trace(trace);
+        mission.callTimeout().ifPresent(run::callTimeout);
+        return run.build().run(timeout);
+    }
 
     /** The pool of {@code masl run}: one worker per core. */
     static Schedule pool() {
@@ -36,7 +51,7 @@ public sealed interface Schedule {
 
         @Override
         public String toString() {
-            return "the pool scheduler";
+            return "under the pool scheduler";
         }
     }
 
@@ -48,7 +63,7 @@ public sealed interface Schedule {
 
         @Override
         public String toString() {
-            return "one thread per agent";
+            return "under one thread per agent";
         }
     }
 
@@ -60,7 +75,7 @@ public sealed interface Schedule {
 
         @Override
         public String toString() {
-            return "seed " + seed + " (replay: runWith(Schedule.seed(" + seed + "L)), or masl run --seed " + seed + ")";
+            return "under seed " + seed;
         }
     }
 }

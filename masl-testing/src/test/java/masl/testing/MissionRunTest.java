@@ -1,15 +1,21 @@
 package masl.testing;
 
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
 import masl.runtime.trace.TraceEvent;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /** The assertions a user's test makes on one run, and what their failures say. */
 class MissionRunTest {
 
-    private static final MaslMission E2 = MaslMission.fromString("e2.masl", """
+    private static final String E2_TEXT = """
             import Default.xml as Default;
             Default a, b, c, d, e = newAgent(Default);
             synchronous entry main (true) {
@@ -20,7 +26,8 @@ class MissionRunTest {
               scalar entry report (true) { .logln("n=" + n); }
               .logln("mine=" + mine);
             }
-            """);
+            """;
+    private static final MaslMission E2 = MaslMission.fromString("e2.masl", E2_TEXT);
 
     @Test
     void journalAssertionsHoldOnExampleE2() {
@@ -33,13 +40,37 @@ class MissionRunTest {
     }
 
     @Test
-    void aFailedAssertionNamesTheMissionAndTheSeedToReplay() {
+    void aFailedAssertionNamesTheMissionAndTheSeedToReplayInTheTest() {
         MissionRun run = E2.runWith(Schedule.seed(42));
 
         AssertionError failure = assertThrows(AssertionError.class, () -> run.assertJournal("n=4\n"));
 
-        assertTrue(failure.getMessage().startsWith("e2.masl under seed 42 (replay: "), failure.getMessage());
-        assertTrue(failure.getMessage().contains("masl run --seed 42"), failure.getMessage());
+        assertTrue(failure.getMessage().startsWith("e2.masl under seed 42: journal differs"), failure.getMessage());
+        assertTrue(failure.getMessage().endsWith("\nreplay: runWith(Schedule.seed(42L))"), failure.getMessage());
+        assertFalse(failure.getMessage().contains("masl run"), "a program given as text is no file masl can run: "
+                + failure.getMessage());
+    }
+
+    @Test
+    void aProgramFromAFileIsReplayedWithMaslRunItsAgentPathAndCallTimeout(@TempDir Path folder) throws IOException {
+        Path program = Files.writeString(folder.resolve("e2.masl"), E2_TEXT);
+        MissionRun run = MaslMission.fromFile(program).agentPath("robots:lib/arm.jar").callTimeout(Duration.ofMillis(500))
+                .runWith(Schedule.seed(42));
+
+        AssertionError failure = assertThrows(AssertionError.class, () -> run.assertJournal("n=4\n"));
+
+        assertTrue(failure.getMessage().endsWith("\nreplay: runWith(Schedule.seed(42L)), or masl run " + program
+                + " --agent-path robots:lib/arm.jar --call-timeout 500 --seed 42"), failure.getMessage());
+    }
+
+    @Test
+    void aRunOffTheSeedHasNoReplayHint() {
+        MissionRun run = E2.runWith(Schedule.threads());
+
+        AssertionError failure = assertThrows(AssertionError.class, () -> run.assertJournal("n=4\n"));
+
+        assertTrue(failure.getMessage().startsWith("e2.masl under one thread per agent: journal differs"), failure.getMessage());
+        assertFalse(failure.getMessage().contains("replay"), failure.getMessage());
     }
 
     @Test

@@ -9,7 +9,7 @@ import java.util.List;
 import java.util.function.Function;
 import masl.jade.JadeLauncher;
 import masl.jade.TestPrograms;
-import masl.jade.testing.JadePlatformExtension;
+import masl.testing.jade.JadePlatformExtension;
 import masl.runtime.AgentProgram;
 import masl.runtime.EntryDefinition;
 import masl.runtime.MissionOutcome;

@@ -58,6 +58,19 @@ public final class AgentPath {
         return new AgentPath(entries, resources);
     }
 
+    /**
+     * This path with {@code folder} searched first (a program's folder, where its descriptors are looked
+     * up before the agent path); this path itself when {@code folder} is null.
+     */
+    public AgentPath withFirst(Path folder) {
+        if (folder == null) {
+            return this;
+        }
+        List<Path> first = new ArrayList<>(List.of(folder));
+        first.addAll(entries);
+        return new AgentPath(first, resources);
+    }
+
     /** The folders and jars, in lookup order. */
     public List<Path> entries() {
         return entries;

@@ -1,4 +1,4 @@
-package masl.jade.testing;
+package masl.testing.jade;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -63,7 +63,7 @@ class JadePlatformExtensionTest {
             assertTrue(failure.getMessage().startsWith(
                     "LeakyTest: threads it started are alive 100 ms after it ended: [leaked-by-a-test at "),
                     failure.getMessage());
-            assertTrue(failure.getMessage().contains("masl.jade.testing.JadePlatformExtensionTest.awaitQuietly("),
+            assertTrue(failure.getMessage().contains("masl.testing.jade.JadePlatformExtensionTest.awaitQuietly("),
                     "the frame of the test's code the thread waits in: " + failure.getMessage());
         } finally {
             release.countDown();

@@ -1,4 +1,4 @@
-package masl.jade.testing;
+package masl.testing.jade;
 
 import java.time.Duration;
 import java.util.ArrayList;
@@ -7,6 +7,7 @@ import java.util.stream.Collectors;
 import masl.jade.JadeOptions;
 import masl.jade.JadePlatform;
 import masl.jade.JadeThreads;
+import masl.testing.MissionPlatform;
 import org.junit.jupiter.api.extension.AfterAllCallback;
 import org.junit.jupiter.api.extension.AfterEachCallback;
 import org.junit.jupiter.api.extension.BeforeAllCallback;
@@ -24,7 +25,8 @@ import org.junit.jupiter.api.extension.ExtensionContext;
  *
  * @Test
  * void aMission() throws Exception {
- *     JadeLauncher.of(program).types(types).run(JADE.platform(), TIMEOUT).requireCompleted();
+ *     JADE.platform().container().acceptNewAgent("greeter", new GreeterAgent()).start();
+ *     MaslMission.fromFile(Path.of("src/test/masl/greet.masl")).runOn(JADE.missionPlatform()).assertJournal("hello team\n");
  * }
  * }</pre>
  *
@@ -96,6 +98,14 @@ public final class JadePlatformExtension
             platform = JadePlatform.start(JadeOptions.mainContainer());
         }
         return platform;
+    }
+
+    /**
+     * The platform of the class (or of the test) as a place to run missions under test:
+     * {@code mission.runOn(JADE.missionPlatform())} runs one inside it ({@link InJade}).
+     */
+    public MissionPlatform missionPlatform() {
+        return InJade.on(platform());
     }
 
     private synchronized void open(ExtensionContext context) {

@@ -1,4 +1,4 @@
-package masl.jade.testing;
+package masl.testing.jade;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

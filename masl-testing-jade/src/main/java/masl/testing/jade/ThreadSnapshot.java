@@ -1,4 +1,4 @@
-package masl.jade.testing;
+package masl.testing.jade;
 
 import java.time.Duration;
 import java.util.List;
