@@ -43,7 +43,7 @@ public final class MaslMission {
     private String agentPath = "";
     private Duration timeout = DEFAULT_TIMEOUT;
     private Duration callTimeout;
-    private TranslatedMission translated;
+    private MissionLoader loaded;
 
     private MaslMission(SourceFile source) {
         this.source = source;
@@ -66,7 +66,7 @@ public final class MaslMission {
     /** Folders and jars with descriptors and their classes, {@code :}-separated, as {@code --agent-path}. */
     public MaslMission agentPath(String path) {
         this.agentPath = path;
-        this.translated = null;
+        this.loaded = null;
         return this;
     }
 
@@ -82,7 +82,6 @@ public final class MaslMission {
      */
     public MaslMission callTimeout(Duration callTimeout) {
         this.callTimeout = callTimeout;
-        this.translated = null;
         return this;
     }
 
@@ -143,17 +142,17 @@ public final class MaslMission {
         return new Exploration(source.name(), runs);
     }
 
+    /** The program, translated and compiled at the first run, with this mission's options as they are now. */
     private TranslatedMission translated() {
-        if (translated == null) {
-            AgentPath path = AgentPath.parse(agentPath);
+        AgentPath path = AgentPath.parse(agentPath);
+        if (loaded == null) {
             Translation translation = new Translator(path).translate(source);
             if (!translation.succeeded()) {
                 throw new AssertionError(diagnostics(translation));
             }
-            translated = new TranslatedMission(MissionLoader.load(translation, path), path.withFirst(source.folder()),
-                    Optional.ofNullable(callTimeout));
+            loaded = MissionLoader.load(translation, path);
         }
-        return translated;
+        return new TranslatedMission(loaded, path.withFirst(source.folder()), Optional.ofNullable(callTimeout));
     }
 
     private String diagnostics(Translation translation) {
