@@ -19,6 +19,14 @@ import masl.runtime.scheduling.Scheduler;
 final class ThreadedBehaviourScheduler implements Scheduler {
 
     private static final long JOIN_MILLIS = 10_000;
+    /**
+     * The step boundaries and loop iterations an agent passes before its slice ends and its driver
+     * runs the next one. The thread is the agent's own, so this is not for fairness: a driver learns
+     * that the mission has ended only between slices, and an agent spinning in a loop (polling a
+     * primitive in an empty {@code while}) would otherwise never end its slice, nor its thread.
+     * Ending a slice costs a permit handed to itself; a few hundred steps make that negligible.
+     */
+    private static final int STEPS_PER_SLICE = 256;
 
     private List<? extends Agent> hosts = List.of();
     private final ThreadedBehaviourFactory threads = new ThreadedBehaviourFactory();
@@ -73,7 +81,7 @@ final class ThreadedBehaviourScheduler implements Scheduler {
 
     @Override
     public int stepsPerSlice() {
-        return Integer.MAX_VALUE;
+        return STEPS_PER_SLICE;
     }
 
     /**

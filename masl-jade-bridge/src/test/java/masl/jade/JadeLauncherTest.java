@@ -53,6 +53,32 @@ class JadeLauncherTest {
     }
 
     /** {@code --call-timeout} inside JADE bounds the mission's own calls as in-process: default value, the mission goes on. */
+    /**
+     * An agent that polls an accessor in an empty {@code while} never parks: its driver must still see
+     * the mission's end, or its thread outlives the mission (and JADE's shutdown waits for it in vain).
+     */
+    @Test
+    void anAgentSpinningInALoopEndsWithTheMissionsTimeoutAndLeavesNoThreadBehind() throws Exception {
+        ThreadSnapshot before = ThreadSnapshot.take();
+        MissionProgram program = TestPrograms.of(null, 1, self -> new CompactProgram(self) {
+            @Override
+            protected void resume(AgentContext ctx) {
+                // while (.getProxyID() == 0) {}: never true, never a busy-wait that parks (it invokes a primitive)
+                while (ctx.invokeSelf("getProxyID", -1, self::getProxyID) == 0) {
+                    if (!ctx.loopIteration()) {
+                        return;
+                    }
+                }
+                ctx.finish();
+            }
+        });
+        MissionOutcome outcome = JadeLauncher.of(program).types(TestPrograms::type)
+                .run(JadeOptions.mainContainer(), Duration.ofMillis(500));
+        assertEquals(MissionOutcome.Status.TIMED_OUT, outcome.status());
+        assertTrue(outcome.report().startsWith("agent a0 (0) at pc"), outcome.report());
+        assertEquals(List.of(), before.startedSince());
+    }
+
     @Test
     void aCallTimeoutBoundsTheMissionsOwnCalls() throws Exception {
         ServiceAgent.gate = new ServiceAgent.Gate();
