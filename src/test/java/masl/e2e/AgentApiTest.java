@@ -23,7 +23,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * of {@code src/test/resources/workers}. Each mission runs on the pool, with a thread per agent and
  * over seeds of the deterministic scheduler.
  */
-@Timeout(300)
+@Timeout(60)
 class AgentApiTest {
 
     private static final int RUNS = 20;

@@ -22,7 +22,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * with the same text and status; and a program {@code check} accepts, {@code run} runs. The Worker
  * and Scout types of {@code src/test/resources/workers}, found on the class path.
  */
-@Timeout(300)
+@Timeout(60)
 class CheckRunParityTest {
 
     /** Line 11 of each program is the statement under test. */

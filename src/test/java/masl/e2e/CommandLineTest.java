@@ -15,12 +15,14 @@ import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
 import masl.e2e.agents.HomeOnly;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /** {@code masl run} on the project's own missions, as the README shows it, and as a process a user stops. */
 @Timeout(180)
+@Tag("slow")
 class CommandLineTest {
 
     @TempDir

@@ -3,6 +3,7 @@ package masl.e2e;
 import java.util.stream.LongStream;
 import masl.testing.MaslMission;
 import masl.testing.Schedule;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -11,6 +12,7 @@ import org.junit.jupiter.api.Test;
  * one wave; each asynchronous or scalar child of a synchronous block is one instruction, also in
  * an e-sequence; an agent held by a child's entry barrier is still active in its ancestors.
  */
+@Tag("slow")
 class EntrySemanticsTest {
 
     private static final int SEEDS = 500;

@@ -18,7 +18,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * and explored over 500 seeds of the deterministic scheduler, gives the journal (or satisfies the
  * journal constraints) examples.md states. Exploration catches a property that holds by luck.
  */
-@Timeout(300)
+@Timeout(60)
 class ExamplesTest {
 
     private static final int RUNS = 50;

@@ -14,6 +14,7 @@ import masl.testing.jade.JadePlatformExtension;
 import masl.testing.jade.SecondJvm;
 import masl.missions.fipa.CalculatorAgent;
 import masl.missions.fipa.GreeterAgent;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.RegisterExtension;
@@ -28,6 +29,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
  * standard error.
  */
 @Timeout(120)
+@Tag("slow")
 class FipaAgentsMissionTest {
 
     @RegisterExtension

@@ -34,6 +34,7 @@ import masl.translator.compile.InMemoryCompiler;
 import masl.translator.diagnostics.Diagnostic;
 import masl.translator.diagnostics.DiagnosticPrinter;
 import masl.translator.source.SourceFile;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -50,6 +51,7 @@ import org.junit.jupiter.api.io.TempDir;
  * replayed with {@code masl check}.
  */
 @Timeout(120)
+@Tag("slow")
 class FuzzTest {
 
     private static final long SEED = 20261123L;
@@ -127,7 +129,7 @@ class FuzzTest {
      * if javac refuses it, each program is compiled alone to name the one at fault.
      */
     @Test
-    @Timeout(600)
+    @Timeout(120)
     void edgeProgramsCompileOrGiveOnlyPositionedDiagnostics() throws IOException {
         EdgePrograms generator = new EdgePrograms(new Random(SEED + 2));
         Translator translator = new Translator(AgentPath.parse(""));
@@ -220,7 +222,7 @@ class FuzzTest {
      * escapes: each loads or is refused with located problems, whatever the caller's stack.
      */
     @Test
-    @Timeout(300)
+    @Timeout(120)
     void generatedXodeGivesOnlyLocatedProblems() throws IOException {
         Random random = new Random(SEED + 3);
         List<String> elements = List.of("group", "body", "space", "geom", "mass", "jointgroup", "transform", "unknown");

@@ -17,7 +17,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * stores nothing. A team of a Worker and a Scout ({@code src/test/resources/workers}): only the Scout
  * has {@code sweep} (asynchronous), {@code scan} (synchronous) and {@code range}.
  */
-@Timeout(300)
+@Timeout(60)
 class HeterogeneousLabelTest {
 
     private static final int RUNS = 20;

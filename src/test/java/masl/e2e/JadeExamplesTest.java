@@ -7,6 +7,7 @@ import java.util.List;
 import masl.jade.JadePlatform;
 import masl.jade.Readiness;
 import masl.testing.jade.JadePlatformExtension;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.RegisterExtension;
@@ -20,6 +21,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
  * stays empty.
  */
 @Timeout(120)
+@Tag("slow")
 class JadeExamplesTest {
 
     @RegisterExtension

@@ -14,7 +14,7 @@ import org.junit.jupiter.api.Timeout;
  * is served on the callee's thread while the caller waits: the case where the caller used to wake
  * before the label had counted the call.
  */
-@Timeout(600)
+@Timeout(60)
 class LabelledSynchronousCallTest {
 
     private static final int SEEDS = 400;

@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Timeout;
  * a redefinition with an id of its own, and a user's own Default.xml next to the program, which is
  * the root type with its own ids and states.
  */
-@Timeout(300)
+@Timeout(60)
 class OwnDescriptorIdsTest {
 
     private static final int SEEDS = 50;

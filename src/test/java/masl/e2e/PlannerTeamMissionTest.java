@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Pattern;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -18,6 +19,7 @@ import org.junit.jupiter.api.io.TempDir;
  * the way-points the planner returns to their asynchronous invocations (collected by labels), and
  * every robot ends at its goal without touching a box; and every run is the same, byte for byte.
  */
+@Tag("slow")
 class PlannerTeamMissionTest {
 
     private static final Path MISSIONS = Path.of(System.getProperty("user.dir")).resolve("missions");

@@ -9,6 +9,7 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
 import masl.jade.Readiness;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -20,6 +21,7 @@ import org.junit.jupiter.api.Timeout;
  * on the container) completes. No JADE runs in this JVM.
  */
 @Timeout(120)
+@Tag("slow")
 class ReadinessLineTest {
 
     private static final Duration WITHIN = Duration.ofSeconds(60);

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.io.TempDir;
@@ -15,6 +16,7 @@ import org.junit.jupiter.api.io.TempDir;
  * The row-walking mission: {@code missions/row-walking.masl}, one program, walks a row of 3 and of 6
  * atoms forward through {@code masl run --sim}, in lock-step, the same way twice.
  */
+@Tag("slow")
 class RowWalkingMissionTest {
 
     private static final Path MISSIONS = Path.of(System.getProperty("user.dir")).resolve("missions");

@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -15,13 +16,14 @@ import org.junit.jupiter.api.io.TempDir;
  * Large teams through {@code masl run}, in the default test JVM: they must simply complete (speed is
  * measured by {@code gradle bench}, not here).
  */
+@Tag("slow")
 class ScaleTest {
 
     @TempDir
     Path folder;
 
     @Test
-    @Timeout(300)
+    @Timeout(90)
     void aThousandAgentsTakeAThousandLockStepSteps() throws IOException {
         Path program = team("thousand.masl", 1000, """
                 synchronous entry main (true) {
@@ -39,7 +41,7 @@ class ScaleTest {
     }
 
     @Test
-    @Timeout(300)
+    @Timeout(90)
     void tenThousandAgentsTakeTenLockStepSteps() throws IOException {
         Path program = team("ten-thousand.masl", 10_000, """
                 synchronous entry main (true) {

@@ -22,6 +22,7 @@ import masl.translator.Translation;
 import masl.translator.Translator;
 import masl.translator.diagnostics.DiagnosticPrinter;
 import masl.translator.source.SourceFile;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -34,6 +35,7 @@ import org.junit.jupiter.api.io.TempDir;
  * the mission must complete and leave no thread behind. The system property {@code masl.stress.seconds}
  * ({@code gradle :test -PstressSeconds=5}) shortens the run for local work; CI runs 30 s.
  */
+@Tag("slow")
 class StressTest {
 
     private static final int AGENTS = 500;
@@ -45,7 +47,7 @@ class StressTest {
     Path folder;
 
     @Test
-    @Timeout(300)
+    @Timeout(120)
     void fiveHundredAgentsJoinAndLeaveSynchronousBlocksWhileOthersEmitEvents() throws Exception {
         int seconds = seconds();
         Path program = program();

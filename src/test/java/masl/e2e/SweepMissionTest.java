@@ -11,6 +11,7 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -22,6 +23,7 @@ import org.junit.jupiter.params.provider.CsvSource;
  * failed robot dropping out, the lead passing on, and the leader asking the robot it re-elects the
  * lane to where it is.
  */
+@Tag("slow")
 class SweepMissionTest {
 
     private static final Path MISSIONS = Path.of(System.getProperty("user.dir")).resolve("missions");

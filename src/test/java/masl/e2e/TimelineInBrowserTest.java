@@ -14,6 +14,7 @@ import java.util.List;
 import masl.cli.timeline.Timeline;
 import masl.cli.timeline.TimelineHtml;
 import masl.cli.timeline.TraceReader;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -24,6 +25,7 @@ import org.junit.jupiter.api.Test;
  * in-process runs are seeded, so their pages (laid out in record order, the clock being virtual)
  * are the same every time; the sweep runs in lock-step, the same every time too.
  */
+@Tag("slow")
 class TimelineInBrowserTest {
 
     private static final int MAIN_BLUE = 0x4e79a7;

@@ -14,6 +14,7 @@ import java.util.regex.Pattern;
 import masl.cli.Main;
 import masl.jade.JadeThreads;
 import masl.testing.jade.SecondJvm;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -28,6 +29,7 @@ import org.junit.jupiter.api.Timeout;
  * mission ends (and is ended in any case); no JADE thread is left in this JVM after each mission.
  */
 @Timeout(120)
+@Tag("slow")
 class TwoJvmJadeExamplesTest {
 
     @Test

@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -17,7 +18,8 @@ import org.junit.jupiter.api.io.TempDir;
  * they simply work, 1 with a positioned error when Java cannot hold them; never 70, the internal
  * error each of them was.
  */
-@Timeout(300)
+@Timeout(90)
+@Tag("slow")
 class JavaLimitsCommandTest {
 
     private static final String HEADER = "import Default.xml as Default;\nDefault a = newAgent(Default);\n";

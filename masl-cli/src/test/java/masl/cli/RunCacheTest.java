@@ -32,7 +32,7 @@ import org.junit.jupiter.api.io.TempDir;
  * changed program or descriptor never runs a stale entry, a tampered entry is not run, and masl
  * processes writing the same entry at once leave one that runs.
  */
-@Timeout(300)
+@Timeout(60)
 class RunCacheTest {
 
     private static final String PROGRAM = """

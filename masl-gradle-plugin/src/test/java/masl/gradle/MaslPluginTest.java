@@ -12,10 +12,12 @@ import java.nio.file.Path;
 import org.gradle.testkit.runner.BuildResult;
 import org.gradle.testkit.runner.TaskOutcome;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** Small stand-alone builds applying the published plug-in by its id and version. */
+@Tag("slow")
 class MaslPluginTest {
 
     private static final String E1 = """

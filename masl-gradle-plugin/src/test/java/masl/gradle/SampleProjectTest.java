@@ -19,6 +19,7 @@ import java.util.stream.Stream;
 import org.gradle.testkit.runner.BuildResult;
 import org.gradle.testkit.runner.BuildTask;
 import org.gradle.testkit.runner.TaskOutcome;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -27,6 +28,7 @@ import org.junit.jupiter.api.io.TempDir;
  * published modules only: its agent class and descriptor beside its mission, its JUnit 5 test of the
  * mission. One build after another, as a user works with it.
  */
+@Tag("slow")
 class SampleProjectTest {
 
     private static final Path SAMPLE = Path.of(System.getProperty("masl.samples"), "counter-team");

@@ -16,6 +16,7 @@ import java.util.logging.Handler;
 import java.util.logging.LogRecord;
 import java.util.logging.Logger;
 import masl.testing.jade.ThreadSnapshot;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -27,6 +28,7 @@ import org.junit.jupiter.api.Timeout;
  * platform must still end it whole, and the next platform of the JVM must start and end as usual.
  */
 @Timeout(120)
+@Tag("slow")
 class JadePlatformShutdownTest {
 
     @Test

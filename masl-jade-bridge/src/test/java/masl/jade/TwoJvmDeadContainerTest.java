@@ -17,6 +17,7 @@ import masl.runtime.MissionProgram;
 import masl.runtime.Mode;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.TestAgent;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.RegisterExtension;
@@ -27,6 +28,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
  * so the mission goes on and ends long before its timeout.
  */
 @Timeout(120)
+@Tag("slow")
 class TwoJvmDeadContainerTest {
 
     private static final Duration MISSION_TIMEOUT = Duration.ofSeconds(90);

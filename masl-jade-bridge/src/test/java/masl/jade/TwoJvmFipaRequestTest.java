@@ -19,6 +19,7 @@ import masl.testing.jade.SecondJvm;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.RegisterExtension;
@@ -29,6 +30,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
  * <em>other</em> and has it run on the body; the answer comes from the body.
  */
 @Timeout(120)
+@Tag("slow")
 class TwoJvmFipaRequestTest {
 
     private static final Duration TIMEOUT = Duration.ofSeconds(60);

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import masl.runtime.MissionProgram;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -20,6 +21,7 @@ import org.junit.jupiter.api.Timeout;
  * why, instead of waiting for a coordinator's {@code masl-end} that will never come.
  */
 @Timeout(120)
+@Tag("slow")
 class TwoJvmLostCoordinatorTest {
 
     @Test

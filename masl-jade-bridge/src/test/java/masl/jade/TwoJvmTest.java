@@ -6,12 +6,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import jade.lang.acl.ACLMessage;
 import masl.testing.jade.JadePlatformExtension;
 import masl.testing.jade.SecondJvm;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.RegisterExtension;
 
 /** A container in a second JVM joins this JVM's platform over loopback, and leaves no thread there. */
 @Timeout(120)
+@Tag("slow")
 class TwoJvmTest {
 
     @RegisterExtension

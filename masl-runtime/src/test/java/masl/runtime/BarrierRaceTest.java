@@ -15,6 +15,7 @@ import masl.runtime.testing.PhaseLog;
 import masl.runtime.testing.TestAgent;
 import masl.runtime.trace.Trace;
 import masl.runtime.trace.TraceEvent;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -26,7 +27,8 @@ import org.junit.jupiter.params.provider.EnumSource;
  * that the change and the arrivals start at the same instant; the other drivers race as they come.
  * Every run must trip each phase exactly once, with exactly the agents in lock-step then.
  */
-@Timeout(300)
+@Timeout(60)
+@Tag("slow")
 class BarrierRaceTest {
 
     /** Missions per driver: the race is decided in a few nanoseconds, so it takes many runs to see both sides. */

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -21,6 +22,7 @@ import org.junit.jupiter.api.Timeout;
  * registration): one iteration of each, in a JVM of jcstress's own, every outcome checked against
  * the outcomes the test allows. {@code gradle jcstress} runs them at length.
  */
+@Tag("slow")
 class JcstressRunTest {
 
     private static final Pattern RESULTS = Pattern.compile(

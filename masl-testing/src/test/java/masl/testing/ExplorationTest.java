@@ -5,9 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Optional;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Exploring seeded schedules finds the interleavings a mission's correctness depends on. */
+@Tag("slow")
 class ExplorationTest {
 
     /**

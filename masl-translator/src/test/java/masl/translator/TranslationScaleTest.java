@@ -7,6 +7,7 @@ import java.lang.management.ManagementFactory;
 import java.util.function.IntFunction;
 import masl.runtime.descriptor.AgentPath;
 import masl.translator.source.SourceFile;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -20,6 +21,7 @@ import org.junit.jupiter.api.Timeout;
  * not weigh as much as the work measured.
  */
 @Timeout(300)
+@Tag("slow")
 class TranslationScaleTest {
 
     private static final int WARM_UPS = 2;

@@ -26,7 +26,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
  * identical where examples.md fixes the journal, the same lines under the same constraints where it
  * allows several orders. Each mission is repeated {@value #REPETITIONS} times on one platform.
  */
-@Timeout(300)
+@Timeout(60)
 class JadeExamplesTest {
 
     private static final int REPETITIONS = 20;

@@ -19,6 +19,7 @@ import masl.runtime.MissionOutcome;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.RegisterExtension;
@@ -30,6 +31,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
  * JVM's container has left the platform when the mission's end returns.
  */
 @Timeout(120)
+@Tag("slow")
 class TwoJvmExamplesTest {
 
     private static final Duration TIMEOUT = Duration.ofSeconds(60);

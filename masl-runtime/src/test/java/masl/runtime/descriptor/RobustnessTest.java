@@ -10,10 +10,12 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Random;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** Whatever the bytes, loading ends in a type or a DescriptorException with problems, never anything else. */
+@Tag("slow")
 class RobustnessTest {
 
     @TempDir

@@ -17,6 +17,7 @@ import masl.translator.diagnostics.Diagnostic;
 import masl.translator.diagnostics.Diagnostics;
 import masl.translator.parse.Nesting;
 import masl.translator.source.SourceFile;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -25,6 +26,7 @@ import org.junit.jupiter.api.Timeout;
  * brackets, blocks or operators overflowed the stack, an internal error); past masl's limit it is a
  * positioned error naming the limit.
  */
+@Tag("slow")
 class DeepNestingTest {
 
     private static final int LEVELS = 2_000;

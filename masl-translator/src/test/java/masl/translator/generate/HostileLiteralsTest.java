@@ -13,6 +13,7 @@ import masl.translator.Translation;
 import masl.translator.Translator;
 import masl.translator.diagnostics.Diagnostic;
 import masl.translator.source.SourceFile;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -24,6 +25,7 @@ import org.junit.jupiter.api.Test;
  * also lands in a generated comment, which must stay a comment. A Unicode escape standing for the
  * literal's own syntax, anywhere among such characters, is refused at its column.
  */
+@Tag("slow")
 class HostileLiteralsTest {
 
     private static final long[] SEEDS = {1, 2, 3, 4, 5, 6, 7, 8};

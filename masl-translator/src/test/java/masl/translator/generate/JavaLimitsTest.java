@@ -10,6 +10,7 @@ import masl.runtime.scheduling.SeededScheduler;
 import masl.translator.MissionLoader;
 import masl.translator.Translation;
 import masl.translator.diagnostics.Diagnostic;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -18,6 +19,7 @@ import org.junit.jupiter.api.Test;
  * constant over 65,535 bytes, a statement over the 64 KB of a method; and MASL names that are the
  * generated code's own names are renamed, not clashed with.
  */
+@Tag("slow")
 class JavaLimitsTest {
 
     private static final String HEADER = "import Default.xml as Default;\nDefault a = newAgent(Default);\n";

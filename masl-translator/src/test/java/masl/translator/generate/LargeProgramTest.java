@@ -9,6 +9,7 @@ import masl.runtime.descriptor.AgentPath;
 import masl.runtime.scheduling.SeededScheduler;
 import masl.translator.MissionLoader;
 import masl.translator.Translation;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -17,6 +18,7 @@ import org.junit.jupiter.api.Timeout;
  * an internal error): the state machine, the class initialiser of the static structure and
  * {@code reactionPc} are split between methods and classes, and the program still runs as written.
  */
+@Tag("slow")
 class LargeProgramTest {
 
     private static final int STATEMENTS = 3_000;
@@ -29,7 +31,7 @@ class LargeProgramTest {
      * static structure needs more than one class.
      */
     @Test
-    @Timeout(300)
+    @Timeout(120)
     void aBlockOfThousandsOfStatementsCompilesAndRunsInOrder() {
         StringBuilder program = new StringBuilder("import Default.xml as Default;\nDefault a = newAgent(Default);\n"
                 + "scalar entry main (true) {\n");

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import masl.agents.MaamAtom;
 import masl.sim.physics.PhysicsWorld;
 import masl.sim.xode.XodeException;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -13,6 +14,7 @@ import org.junit.jupiter.params.provider.ValueSource;
  * Java: all side legs back on the ground; then the odd atoms' left legs and the even atoms' right
  * legs lift, swing forward and land; then the other side legs; repeat.
  */
+@Tag("slow")
 class RowWalkingTest {
 
     private static final double SWING = 0.35;
