@@ -9,6 +9,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import org.gradle.testkit.runner.BuildResult;
 import org.gradle.testkit.runner.TaskOutcome;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -17,6 +18,7 @@ import org.junit.jupiter.api.io.TempDir;
  * depends on the published {@code masl-testing-jade} alone, starts its own JADE agent in the platform
  * of {@code JadePlatformExtension}, and runs the mission there and in-process, copying no code of MASL.
  */
+@Tag("slow")
 class JadeTestingUserBuildTest {
 
     @TempDir
