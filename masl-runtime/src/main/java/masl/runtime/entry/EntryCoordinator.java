@@ -27,8 +27,8 @@ import masl.runtime.trace.TraceEvent;
 /**
  * Owns every membership of a mission: entries, waves, entry/exit barriers and synchronisation
  * barriers (MASL §6). One lock guards them all. The rules cross blocks (a member of a child is a
- * member of every ancestor, a free entry barrier looks at the parent's members, the last active
- * member finishing ends a wave while releasing others), and one lock makes each change, with all
+ * member of every ancestor, a free entry barrier looks at the parent's members, the last member
+ * finishing ends a wave while releasing others), and one lock makes each change, with all
  * its consequences, a single atomic step, which is exactly what §6.5 demands of a wave's end. The
  * hot paths that need no membership (shared variables, the journal, events) never take it, nor
  * does an arrival at a synchronisation barrier that does not complete it (the hot path of
@@ -59,7 +59,8 @@ public final class EntryCoordinator {
     private final Wave missionWave = new Wave(null, 1, new SharedVariable<?>[0]);
     private final Set<Entry> awaitingFirstRelease = new LinkedHashSet<>();
     // Work lists of the operation in progress, used only while holding the lock.
-    private final ArrayDeque<Wave> weakenedWaves = new ArrayDeque<>();
+    /** Waves a member left or went waiting-out in: their exit barrier may release (§6.3). */
+    private final ArrayDeque<Wave> exitCandidates = new ArrayDeque<>();
     private final Set<SynchronisationBarrier> weakenedBarriers = new LinkedHashSet<>();
     private WakeBatch wakes = new WakeBatch();
     /** A batch woken by an earlier operation, for the next one to reuse; taken under the lock, returned after. */
@@ -146,6 +147,7 @@ public final class EntryCoordinator {
             }
             membership.status = Membership.Status.WAITING_OUT;
             membership.wave.waitingOut.add(agent);
+            exitCandidates.add(membership.wave);
             trace.record(new TraceEvent.WaitingOut(clock.getAsLong(), agent.id(), entry.name(), agent.source()));
             reconcile(agent);
             settle();
@@ -380,6 +382,7 @@ public final class EntryCoordinator {
         Membership membership = agent.memberships.remove(agent.memberships.size() - 1);
         Wave wave = membership.wave;
         wave.members.remove(agent);
+        exitCandidates.add(wave);
         trace.record(new TraceEvent.Left(clock.getAsLong(), agent.id(), membership.entry.name(), cause,
                 agent.source()));
         reconcile(agent);
@@ -402,7 +405,7 @@ public final class EntryCoordinator {
      * memberships: it counts in the waves of all its blocks (and the mission wave) and in the
      * barriers of all its synchronous blocks, unless it is held or its program died, in which case
      * it counts nowhere.
-     * Counts that drop are queued for {@link #settle()}.
+     * Barriers whose participants drop are queued for {@link #settle()}.
      */
     private void reconcile(Agent agent) {
         List<Wave> waves = new ArrayList<>();
@@ -420,7 +423,6 @@ public final class EntryCoordinator {
         for (Wave wave : agent.activeIn) {
             if (!waves.contains(wave)) {
                 wave.deactivate(agent);
-                weakenedWaves.add(wave);
             }
         }
         for (Wave wave : waves) {
@@ -456,8 +458,8 @@ public final class EntryCoordinator {
 
     /**
      * Applies the consequences of the operation's change, to a fixed point, as part of the same
-     * atomic step. Every count that can rise rises first: exit barriers whose block has no active
-     * member left release their agents, and free entry barriers whose condition now holds open.
+     * atomic step. Every count that can rise rises first: exit barriers whose every member is
+     * waiting-out release their agents, and free entry barriers whose condition now holds open.
      * Only then are the synchronisation barriers whose participants dropped checked, so a barrier
      * never trips on a state the step passes through: the leavers of a child stay in lock-step
      * with its parent, and an agent held by a free entry barrier and let in by the same step is
@@ -467,8 +469,8 @@ public final class EntryCoordinator {
     private void settle() {
         do {
             Wave wave;
-            while ((wave = weakenedWaves.poll()) != null) {
-                releaseExitIfNoActiveMember(wave);
+            while ((wave = exitCandidates.poll()) != null) {
+                releaseExitIfAllWaitingOut(wave);
             }
         } while (openFirstWave());
         for (SynchronisationBarrier barrier : weakenedBarriers) {
@@ -479,9 +481,15 @@ public final class EntryCoordinator {
         weakenedBarriers.clear();
     }
 
-    /** §6.3/§6.5: the last active member finished, so the waiting-out agents leave, as one step. */
-    private void releaseExitIfNoActiveMember(Wave wave) {
-        if (wave.entry == null || wave.active != 0 || wave.waitingOut.isEmpty()) {
+    /**
+     * §6.3/§6.5: once every member of the wave is waiting-out, they leave, as one step. A member
+     * held by a descendant's entry or exit barrier is not waiting-out here: it still has an
+     * instruction of this block to run (the descendant, and what follows it), so it keeps the
+     * others, and the end of a child's wave never releases its parent's exit barrier in the same
+     * step: the agents the child lets go are active in the parent, not waiting-out.
+     */
+    private void releaseExitIfAllWaitingOut(Wave wave) {
+        if (wave.entry == null || wave.waitingOut.isEmpty() || wave.waitingOut.size() != wave.members.size()) {
             return;
         }
         List<Agent> leaving = new ArrayList<>(wave.waitingOut);
@@ -581,7 +589,7 @@ public final class EntryCoordinator {
             wakes = spare != null ? spare : new WakeBatch();
         }
         boolean advance = changed;
-        weakenedWaves.clear();
+        exitCandidates.clear();
         weakenedBarriers.clear();
         changed = false;
         lock.unlock();

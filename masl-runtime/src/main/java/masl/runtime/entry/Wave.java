@@ -30,8 +30,9 @@ public final class Wave {
     /** Members in arrival order: active ones, waiting-out ones, those held inside children. */
     final Set<Agent> members = new LinkedHashSet<>();
     /**
-     * Members held by no entry or exit barrier anywhere in their chain of blocks: the members an
-     * exit barrier and a free entry barrier wait for (§6.3). (The query {@code getActiveCount()}
+     * Members held by no entry or exit barrier anywhere in their chain of blocks: the members a
+     * free entry barrier waits for (§6.3; an exit barrier waits for every member not waiting-out
+     * at it, held in a descendant or not). (The query {@code getActiveCount()}
      * counts more, see {@link Entry#getActiveCount}.) Changed only through {@link #activate} and
      * {@link #deactivate}, which keep the reached counts in step.
      */
