@@ -3,7 +3,9 @@ package masl.cli;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
+import masl.translator.diagnostics.Suggestions;
 
 /**
  * The words of a {@code masl} invocation: a command, its operands and its options
@@ -55,12 +57,17 @@ final class CommandLine {
         this.command = command;
     }
 
+    /** The options {@code command} accepts. */
+    static Set<String> optionsOf(String command) {
+        return OPTIONS.get(command);
+    }
+
     static CommandLine parse(String... args) throws UsageException {
         if (args.length == 0) {
             throw new UsageException("no command given");
         }
-        CommandLine line = new CommandLine(args[0]);
-        Set<String> known = OPTIONS.getOrDefault(line.command, Set.of());
+        CommandLine line = new CommandLine(Masl.knownCommand(args[0]));
+        Set<String> known = OPTIONS.get(line.command);
         for (int i = 1; i < args.length; i++) {
             String arg = args[i];
             if (!arg.startsWith("-") || arg.equals("-")) {
@@ -69,8 +76,7 @@ final class CommandLine {
             }
             String name = arg.contains("=") ? arg.substring(0, arg.indexOf('=')) : arg;
             if (!known.contains(name)) {
-                throw new UsageException("unknown option " + name + (OPTIONS.containsKey(line.command)
-                        ? " for masl " + line.command : ""));
+                throw new UsageException("unknown option " + name + " for masl " + line.command + hint(name, known));
             }
             if (FLAGS.contains(name)) {
                 if (arg.contains("=")) {
@@ -96,6 +102,17 @@ final class CommandLine {
             line.set(name, value);
         }
         return line;
+    }
+
+    /** The option of the command {@code name} may be a slip for, or the commands {@code name} is an option of. */
+    private static String hint(String name, Set<String> known) {
+        Optional<String> near = Suggestions.closest(name, known.stream().sorted().toList());
+        if (near.isPresent()) {
+            return "; did you mean " + near.get() + "?";
+        }
+        List<String> others = OPTIONS.entrySet().stream().filter(command -> command.getValue().contains(name))
+                .map(command -> "masl " + command.getKey()).sorted().toList();
+        return others.isEmpty() ? "" : " (it is an option of " + String.join(", ", others) + ")";
     }
 
     private void set(String option, String value) throws UsageException {

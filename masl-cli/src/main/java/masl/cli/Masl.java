@@ -10,6 +10,7 @@ import java.util.Map;
 import masl.runtime.descriptor.AgentPath;
 import masl.translator.cache.CompiledMissionCache;
 import masl.translator.compile.GeneratedCodeException;
+import masl.translator.diagnostics.Suggestions;
 import masl.translator.source.SourceFile;
 
 /**
@@ -25,66 +26,6 @@ public final class Masl {
     static final int MISSION_FAILED = 2;
     static final int USAGE = 64;
     static final int INTERNAL_ERROR = 70;
-
-    static final String USAGE_TEXT = """
-            usage: masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE] [--quiet]
-                           [--call-timeout MS] [--platform inproc|jade] [--no-cache]
-                           [--main-host HOST --main-port PORT | --port PORT]
-                           [--place AGENT=CONTAINER,... | --place FILE] [--secret-file FILE]
-                   masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
-                           [--timeout SECONDS] [--secret-file FILE]
-                   masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH] [--quiet]
-                   masl compile FILE -d DIR [--agent-path PATH] [--quiet]
-                   masl check FILE [--agent-path PATH] [--quiet]
-                   masl timeline TRACE -o FILE.html
-                   masl lsp [--agent-path PATH]
-              run       translate a MASL program, compile it in memory and run its mission in this process;
-                        the journal (and only the journal) goes to standard output
-                        with --sim, the mission the scenario names runs on its simulated robots; trajectories,
-                        events, trace, journal and a picture go to --out (default: NAME.out beside NAME.scenario.xml)
-              container join a JADE platform as container CONTAINER and host the bodies (the primitives) of the
-                        agents a run --place puts there; their programs run in the run's JVM; ends with the mission
-              compile   translate a MASL program into Java sources under DIR (one folder per package)
-              check     report every error of a MASL program and of the descriptors it imports: all that
-                        compile and run would report, as they translate and compile it, without running it
-              timeline  draw a trace written by run --trace (or run --sim) as a self-contained HTML page: one
-                        lane per agent over time, coloured by block, with barrier trips, waves, invocations,
-                        events and failures; zoom, pan and filter it in a browser
-              lsp       serve the Language Server Protocol on standard input and output for an editor: the
-                        diagnostics of check on every change, completion, hover, go to definition, outline
-            options:
-              --agent-path PATH   folders and jars holding agent descriptors and their classes, ':'-separated;
-                                  searched after the program's folder, before the descriptors masl ships
-              --threads           run each agent on a thread of its own instead of a small pool
-              --seed N            run on one thread, every scheduling choice drawn from seed N (replayable)
-              --timeout SECONDS   stop the mission after SECONDS (default: no limit)
-              --call-timeout MS   a primitive running longer than MS milliseconds gives its caller its default
-                                  value and the event timeout; the mission goes on (default: no limit); with
-                                  --platform jade it also bounds each FIPA agent's call from outside the mission
-                                  (default for those: 10000)
-              --trace FILE        write the trace (one JSON object per line) to FILE
-              --no-cache          translate and compile the program even if an earlier run of the same program,
-                                  descriptors, agent path, masl and JDK left it compiled in the cache
-                                  ($MASL_CACHE_DIR, else $XDG_CACHE_HOME/masl, else ~/.cache/masl)
-              --quiet             no progress on standard error: by default, work running longer than a second
-                                  (translating, compiling, a --sim run: simulated time, real-time factor,
-                                  journal lines) is shown there, on one line rewritten on a terminal
-              --platform P        inproc (default): run in this process; jade: run inside a JADE platform,
-                                  one JADE agent per MASL agent, registered with the DF, answering FIPA requests
-              --main-host HOST, --main-port PORT
-                                  with --platform jade: join the platform whose main container listens there
-                                  instead of starting one on loopback
-              --port PORT         with --platform jade: the port of the main container run starts (default: a free one)
-              --place AGENT=CONTAINER,... or FILE (lines AGENT=CONTAINER)
-                                  with --platform jade: run these agents' bodies in the containers named (started
-                                  with masl container), their programs in this JVM; other agents stay here
-              --secret-file FILE  with --place (and for masl container): where run writes a fresh secret for the
-                                  mission (owner-only, deleted at its end) and its containers read it; they obey
-                                  only messages signed with it (default: .masl-mission-secret in this folder)
-            exit status: 0 success, 1 errors in the program or its descriptors, 2 the mission failed,
-                         deadlocked or timed out, or its journal could not be written, 64 bad usage,
-                         70 internal error, 130 or 143 stopped by Ctrl-C or SIGTERM
-            """;
 
     private final InputStream in;
     private final PrintStream out;
@@ -128,26 +69,43 @@ public final class Masl {
     }
 
     /**
-     * {@code masl --help}, {@code masl help [COMMAND]}, or {@code --help}/{@code -h} among a
-     * command's words, whatever else they hold: the usage, on standard output, status 0.
+     * The help asked for, or null if none was: {@code masl --help} (or {@code -h}, {@code help}) lists
+     * every command; {@code masl help COMMAND}, or {@code --help}/{@code -h} among a command's words
+     * whatever else they hold, shows that command's alone.
      */
-    private static boolean asksForHelp(String... args) {
-        if (args.length > 0 && args[0].equals("help")) {
-            return true;
+    private static String helpAskedFor(String... args) throws UsageException {
+        if (args.length == 0) {
+            return null;
+        }
+        if (args[0].equals("help") && args.length > 1) {
+            return Help.of(knownCommand(args[1]));
+        }
+        if (args[0].equals("help") || args[0].equals("--help") || args[0].equals("-h")) {
+            return Help.all();
         }
         for (String arg : args) {
             if (arg.equals("--help") || arg.equals("-h")) {
-                return true;
+                return Help.of(knownCommand(args[0]));
             }
         }
-        return false;
+        return null;
+    }
+
+    /** {@code name} if it is a command, else bad usage, with the command it may be a slip for. */
+    static String knownCommand(String name) throws UsageException {
+        if (!Help.knows(name)) {
+            throw new UsageException("unknown command '" + name + "'" + Suggestions.closest(name, Help.commands())
+                    .map(command -> "; did you mean " + command + "?").orElse(""));
+        }
+        return name;
     }
 
     /** Runs one invocation and returns its exit status; never throws. */
     public int run(String... args) {
         try {
-            if (asksForHelp(args)) {
-                out.print(USAGE_TEXT);
+            String help = helpAskedFor(args);
+            if (help != null) {
+                out.print(help);
                 return OK;
             }
             CommandLine line = CommandLine.parse(args);
@@ -156,7 +114,7 @@ public final class Masl {
             }
         } catch (UsageException usage) {
             err.println("masl: " + usage.getMessage());
-            err.print(USAGE_TEXT);
+            err.print(args.length == 0 ? Help.all() : Help.usageLine(args[0]));
             return USAGE;
         } catch (GeneratedCodeException bug) {
             err.println("masl: internal error: the Java generated for this program does not compile; please report it"
