@@ -36,6 +36,9 @@ final class SimRun {
     private final Progress progress;
     /** The simulated time of the latest physics step, in seconds, for the progress line. */
     private volatile double simulated;
+    /** The simulated time and the run's real time when the first progress line was made; -1 before it (the progress lines' thread). */
+    private double firstLineSimulated = -1;
+    private long firstLineElapsed;
 
     SimRun(PrintStream out, PrintStream err, Progress progress) {
         this.out = out;
@@ -120,13 +123,26 @@ final class SimRun {
         }
     }
 
-    /** {@code masl: simulated 12.3 s of 60 s, 1.02x real time, journal 4 lines}. */
+    /**
+     * {@code masl: simulated 12.3 s of 60 s, 1.02x real time, journal 4 lines}. The real-time factor
+     * is the simulated time over the real time since the first line: before it, the run was loading
+     * the scenario and building its worlds, so the first line has no factor (it would be near zero
+     * and mean nothing).
+     */
     private String status(Scenario scenario, long elapsedNanos) {
         double now = simulated;
         String of = scenario.duration() > 0 ? String.format(java.util.Locale.ROOT, " of %.0f s", scenario.duration()) : "";
+        String rate = "";
+        if (firstLineSimulated < 0) {
+            firstLineSimulated = now;
+            firstLineElapsed = elapsedNanos;
+        } else if (elapsedNanos > firstLineElapsed) {
+            rate = String.format(java.util.Locale.ROOT, ", %.2fx real time",
+                    (now - firstLineSimulated) / ((elapsedNanos - firstLineElapsed) / 1e9));
+        }
         long lines = progress.journalLines();
-        return String.format(java.util.Locale.ROOT, "masl: simulated %.1f s%s, %.2fx real time, journal %d line%s",
-                now, of, now / Math.max(1e-9, elapsedNanos / 1e9), lines, lines == 1 ? "" : "s");
+        return String.format(java.util.Locale.ROOT, "masl: simulated %.1f s%s%s, journal %d line%s",
+                now, of, rate, lines, lines == 1 ? "" : "s");
     }
 
     /** {@code --seed} overrides the physics seed of the scenario; the lock-step scheduler draws from it. */
