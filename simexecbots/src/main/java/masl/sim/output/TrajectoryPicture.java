@@ -3,6 +3,7 @@ package masl.sim.output;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
+import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.geom.Path2D;
@@ -20,7 +21,9 @@ import javax.imageio.ImageIO;
  * Draws a run seen from above as a PNG (Java2D, headless): a metre grid with a scale bar, the
  * static boxes of the world in grey, and each robot's trajectory in its own colour from a hollow
  * circle (start) to a filled circle with a heading tick (end), labelled with its name; events are
- * red crosses where the robot was at the time. World +X points right and +Y up.
+ * red crosses where the robot was at the time. A legend under the picture, beside the scale bar,
+ * says what each mark means (events and obstacles only when there are some). World +X points right
+ * and +Y up.
  */
 public final class TrajectoryPicture {
 
@@ -77,6 +80,7 @@ public final class TrajectoryPicture {
                 drawPath(g, frame, path.getKey(), path.getValue(), PALETTE[index++ % PALETTE.length]);
             }
             drawEvents(g, frame, events, paths);
+            drawLegend(g, !events.isEmpty(), !obstacles.isEmpty());
             g.setColor(Color.BLACK);
             g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 14));
             g.drawString(title, MARGIN, 25);
@@ -152,6 +156,66 @@ public final class TrajectoryPicture {
             int y = (int) frame.py(at.y());
             g.drawLine(x - 6, y - 6, x + 6, y + 6);
             g.drawLine(x - 6, y + 6, x + 6, y - 6);
+        }
+    }
+
+    /** The marks of the legend, each drawn as in the picture, centred on ({@code x}, {@code y}). */
+    private enum Mark {
+        START("start"), END("end, heading"), EVENT("event"), OBSTACLE("obstacle");
+
+        final String meaning;
+
+        Mark(String meaning) {
+            this.meaning = meaning;
+        }
+
+        void draw(Graphics2D g, int x, int y) {
+            g.setStroke(new BasicStroke(2));
+            switch (this) {
+                case START -> {
+                    g.setColor(Color.BLACK);
+                    g.drawOval(x - 6, y - 6, 12, 12);
+                }
+                case END -> {
+                    g.setColor(Color.BLACK);
+                    g.fillOval(x - 6, y - 6, 12, 12);
+                    g.drawLine(x, y, x + 10, y - 10);
+                }
+                case EVENT -> {
+                    g.setColor(TrajectoryPicture.EVENT);
+                    g.setStroke(new BasicStroke(2.5f));
+                    g.drawLine(x - 6, y - 6, x + 6, y + 6);
+                    g.drawLine(x - 6, y + 6, x + 6, y - 6);
+                }
+                case OBSTACLE -> {
+                    g.setColor(TrajectoryPicture.OBSTACLE);
+                    g.fillRect(x - 6, y - 6, 12, 12);
+                }
+            }
+        }
+    }
+
+    /** The legend, right-aligned in the bottom margin, on the scale bar's line. */
+    private void drawLegend(Graphics2D g, boolean events, boolean obstacles) {
+        List<Mark> marks = new ArrayList<>(List.of(Mark.START, Mark.END));
+        if (events) {
+            marks.add(Mark.EVENT);
+        }
+        if (obstacles) {
+            marks.add(Mark.OBSTACLE);
+        }
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        FontMetrics metrics = g.getFontMetrics();
+        int y = size - MARGIN / 2;
+        int x = size - MARGIN;
+        for (int i = marks.size() - 1; i >= 0; i--) {
+            Mark mark = marks.get(i);
+            int text = metrics.stringWidth(mark.meaning);
+            x -= text;
+            g.setColor(Color.BLACK);
+            g.drawString(mark.meaning, x, y + 4);
+            mark.draw(g, x - 12, y);
+            x -= 12 + 6 + 16;
         }
     }
 

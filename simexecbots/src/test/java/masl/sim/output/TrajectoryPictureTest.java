@@ -57,6 +57,25 @@ class TrajectoryPictureTest {
         assertTrue(count(image, new Color(0xd62728)) > 5, "the fault marked");
     }
 
+    /** The legend under the picture, right of the scale bar: the marks it explains, and no others. */
+    @Test
+    void aLegendExplainsTheMarksOfThePicture() throws Exception {
+        List<double[][]> wall = List.<double[][]>of(new double[][] {{0.2, -0.7}, {0.3, -0.7}, {0.3, 0.2}, {0.2, 0.2}});
+        List<RunRecorder.Event> events = List.of(new RunRecorder.Event(2.5, "k1", "fault", ""));
+        BufferedImage all = new TrajectoryPicture(600).draw("legend", samples(), events, wall);
+        ImageIO.write(all, "png", Files.createDirectories(Path.of("build", "pictures")).resolve("legend-test.png").toFile());
+        BufferedImage legend = all.getSubimage(300, 600 - 50, 300, 50);
+        assertTrue(count(legend, Color.BLACK) > 100, "the start and end marks and their words");
+        assertTrue(count(legend, new Color(0xd62728)) > 5, "the event's cross");
+        assertTrue(count(legend, new Color(0xb0b0b0)) > 100, "the obstacle's square");
+
+        BufferedImage plain = new TrajectoryPicture(600).draw("legend", samples(), List.of(), List.of())
+                .getSubimage(300, 600 - 50, 300, 50);
+        assertTrue(count(plain, Color.BLACK) > 100, "start and end are always explained");
+        assertEquals(0, count(plain, new Color(0xd62728)), "no event, no event in the legend");
+        assertEquals(0, count(plain, new Color(0xb0b0b0)), "no obstacle, no obstacle in the legend");
+    }
+
     @Test
     void anEmptyRunGivesAnImageWithAGridOnly() {
         BufferedImage image = new TrajectoryPicture(300).draw("empty", List.of(), List.of(), List.of());
