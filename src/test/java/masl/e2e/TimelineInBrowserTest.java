@@ -143,6 +143,30 @@ class TimelineInBrowserTest {
         }
     }
 
+    /** Under the chart, a legend says what each mark means, each mark drawn as the chart draws it. */
+    @Test
+    void aLegendUnderTheChartExplainsEveryMark() throws Exception {
+        Path page = runAndDraw("e4-legend", "src/test/resources/examples/e4_events.masl", "--seed", "4");
+        try (ChromiumPage browser = ChromiumPage.open(page, 1280, 700)) {
+            assertEquals(List.of("an agent in its innermost block (the block\u2019s colour)",
+                    "held at the block\u2019s entry or exit barrier", "a wave of the block (above the lanes)",
+                    "a barrier trip", "an invocation, from the caller to the callee (dashed while pending)",
+                    "an invocation denied by the callee\u2019s permeability state", "an event emitted",
+                    "a reaction to an event", "an agent\u2019s program died",
+                    "an agent entering a nested block for the first time", "an agent leaving its outermost block",
+                    "a countermeasure fired"), texts(browser, "#legend span"));
+            assertEquals(1, count(browser, "#legend span.legend-held rect[fill='url(#legend-hatch)']"), "held is hatched");
+            BufferedImage image = browser.screenshot(OUT.resolve("e4-legend.png"));
+            JsonNode box = browser.evaluate("(() => { const r = document.getElementById('legend').getBoundingClientRect();"
+                    + " return [r.left, r.top, r.width, r.height].map(Math.round); })()");
+            BufferedImage legend = image.getSubimage(box.get(0).asInt(), box.get(1).asInt(), box.get(2).asInt(),
+                    box.get(3).asInt());
+            assertTrue(pixelsOf(legend, TRIP_RED) > 5, "the trip's line");
+            assertTrue(pixelsOf(legend, EMIT_PURPLE) > 10, "the emission's triangle");
+            assertTrue(pixelsOf(legend, DENIED_RED) > 5, "the denied invocation");
+        }
+    }
+
     private static Path runAndDraw(String name, String program, String... options) throws Exception {
         Path out = Files.createDirectories(OUT);
         Path trace = out.resolve(name + ".jsonl");

@@ -55,6 +55,7 @@ public final class TimelineHtml {
                 <div id="controls"></div>
                 <svg id="minimap" xmlns="http://www.w3.org/2000/svg" role="img" aria-label="the whole run"></svg>
                 <svg id="chart" xmlns="http://www.w3.org/2000/svg" role="img" aria-label="timeline"></svg>
+                <div id="legend" aria-label="what the marks mean"></div>
                 <p class="help">Wheel: zoom around the pointer. Drag: pan. Minimap: click or drag to move the view.
                 Hover a shape for its record and MASL line.</p>
                 <script type="application/json" id="timeline-data">%s</script>

@@ -507,7 +507,67 @@
     data.failures.length + ' failures',
     'run of ' + exact(length) + (data.status ? ', ' + data.status.replace('_', ' ') : '')
   ].join(' \u00b7 ');
+  // What each mark of the chart means, each drawn as the chart draws it (same classes, same shapes).
+  function legend() {
+    var box = document.getElementById('legend');
+    var block = data.blocks.length ? data.blocks[0].color : '#888';
+    var W = 26, H = 16;
+    var items = [
+      ['span', 'an agent in its innermost block (the block\u2019s colour)', function (g) {
+        el('rect', { 'class': 'span', x: 1, y: 2, width: W - 2, height: H - 4, fill: block }, g);
+      }],
+      ['held', 'held at the block\u2019s entry or exit barrier', function (g) {
+        var hatch = el('pattern', { id: 'legend-hatch', width: 6, height: 6, patternUnits: 'userSpaceOnUse', patternTransform: 'rotate(45)' },
+            el('defs', {}, g));
+        el('line', { x1: 0, y1: 0, x2: 0, y2: 6, stroke: 'white', 'stroke-width': 3 }, hatch);
+        el('rect', { 'class': 'span held', x: 1, y: 2, width: W - 2, height: H - 4, fill: block }, g);
+        el('rect', { x: 1, y: 2, width: W - 2, height: H - 4, fill: 'url(#legend-hatch)' }, g);
+      }],
+      ['wave', 'a wave of the block (above the lanes)', function (g) {
+        el('rect', { 'class': 'wave', x: 1, y: 4, width: W - 2, height: H - 8, fill: block }, g);
+      }],
+      ['trip', 'a barrier trip', function (g) {
+        el('line', { 'class': 'trip', x1: W / 2 + 0.5, y1: 0, x2: W / 2 + 0.5, y2: H, 'shape-rendering': 'crispEdges' }, g);
+      }],
+      ['invocation', 'an invocation, from the caller to the callee (dashed while pending)', function (g) {
+        el('line', { 'class': 'invocation', x1: 2, y1: 3, x2: W - 6, y2: H - 4 }, g);
+        el('path', { d: 'M' + (W - 2) + ',' + (H - 2) + ' l-7,-1 l4,-5 z', fill: '#1a1a1a' }, g);
+      }],
+      ['denied', 'an invocation denied by the callee\u2019s permeability state', function (g) {
+        el('line', { 'class': 'invocation denied', x1: 2, y1: 3, x2: W - 10, y2: H - 4 }, g);
+        text(g, W - 9, H - 2, '\u2715', 'denied');
+      }],
+      ['emitted', 'an event emitted', function (g) {
+        triangle(g, W / 2, 3, false, 'emitted');
+      }],
+      ['reacted', 'a reaction to an event', function (g) {
+        triangle(g, W / 2, H - 3, true, 'reacted');
+      }],
+      ['failure', 'an agent\u2019s program died', function (g) {
+        text(g, W / 2 - 6, H - 2, '\u2716', 'failure');
+      }],
+      ['entry-mark', 'an agent entering a nested block for the first time', function (g) {
+        el('path', { 'class': 'entry-mark', d: 'M' + W / 2 + ',' + (H - 8) + ' l4,5 l-8,0 z' }, g);
+      }],
+      ['left-mark', 'an agent leaving its outermost block', function (g) {
+        el('rect', { 'class': 'left-mark', x: W / 2 - 1, y: 1, width: 2.5, height: H - 2 }, g);
+      }],
+      ['countermeasure', 'a countermeasure fired', function (g) {
+        el('path', { 'class': 'countermeasure', d: 'M' + W / 2 + ',0 l5,8 l-5,8 l-5,-8 z' }, g);
+      }]
+    ];
+    items.forEach(function (item) {
+      var entry = document.createElement('span');
+      entry.className = 'legend-' + item[0];
+      var mark = el('svg', { width: W, height: H, 'aria-hidden': 'true' }, entry);
+      item[2](mark);
+      entry.appendChild(document.createTextNode(item[1]));
+      box.appendChild(entry);
+    });
+  }
+
   controls();
+  legend();
   drawMinimap();
   draw();
 })();
