@@ -91,6 +91,8 @@ final class CaseWriter {
 
     private final List<Case> cases = new ArrayList<>();
     private Case current;
+    /** The point the current case last set {@code pc} to outside any Java block, or null. */
+    private Point pcSetTo;
     private boolean terminated = true;
     private boolean grewTooLarge;
     private int indent;
@@ -101,13 +103,17 @@ final class CaseWriter {
 
     /**
      * Makes {@code point} the code that follows. Starts a new case, unless the current one has no
-     * code yet, in which case the point shares it.
+     * code yet, in which case the point shares it. Code that falls into the new case sets {@code pc}
+     * to it first: an agent failing there is reported at this case's statement, not the one before.
      */
     void place(Point point, String comment) {
         if (indent > 0) {
             throw new IllegalStateException("a resumption point cannot stand inside a Java block");
         }
         if (current == null || !current.lines.isEmpty() || terminated) {
+            if (current != null && !terminated && pcSetTo != point) {
+                setPc(point);
+            }
             current = newCase(comment);
         } else if (current.comment == null) {
             current.comment = comment;
@@ -122,6 +128,17 @@ final class CaseWriter {
     /** Whether the code written last jumped away or returned: what follows it is never reached. */
     boolean isTerminated() {
         return terminated;
+    }
+
+    /**
+     * Where a MASL statement starts: outside any Java block, after code of another statement, it
+     * starts a case of its own, which that code falls into, so that {@code pc} names the statement
+     * while it runs (an agent that fails in it is reported at its line).
+     */
+    void statementOwnCase() {
+        if (indent == 0 && !terminated && current != null && !current.lines.isEmpty()) {
+            place(point(), null);
+        }
     }
 
     /**
@@ -206,6 +223,9 @@ final class CaseWriter {
     /** {@code pc = point;} */
     void setPc(Point point) {
         add(new Jump(indentation(), "pc = ", point, ";"));
+        if (indent == 0) {
+            pcSetTo = point;
+        }
     }
 
     /** {@code pc = point; continue;}: the rest of the case is never reached. */
@@ -259,6 +279,7 @@ final class CaseWriter {
     }
 
     private Case newCase(String comment) {
+        pcSetTo = null;
         Case created = new Case(comment);
         cases.add(created);
         return created;

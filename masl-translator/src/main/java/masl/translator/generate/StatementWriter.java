@@ -42,6 +42,8 @@ final class StatementWriter {
     private final Map<Block, CaseWriter.Point> tests = new IdentityHashMap<>();
     private final Map<Block, CaseWriter.Point> afters = new IdentityHashMap<>();
     private final Map<Block, CaseWriter.Point> firsts = new IdentityHashMap<>();
+    /** How many entry tests were given a Java local of their own ({@code test$N}). */
+    private int testsEvaluated;
     private final Map<Reaction, CaseWriter.Point> reactionPoints = new java.util.LinkedHashMap<>();
     private final Set<Block> keptOnReelect;
     private final LoopClassifier loops;
@@ -185,6 +187,12 @@ final class StatementWriter {
         cases.place(test(block), at(tree) + ": " + JavaText.header(tree));
         String test = expressions.condition(tree.test);
         instructions.awaitResults(tree.test);
+        if (!test.equals("true") && !test.equals("false")) {
+            // Evaluated before pc moves on to the body: an agent failing in the test is reported at the block.
+            String value = "test$" + (++testsEvaluated);
+            cases.line("boolean " + value + " = " + test + ";");
+            test = value;
+        }
         CaseWriter.Point body = cases.point();
         cases.setPc(body);
         cases.open("switch (ctx.enter(" + definition + ", " + test + ")) {");
@@ -312,6 +320,7 @@ final class StatementWriter {
     }
 
     private void statement(StatementContext statement) {
+        cases.statementOwnCase();
         cases.statementStart();
         writeStatement(statement);
         checkSize(statement);

@@ -29,8 +29,25 @@ class CaseWriterTest {
                 "    if (!ctx.stepBoundary()) return;",
                 "case 1:",
                 "    work();",
+                "    pc = 2;",
                 "case 2: // t.masl:3: later",
                 "    return;"), lines(cases));
+    }
+
+    @Test
+    void aStatementAfterCodeOfAnotherStartsACaseThatPcNamesWhenFallenInto() {
+        CaseWriter cases = new CaseWriter();
+        cases.place(cases.point(), "t.masl:1: declarations of main");
+        cases.line("x = 0;");
+        cases.statementOwnCase();
+        cases.note("t.masl:2: y = 1 / x;");
+        cases.line("y = 1 / x;");
+        assertEquals(List.of(
+                "case 0: // t.masl:1: declarations of main",
+                "    x = 0;",
+                "    pc = 1;",
+                "case 1: // t.masl:2: y = 1 / x;",
+                "    y = 1 / x;"), lines(cases));
     }
 
     @Test
