@@ -11,8 +11,9 @@ import masl.translator.source.SourceFile;
 
 /**
  * The front half of the {@link Translator}'s pipeline: parse, then analyse against the descriptors.
- * Syntax errors stop it before the analysis, whose messages on a tree ANTLR had to repair would
- * mostly be echoes of them.
+ * A program whose syntax errors were all repaired as the user meant is analysed too, so that its
+ * other errors are reported in the same run; any other repair stops it before the analysis, whose
+ * messages would mostly be echoes of the syntax errors.
  */
 public final class Frontend {
 
@@ -49,7 +50,7 @@ public final class Frontend {
     Result analyseHere(SourceFile source) {
         Diagnostics diagnostics = new Diagnostics();
         ProgramParser.Parsed parsed = ProgramParser.parse(source, diagnostics);
-        if (diagnostics.hasErrors()) {
+        if (parsed.repaired()) {
             return new Result(source, null, diagnostics);
         }
         AnalyzedProgram program = Analyzer.analyze(parsed, new DescriptorLoader(agentPath), diagnostics);

@@ -14,8 +14,8 @@ import org.antlr.v4.runtime.Token;
  * Name resolution and type checking of a parsed MASL program: reports every semantic error of the file
  * and builds the {@link AnalyzedProgram} the code generator works from.
  *
- * <p>A tree ANTLR had to repair after a syntax error is not analysed: its repaired parts would produce
- * errors about text the user did not write. Such a program gets an empty model and no further error,
+ * <p>A tree repaired after a syntax error by a guess ({@link ProgramParser.Parsed#repaired}) is not
+ * analysed: its repaired parts would produce errors about text the user did not write. Such a program gets an empty model and no further error,
  * the syntax errors already being reported.
  */
 public final class Analyzer {

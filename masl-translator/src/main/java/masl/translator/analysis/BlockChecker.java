@@ -1,10 +1,13 @@
 package masl.translator.analysis;
 
+import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import masl.grammar.MASLParser.StatementContext;
 import masl.grammar.MASLParser;
+import masl.translator.diagnostics.Suggestions;
 import masl.translator.parse.NumberLiterals;
+import masl.translator.parse.ProgramParser;
 
 /**
  * Walks the blocks with their scopes: declares what each block declares (MASL §3, §7, §8, §10), checks
@@ -12,6 +15,10 @@ import masl.translator.parse.NumberLiterals;
  * {@code clearEvents} §8) and has every expression typed.
  */
 final class BlockChecker {
+
+    /** The statements that are one word, for a lone word standing as a statement. */
+    private static final List<String> STATEMENT_WORDS = List.of("break", "exit", "reelect", "restart", "resume",
+            "clearEvents");
 
     private final Errors errors;
     private final Map<MASLParser.EntryBlockContext, Block> blocks;
@@ -54,7 +61,8 @@ final class BlockChecker {
         boolean instructionSeen = false;
         for (MASLParser.BlockItemContext item : tree.blockItem()) {
             if (item.declaration() != null) {
-                if (instructionSeen) {
+                // A declaration whose `local` the user left out was told to go at the head of its block.
+                if (instructionSeen && !ProgramParser.wasLeftOut(item.declaration().getStart())) {
                     errors.at(item.declaration(),
                             "declarations must come before the instructions and reactions of block " + block.name());
                 }
@@ -268,8 +276,20 @@ final class BlockChecker {
         }
     }
 
-    /** Java's rule: only assignments, increments, calls and object creations may stand as statements. */
+    /**
+     * Java's rule: only assignments, increments, calls and object creations may stand as statements.
+     * A lone word ({@code return;}, {@code brek;}) is one mistake, reported once with the statement meant.
+     */
     private void expressionStatement(MASLParser.ExpressionContext expression) {
+        if (expression instanceof MASLParser.PrimaryExprContext primary
+                && primary.primary() instanceof MASLParser.NameExprContext name) {
+            String word = name.getText();
+            errors.at(expression, word.equals("return")
+                    ? "MASL has no return: `break;` leaves the block, `exit;` the loop"
+                    : "not a statement: " + word + Suggestions.closest(word, STATEMENT_WORDS)
+                            .map(keyword -> "; did you mean `" + keyword + ";`?").orElse(""));
+            return;
+        }
         typer.type(expression);
         boolean isStatement = expression instanceof MASLParser.AssignExprContext
                 || expression instanceof MASLParser.PostfixExprContext

@@ -24,7 +24,7 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
     /** The MASL words written like a call, for the hint when one is misspelt (MASL §2). */
     private static final List<String> CALL_KEYWORDS = List.of("emit", "emitWithMessage", "getMessageFromEvent",
             "clearEvents", "setAcceptState", "getAcceptState", "wait", "isFinished", "newAgent", "break", "reelect",
-            "exit");
+            "exit", "if", "while", "for");
 
     private final TypeNames typeNames;
     private final MemberTyper members;
@@ -281,6 +281,11 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
         }
         Receiver receiver = names.receiver(call.expression());
         List<MaslType> argumentTypes = types(arguments);
+        if (isConsolePrint(receiver, call)) {
+            errors.at(call.expression(), call.expression().getText() + "." + name.getText() + " writes past the"
+                    + " mission's journal: use `.logln(…)` (`.log(…)` without the line break)");
+            return MaslType.ERROR;
+        }
         if (receiver instanceof Receiver.OfLabel ofLabel) {
             return MemberTyper.isLabelMember(name.getText())
                     ? members.labelMember(ofLabel.label(), name, argumentTypes, call)
@@ -322,8 +327,23 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
         if (type instanceof MaslType.JavaClass javaClass) {
             return members.javaMethod(javaClass.type(), false, name, argumentTypes, call);
         }
-        errors.at(call.expression(), type.describe() + " cannot be dereferenced");
+        if (!errors.missingSemicolonBefore(call.DOT().getSymbol(), call.expression())) {
+            errors.at(call.expression(), type.describe() + " cannot be dereferenced");
+        }
         return MaslType.ERROR;
+    }
+
+    /**
+     * {@code System.out.println(…)}: an agent's output is its journal, which {@code masl run} writes on
+     * standard output in order; Java's console would mix into it unordered.
+     */
+    private static boolean isConsolePrint(Receiver receiver, MASLParser.MethodCallContext call) {
+        String console = call.expression().getText();
+        return receiver instanceof Receiver.Value value
+                && value.type().equals(new MaslType.JavaClass(java.io.PrintStream.class))
+                && (console.equals("System.out") || console.equals("System.err")
+                        || console.equals("java.lang.System.out") || console.equals("java.lang.System.err"))
+                && call.identifier().getText().startsWith("print");
     }
 
     // ------------------------------------------------------------------ assignments

@@ -191,7 +191,10 @@ final class NameResolver {
         if (type instanceof MaslType.JavaClass javaClass) {
             return members.javaField(javaClass.type(), false, name, isWrite, access);
         }
-        errors.at(name, type.describe() + " has no member " + name.getText());
+        if (!(access instanceof MASLParser.FieldAccessContext field
+                && errors.missingSemicolonBefore(field.DOT().getSymbol(), field.expression()))) {
+            errors.at(name, type.describe() + " has no member " + name.getText());
+        }
         return MaslType.ERROR;
     }
 

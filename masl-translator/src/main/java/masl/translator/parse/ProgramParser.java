@@ -2,36 +2,34 @@ package masl.translator.parse;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
+import java.util.Set;
+import java.util.function.BooleanSupplier;
 import masl.grammar.MASLLexer;
 import masl.grammar.MASLParser;
 import masl.grammar.MaslRuleContext;
 import masl.translator.diagnostics.Diagnostics;
-import masl.translator.diagnostics.Suggestions;
 import masl.translator.source.SourceFile;
 import org.antlr.v4.runtime.BailErrorStrategy;
 import org.antlr.v4.runtime.BaseErrorListener;
 import org.antlr.v4.runtime.CharStreams;
 import org.antlr.v4.runtime.CommonTokenStream;
-import org.antlr.v4.runtime.DefaultErrorStrategy;
 import org.antlr.v4.runtime.InputMismatchException;
+import org.antlr.v4.runtime.ListTokenSource;
 import org.antlr.v4.runtime.Parser;
-import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.RecognitionException;
 import org.antlr.v4.runtime.Recognizer;
 import org.antlr.v4.runtime.Token;
 import org.antlr.v4.runtime.Vocabulary;
-import org.antlr.v4.runtime.WritableToken;
 import org.antlr.v4.runtime.atn.PredictionMode;
 import org.antlr.v4.runtime.misc.IntervalSet;
 import org.antlr.v4.runtime.misc.ParseCancellationException;
-import org.antlr.v4.runtime.tree.ErrorNode;
-import org.antlr.v4.runtime.tree.ParseTree;
 
 /**
  * Parses a MASL program with the ANTLR grammar and turns every syntax error into a positioned
- * {@link masl.translator.diagnostics.Diagnostic} in the user's words. ANTLR's recovery goes on
- * after an error, so every syntax error of a file is reported in one run.
+ * {@link masl.translator.diagnostics.Diagnostic} in the user's words. Every syntax error of a file
+ * is reported in one run, each once: {@link TokenRepairs} first reports and repairs the mistakes a
+ * reader sees at a glance (a misspelt keyword, a Java habit, a brace missing by the indentation), then
+ * ANTLR's recovery ({@link RecoveryStrategy}) goes on after each remaining error.
  */
 public final class ProgramParser {
 
@@ -39,18 +37,25 @@ public final class ProgramParser {
      * The parse tree and the token stream it was built from (the analysis reads path texts from it).
      *
      * @param nodes how many rule nodes the tree has, numbered 0 to {@code nodes - 1} ({@link MaslRuleContext})
-     * @param repaired whether ANTLR had to repair the tree after syntax errors; then {@code tree} is
-     *     null if the program was not parsed at all (nested too deeply, {@link Nesting})
+     * @param repaired whether the tree holds repairs the analysis must not see (a guess after a syntax
+     *     error, a literal Java would not read): false for a program without syntax errors, or whose
+     *     every error was repaired as the user meant ({@link RecoveryStrategy}); {@code tree} is null if
+     *     the program was not parsed at all (nested too deeply, {@link Nesting})
      * @param constantProblems the constants javac would refuse ({@link ConstantLimits}), for the analysis
      *     to report
      */
     public record Parsed(SourceFile source, MASLParser.ProgramContext tree, CommonTokenStream tokens, int nodes,
             boolean repaired, List<ConstantLimits.Problem> constantProblems) { }
 
-    private static final Map<String, Integer> MODES = Map.of("scalar", MASLLexer.SCALAR,
-            "synchronous", MASLLexer.SYNCHRONOUS, "asynchronous", MASLLexer.ASYNCHRONOUS);
-
     private ProgramParser() {
+    }
+
+    /**
+     * Whether a repair after a syntax error put {@code token} in, the user having left it out (the
+     * {@code local} of {@code String s = "x";}, reported with the declaration's other mistakes).
+     */
+    public static boolean wasLeftOut(Token token) {
+        return TokenRepairs.wasLeftOut(token);
     }
 
     /**
@@ -72,17 +77,22 @@ public final class ProgramParser {
         parser.setErrorHandler(new BailErrorStrategy());
         Parsed parsed;
         try {
-            parsed = numbered(source, parser, tokens, false);
+            parsed = numbered(source, parser, tokens, () -> false);
         } catch (ParseCancellationException notSll) {
-            tokens.seek(0);
-            parser.reset();
+            TokenRepairs.Repaired repaired = TokenRepairs.repair(source.name(), tokens.getTokens(), diagnostics);
+            tokens = new CommonTokenStream(new ListTokenSource(repaired.tokens(), source.name()));
+            tokens.fill();
+            parser.setTokenStream(tokens);
             parser.getInterpreter().setPredictionMode(PredictionMode.LL);
-            parser.setErrorHandler(new DefaultErrorStrategy());
-            parser.addErrorListener(new Reporter(source.name(), diagnostics));
-            correctMisspeltModes(tokens, source.name(), diagnostics);
-            parsed = numbered(source, parser, tokens, true);
+            RecoveryStrategy recovery = new RecoveryStrategy();
+            parser.setErrorHandler(recovery);
+            parser.addErrorListener(new Reporter(source.name(), diagnostics, repaired.reported()));
+            parsed = numbered(source, parser, tokens, () -> !(repaired.sound() && recovery.isSound()));
         }
-        checkLiterals(source.name(), tokens, diagnostics);
+        if (!checkLiterals(source.name(), tokens, diagnostics)) {
+            // The analysis reads the literals' values: one Java would not read has none.
+            return new Parsed(source, parsed.tree(), parsed.tokens(), parsed.nodes(), true, parsed.constantProblems());
+        }
         return parsed;
     }
 
@@ -91,7 +101,8 @@ public final class ProgramParser {
      * the escape at fault: the generated Java holds the literals' values, and must hold exactly what
      * the analysis saw.
      */
-    private static void checkLiterals(String file, CommonTokenStream tokens, Diagnostics diagnostics) {
+    private static boolean checkLiterals(String file, CommonTokenStream tokens, Diagnostics diagnostics) {
+        boolean readable = true;
         tokens.fill();
         for (Token token : tokens.getTokens()) {
             try {
@@ -105,62 +116,25 @@ public final class ProgramParser {
                 diagnostics.error(file, token.getLine(),
                         token.getCharPositionInLine() + 1 + text.codePointCount(0, problem.offset()),
                         problem.getMessage());
+                readable = false;
             }
         }
+        return readable;
     }
 
     /**
-     * {@code synchronus entry main (…)}: a word before {@code entry} that is near a mode is that
-     * mode misspelt. It is reported once, at the word, with the mode meant, and read as that mode,
-     * so that the block parses and nothing after it reports an echo of the slip.
+     * The program's tree, its nodes numbered as they are built; {@code repaired} says, once it is
+     * parsed, whether repairs the analysis must not see were made.
      */
-    private static void correctMisspeltModes(CommonTokenStream tokens, String file, Diagnostics diagnostics) {
-        tokens.fill();
-        Token word = null;
-        for (Token token : tokens.getTokens()) {
-            if (token.getChannel() != Token.DEFAULT_CHANNEL) {
-                continue;
-            }
-            if (token.getType() == MASLLexer.ENTRY && word != null && word.getType() == MASLLexer.Identifier) {
-                Token misspelt = word;
-                Suggestions.closest(misspelt.getText(), MODES.keySet()).ifPresent(mode -> {
-                    diagnostics.error(file, misspelt.getLine(), misspelt.getCharPositionInLine() + 1,
-                            "unknown mode " + misspelt.getText() + "; did you mean `" + mode + "`?");
-                    ((WritableToken) misspelt).setType(MODES.get(mode));
-                    ((WritableToken) misspelt).setText(mode);
-                });
-            }
-            word = token;
-        }
-    }
-
-    /**
-     * The program's tree, its nodes numbered as they are built. Only a parse that may have recovered
-     * from errors can hold repaired parts: one that did not bail met no syntax error.
-     */
-    private static Parsed numbered(SourceFile source, MASLParser parser, CommonTokenStream tokens, boolean mayRepair) {
+    private static Parsed numbered(SourceFile source, MASLParser parser, CommonTokenStream tokens,
+            BooleanSupplier repaired) {
         MaslRuleContext.Numbering numbering = new MaslRuleContext.Numbering();
         ConstantLimits constants = new ConstantLimits();
         parser.removeParseListeners();
         parser.addParseListener(numbering);
         parser.addParseListener(constants);
         MASLParser.ProgramContext tree = parser.program();
-        return new Parsed(source, tree, tokens, numbering.count(), mayRepair && hasSyntaxErrors(tree), constants.problems());
-    }
-
-    private static boolean hasSyntaxErrors(ParseTree tree) {
-        if (tree instanceof ErrorNode) {
-            return true;
-        }
-        if (tree instanceof ParserRuleContext rule && rule.exception != null) {
-            return true;
-        }
-        for (int i = 0; i < tree.getChildCount(); i++) {
-            if (hasSyntaxErrors(tree.getChild(i))) {
-                return true;
-            }
-        }
-        return false;
+        return new Parsed(source, tree, tokens, numbering.count(), repaired.getAsBoolean(), constants.problems());
     }
 
     /** Rewords ANTLR's messages: which token was found, and what was expected when that is short. */
@@ -168,11 +142,13 @@ public final class ProgramParser {
         private static final int MAX_LISTED = 4;
         private final String file;
         private final Diagnostics diagnostics;
+        private final Set<TokenRepairs.Position> repaired;
         private int lastErrorLine;
 
-        Reporter(String file, Diagnostics diagnostics) {
+        Reporter(String file, Diagnostics diagnostics, Set<TokenRepairs.Position> repaired) {
             this.file = file;
             this.diagnostics = diagnostics;
+            this.repaired = repaired;
         }
 
         @Override
@@ -186,22 +162,17 @@ public final class ProgramParser {
                 return;
             }
             lastErrorLine = line;
-            if (found.getType() == MASLLexer.UnterminatedString) {
-                diagnostics.error(file, line, column + 1, "unterminated string literal");
-                return;
-            }
-            if (found.getType() == MASLLexer.UNEXPECTED_CHAR) {
-                diagnostics.error(file, line, column + 1, "unexpected character " + quoteCharacter(found.getText()));
-                return;
-            }
             IntervalSet expected = parser.getExpectedTokens();
             if (antlrMessage.startsWith("missing ") && closes(expected)) {
                 Token previous = previousToken(parser, found);
                 if (previous != null) {
-                    diagnostics.error(file, previous.getLine(), endColumn(previous),
-                            "expected " + describe(expected, parser.getVocabulary()));
+                    report(previous.getLine(), endColumn(previous), "expected " + describe(expected, parser.getVocabulary()));
                     return;
                 }
+            }
+            if (found.getType() == MASLLexer.UnterminatedString) {
+                report(line, column + 1, "unterminated string literal");
+                return;
             }
             String message = "unexpected " + describe(found);
             boolean listable = expected.size() > 0 && expected.size() <= MAX_LISTED
@@ -209,7 +180,14 @@ public final class ProgramParser {
             if (listable) {
                 message += ", expected " + describe(expected, parser.getVocabulary());
             }
-            diagnostics.error(file, line, column + 1, message);
+            report(line, column + 1, message);
+        }
+
+        /** An error, unless the repairs reported a mistake there already. */
+        private void report(int line, int column, String message) {
+            if (!repaired.contains(new TokenRepairs.Position(line, column))) {
+                diagnostics.error(file, line, column, message);
+            }
         }
 
         /** A missing ';' or closing bracket belongs after the previous token, as javac reports it. */
@@ -280,9 +258,5 @@ public final class ProgramParser {
             };
         }
 
-        private static String quoteCharacter(String text) {
-            char c = text.isEmpty() ? '?' : text.charAt(0);
-            return Character.isISOControl(c) ? String.format("U+%04X", (int) c) : "'" + text + "'";
-        }
     }
 }

@@ -36,6 +36,18 @@ class ConstructsTest {
                 """);
     }
 
+    /** MASL §3: `==`, `!=` and `<>` compare objects by value, so two strings built apart are equal. */
+    @Test
+    void stringsAreComparedByValue() {
+        assertJournal("equal\nnot different\n", ONE + """
+                asynchronous entry main (true) {
+                  local String s = new String("x");
+                  if (s == "x") .logln("equal"); else .logln("identity");
+                  if (s <> new String("x")) .logln("different"); else .logln("not different");
+                }
+                """);
+    }
+
     @Test
     void whileForAndDoLoopWithExitAndExitN() {
         assertJournal("012wwwd1 5\n", ONE + """
