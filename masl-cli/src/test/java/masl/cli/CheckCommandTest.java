@@ -73,6 +73,42 @@ class CheckCommandTest {
         assertEquals("", run.out());
     }
 
+    /** The top-level README's example: syntax and other errors of a file, all in one run, each once. */
+    @Test
+    void everyErrorOfTheFileInOneRun() throws IOException {
+        Path program = write("broken.masl", """
+                import Default.xml as Default;
+                Default alice, bob, carol = newAgent(Default);
+                scalar entry main (true) {
+                    String greeting = "Hello from agent ";
+                    .log(greeting)
+                    .logln(.getProxyID();
+                    whle (.getProxyID() > 0) {
+                        .logln(greting);
+                    }
+                }
+                """);
+        Run run = Run.of("check", program.toString());
+        assertEquals(1, run.status());
+        assertEquals(program + ":4:5: error: a declaration needs `local` or `shared` and goes at the head of its"
+                + " block: `local String greeting …;`\n"
+                + "    String greeting = \"Hello from agent \";\n"
+                + "    ^\n"
+                + program + ":5:19: error: expected ';'\n"
+                + "    .log(greeting)\n"
+                + "                  ^\n"
+                + program + ":6:25: error: expected ')'\n"
+                + "    .logln(.getProxyID();\n"
+                + "                        ^\n"
+                + program + ":7:5: error: unknown keyword whle; did you mean `while`?\n"
+                + "    whle (.getProxyID() > 0) {\n"
+                + "    ^\n"
+                + program + ":8:16: error: cannot find symbol greting; did you mean `greeting`?\n"
+                + "        .logln(greting);\n"
+                + "               ^\n"
+                + "5 errors\n", run.err());
+    }
+
     @Test
     void aMissingFileIsBadUsage() {
         Run run = Run.of("check", folder.resolve("absent.masl").toString());
