@@ -1,11 +1,8 @@
 package masl.translator;
 
+import static masl.translator.FrontendErrors.errorsOf;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.util.stream.Collectors;
-import masl.runtime.descriptor.AgentPath;
-import masl.translator.diagnostics.Diagnostic;
-import masl.translator.source.SourceFile;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -14,14 +11,6 @@ import org.junit.jupiter.api.Test;
  * kinds, checked for their exact list of errors as {@code masl check} prints them.
  */
 class EveryErrorInOneRunTest {
-
-    private static final String HEADER = "import Default.xml as Default;\nDefault a, b = newAgent(Default);\n";
-
-    private static String errorsOf(String body) {
-        Frontend.Result result = new Frontend(AgentPath.parse(""))
-                .analyse(SourceFile.of("p.masl", HEADER + body));
-        return result.diagnostics().sorted().stream().map(Diagnostic::headline).collect(Collectors.joining("\n"));
-    }
 
     @Test
     void missingSemicolons() {

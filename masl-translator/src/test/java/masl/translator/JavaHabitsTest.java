@@ -1,11 +1,8 @@
 package masl.translator;
 
+import static masl.translator.FrontendErrors.errorsOf;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.util.stream.Collectors;
-import masl.runtime.descriptor.AgentPath;
-import masl.translator.diagnostics.Diagnostic;
-import masl.translator.source.SourceFile;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -13,14 +10,6 @@ import org.junit.jupiter.api.Test;
  * error that is only its consequence.
  */
 class JavaHabitsTest {
-
-    private static final String HEADER = "import Default.xml as Default;\nDefault a, b = newAgent(Default);\n";
-
-    private static String errorsOf(String body) {
-        Frontend.Result result = new Frontend(AgentPath.parse(""))
-                .analyse(SourceFile.of("p.masl", HEADER + body));
-        return result.diagnostics().sorted().stream().map(Diagnostic::headline).collect(Collectors.joining("\n"));
-    }
 
     @Test
     void aDeclarationWithoutLocalOrShared() {
