@@ -8,9 +8,12 @@ import java.util.Set;
 import masl.grammar.MASLLexer;
 import masl.translator.diagnostics.Diagnostics;
 import masl.translator.diagnostics.Suggestions;
+import org.antlr.v4.runtime.CharStream;
 import org.antlr.v4.runtime.CommonToken;
 import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.TokenSource;
 import org.antlr.v4.runtime.WritableToken;
+import org.antlr.v4.runtime.misc.Pair;
 
 /**
  * Mistakes a reader sees at a glance, found in the tokens of a program that failed to parse, reported
@@ -388,22 +391,22 @@ final class TokenRepairs {
 
     /** Inserts a token the user left out right before {@code next}, at its position. */
     void insertBefore(Token next, int type, String text) {
-        tokens.add(tokens.indexOf(next), inserted(type, text, next.getLine(), next.getCharPositionInLine(),
-                next.getStartIndex()));
+        tokens.add(tokens.indexOf(next), inserted(next, type, text, next.getCharPositionInLine(), next.getStartIndex()));
     }
 
     /** Inserts a token the user left out right after {@code previous}, where it ends. */
     void insertAfter(Token previous, int type, String text) {
-        tokens.add(tokens.indexOf(previous) + 1, inserted(type, text, previous.getLine(),
+        tokens.add(tokens.indexOf(previous) + 1, inserted(previous, type, text,
                 previous.getCharPositionInLine() + previous.getText().length(), previous.getStopIndex() + 1));
     }
 
-    private static Token inserted(int type, String text, int line, int column, int index) {
-        CommonToken token = new InsertedToken(type, text);
-        token.setLine(line);
+    /** A token at {@code index} of the text, on the line of {@code neighbour}, from the same source (ANTLR's recovery reads it). */
+    private static Token inserted(Token neighbour, int type, String text, int column, int index) {
+        CommonToken token = new InsertedToken(new Pair<>(neighbour.getTokenSource(), neighbour.getInputStream()), type,
+                index);
+        token.setText(text);
+        token.setLine(neighbour.getLine());
         token.setCharPositionInLine(column);
-        token.setStartIndex(index);
-        token.setStopIndex(index - 1);
         return token;
     }
 
@@ -416,8 +419,8 @@ final class TokenRepairs {
     private static final class InsertedToken extends CommonToken {
         private static final long serialVersionUID = 1L;
 
-        InsertedToken(int type, String text) {
-            super(type, text);
+        InsertedToken(Pair<TokenSource, CharStream> source, int type, int index) {
+            super(source, type, Token.DEFAULT_CHANNEL, index, index - 1);
         }
     }
 }
