@@ -87,6 +87,26 @@ class JavaHabitsTest {
     }
 
     @Test
+    void aDeclarationInTheBlockOfAnIfOrALoop() {
+        assertEquals("""
+                p.masl:6:9: error: only an entry block declares, at its head: move this declaration to the head of the entry block around it
+                p.masl:10:9: error: only an entry block declares, at its head: move this declaration to the head of the entry block around it
+                p.masl:11:12: error: expected ';'""", errorsOf("""
+                asynchronous entry main (true) {
+                    local int x = 0;
+                    if (x == 0) {
+                        local int t = 1;
+                        x = t;
+                    }
+                    while (x < 3) {
+                        shared event e;
+                        x++
+                    }
+                }
+                """));
+    }
+
+    @Test
     void printingOnTheConsole() {
         assertEquals("p.masl:5:5: error: System.out.println writes past the mission's journal: use `.logln(…)`"
                 + " (`.log(…)` without the line break)", errorsOf("""

@@ -1,6 +1,8 @@
 package masl.translator.parse;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Deque;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
@@ -35,6 +37,8 @@ final class TokenRepairs {
     private static final Map<String, Integer> LABELS = Map.of("LLabel", MASLLexer.LLABEL, "SLabel", MASLLexer.SLABEL);
     private static final Map<String, Integer> HEADED = Map.of("while", MASLLexer.WHILE, "if", MASLLexer.IF,
             "for", MASLLexer.FOR);
+    private static final Set<Integer> DECLARING = Set.of(MASLLexer.LOCAL, MASLLexer.SHARED, MASLLexer.LLABEL,
+            MASLLexer.SLABEL);
     private static final Set<String> JAVA_MODIFIERS = Set.of("public", "private", "protected", "static");
     private static final Set<Integer> PRIMITIVE_TYPES = Set.of(MASLLexer.BOOLEAN, MASLLexer.BYTE, MASLLexer.CHAR,
             MASLLexer.SHORT, MASLLexer.INT, MASLLexer.LONG, MASLLexer.FLOAT, MASLLexer.DOUBLE);
@@ -86,7 +90,8 @@ final class TokenRepairs {
 
     private void statementStarts() {
         List<Token> significant = significant();
-        int depth = 0;
+        // For each brace open at this point, whether it opened an entry block, where declarations stand.
+        Deque<Boolean> blocks = new ArrayDeque<>();
         for (int i = 0; i < significant.size(); i++) {
             Token token = significant.get(i);
             Token previous = i == 0 ? null : significant.get(i - 1);
@@ -97,20 +102,62 @@ final class TokenRepairs {
             boolean startsStatement = previous == null || previous.getType() == MASLLexer.SEMI
                     || previous.getType() == MASLLexer.LBRACE || previous.getType() == MASLLexer.RBRACE
                     || previous.getLine() < token.getLine();
-            if (startsStatement && depth > 0) {
+            if (startsStatement && !blocks.isEmpty()) {
                 statementStart(significant, i);
+                if (!blocks.peek() && DECLARING.contains(token.getType()) && token.getChannel() == Token.DEFAULT_CHANNEL) {
+                    declarationOutsideEntryBlock(significant, i);
+                }
             } else if (startsStatement && JAVA_MODIFIERS.contains(token.getText())
-                    || token.getText().equals("class") && token.getType() == MASLLexer.Identifier && depth == 0) {
+                    || token.getText().equals("class") && token.getType() == MASLLexer.Identifier && blocks.isEmpty()) {
                 javaOutsideBlocks(significant, i);
             }
-            if (token.getChannel() == Token.DEFAULT_CHANNEL) {
-                depth += token.getType() == MASLLexer.LBRACE ? 1 : token.getType() == MASLLexer.RBRACE ? -1 : 0;
+            if (token.getChannel() == Token.DEFAULT_CHANNEL && token.getType() == MASLLexer.LBRACE) {
+                blocks.push(opensEntryBlock(significant, i));
+            } else if (token.getChannel() == Token.DEFAULT_CHANNEL && token.getType() == MASLLexer.RBRACE
+                    && !blocks.isEmpty()) {
+                blocks.pop();
             }
             if (token.getType() == MASLLexer.FOR && i + 1 < significant.size()
                     && significant.get(i + 1).getType() == MASLLexer.LPAREN) {
                 declarationInFor(significant, i + 2);
             }
         }
+    }
+
+    /** Whether the {@code {} at {@code brace} opens an entry block: {@code MODE entry NAME (TEST) {}. */
+    private static boolean opensEntryBlock(List<Token> significant, int brace) {
+        if (brace == 0 || significant.get(brace - 1).getType() != MASLLexer.RPAREN) {
+            return false;
+        }
+        int depth = 0;
+        for (int i = brace - 1; i >= 0; i--) {
+            int type = significant.get(i).getType();
+            depth += type == MASLLexer.RPAREN ? 1 : type == MASLLexer.LPAREN ? -1 : 0;
+            if (depth == 0) {
+                return i >= 2 && significant.get(i - 2).getType() == MASLLexer.ENTRY;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * {@code if (c) { local int t = 0; … }}: only an entry block declares (§3); the declaration is
+     * reported once and dropped, so that the rest parses.
+     */
+    private void declarationOutsideEntryBlock(List<Token> significant, int start) {
+        error(significant.get(start), "only an entry block declares, at its head: move this declaration to the"
+                + " head of the entry block around it");
+        for (int i = start; i < significant.size(); i++) {
+            Token token = significant.get(i);
+            if (token.getType() == MASLLexer.RBRACE) {
+                break;
+            }
+            hide(token);
+            if (token.getType() == MASLLexer.SEMI) {
+                break;
+            }
+        }
+        sound = false;
     }
 
     /**
