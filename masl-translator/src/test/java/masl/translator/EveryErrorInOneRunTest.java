@@ -46,6 +46,21 @@ class EveryErrorInOneRunTest {
     }
 
     @Test
+    void aMissingSemicolonBeforeAPrimitiveIsNotAMethodOfTheValueBefore() {
+        assertEquals("""
+                p.masl:5:16: error: expected ';'
+                p.masl:8:10: error: cannot find method lenght() in String""", errorsOf("""
+                asynchronous entry main (true) {
+                    local String s = "x";
+                    s = s + "y"
+                    .logln(s);
+                    s.trim()
+                        .lenght();
+                }
+                """));
+    }
+
+    @Test
     void missingClosingParentheses() {
         assertEquals("""
                 p.masl:5:13: error: expected ')'

@@ -325,6 +325,13 @@ final class ExpressionTyper extends MASLBaseVisitor<MaslType> {
             return members.javaMethod(Object.class, false, name, argumentTypes, call);
         }
         if (type instanceof MaslType.JavaClass javaClass) {
+            // `s = "x"` then `.logln(s);` on the next line: a primitive no Java object has, after a `;` left out.
+            boolean primitiveOfAnAgent = members.isPrimitive(name.getText())
+                    && JavaMembers.method(javaClass.type(), name.getText(), argumentTypes, false)
+                            instanceof JavaMembers.Lookup.Missing;
+            if (primitiveOfAnAgent && errors.missingSemicolonBefore(call.DOT().getSymbol(), call.expression())) {
+                return MaslType.ERROR;
+            }
             return members.javaMethod(javaClass.type(), false, name, argumentTypes, call);
         }
         if (!errors.missingSemicolonBefore(call.DOT().getSymbol(), call.expression())) {

@@ -174,6 +174,11 @@ final class MemberTyper {
     }
 
     /** A method of a Java class, on an object or (when {@code staticOnly}) on the class itself. */
+    /** Whether some imported agent type has a primitive called {@code name}. */
+    boolean isPrimitive(String name) {
+        return agentMembers.primitiveNames().contains(name);
+    }
+
     MaslType javaMethod(Class<?> owner, boolean staticOnly, Token name, List<MaslType> arguments,
             ParserRuleContext access) {
         JavaMembers.Lookup lookup = JavaMembers.method(owner, name.getText(), arguments, staticOnly);
