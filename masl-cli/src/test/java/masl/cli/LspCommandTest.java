@@ -130,6 +130,13 @@ class LspCommandTest {
         assertEquals(1, refusal.size(), refusal.toString());
         change(uri, 3, refused);
         assertEquals(refusal, messages(diagnosticsOf(uri, 3)));
+
+        // Syntax errors and the analysis's errors of the same file, in one publication, as masl check has them.
+        String mistyped = TWO_ERRORS.replace("local int n = 0;", "locl int n = 0").replace("break(work);", "break(work)");
+        List<String> mistakes = maslCheck(write("mistyped.masl", mistyped));
+        assertEquals(5, mistakes.size(), mistakes.toString());
+        change(uri, 4, mistyped);
+        assertEquals(mistakes, messages(diagnosticsOf(uri, 4)));
     }
 
     private static List<String> messages(List<Diagnostic> diagnostics) {
