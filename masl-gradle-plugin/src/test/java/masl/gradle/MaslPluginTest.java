@@ -98,33 +98,55 @@ class MaslPluginTest {
     }
 
     /**
+     * Inside JADE, an agent polling its own type's accessor in an empty {@code while} never parks: the
+     * run still ends on its timeout, with masl's report (where each agent is) above the task's failure.
+     */
+    @Test
+    void aJadeRunWhoseAgentSpinsEndsOnItsTimeoutWithMaslsReport() throws IOException {
+        robotsAndApp("Latch", """
+                package robots;
+                public class Latch extends masl.agents.Default {
+                    public boolean opened() { return false; }
+                }
+                """, """
+                <Agent short_class_name="Latch" full_class_name="robots.Latch" target_language="java">
+                  <Primitive function_name="opened" member_id="L1" synchronous_call="true" return_type_name="boolean.class" accessor="true">
+                    <Modifier modifier_name="public"/>
+                  </Primitive>
+                </Agent>
+                """);
+        write(project.resolve("app/src/main/masl/poll.masl"), """
+                import Latch.xml as Latch;
+                Latch l = newAgent(Latch);
+                asynchronous entry main (true) { while (!.opened()) {} }
+                """);
+
+        BuildResult result = gradle(project, ":app:maslRun", "-Pplatform=jade", "-Ptimeout=2").buildAndFail();
+
+        String output = result.getOutput();
+        assertTrue(output.contains("masl: the mission timed out\nagent l (0) at pc "), output);
+        assertTrue(output.contains("(poll.masl:3: while (!.opened())): [main]\n"), output);
+        assertTrue(output.contains("> mission poll failed: the mission timed out (masl exit status 2: "), output);
+        assertFalse(output.contains("still alive"), output);
+    }
+
+    /**
      * Agent types of another subproject, its descriptor among the jar's resources: the jar on the
      * agent path is where the translator finds the descriptor, and the generated code the class.
      */
     @Test
     void agentTypesOfAnotherSubprojectsJarOnTheAgentPath() throws IOException {
-        write(project.resolve("settings.gradle"), UserBuild.SETTINGS + "rootProject.name = 'crew'\ninclude 'robots', 'app'\n");
-        Files.delete(project.resolve("build.gradle"));
-        write(project.resolve("robots/build.gradle"), """
-                apply plugin: 'java'
-                repositories { mavenLocal(); mavenCentral() }
-                dependencies { implementation 'org.masl:agents:%s' }
-                """.formatted(UserBuild.VERSION));
-        write(project.resolve("robots/src/main/java/robots/Greeter.java"), """
+        robotsAndApp("Greeter", """
                 package robots;
                 public class Greeter extends masl.agents.Default {
                     public String greeting() { return "Hi from robots"; }
                 }
-                """);
-        write(project.resolve("robots/src/main/resources/Greeter.xml"), """
+                """, """
                 <Agent short_class_name="Greeter" full_class_name="robots.Greeter" target_language="java">
                   <Primitive function_name="greeting" member_id="G1" synchronous_call="true" return_type_name="java.lang.String">
                     <Modifier modifier_name="public"/>
                   </Primitive>
                 </Agent>
-                """);
-        write(project.resolve("app/build.gradle"), UserBuild.BUILD + """
-                masl { agentPath { project(':robots').jar } }
                 """);
         write(project.resolve("app/src/main/masl/greet.masl"), """
                 import Greeter.xml as Greeter;
@@ -145,5 +167,25 @@ class MaslPluginTest {
             }
             return all.toString();
         }
+    }
+
+    /**
+     * A build of two subprojects: {@code robots}, a jar holding the agent type {@code robots.TYPE} (its
+     * class and, among its resources, its descriptor), and {@code app}, the MASL programs, with that
+     * jar on its agent path.
+     */
+    private void robotsAndApp(String type, String javaSource, String descriptor) throws IOException {
+        write(project.resolve("settings.gradle"), UserBuild.SETTINGS + "rootProject.name = 'crew'\ninclude 'robots', 'app'\n");
+        Files.delete(project.resolve("build.gradle"));
+        write(project.resolve("robots/build.gradle"), """
+                apply plugin: 'java'
+                repositories { mavenLocal(); mavenCentral() }
+                dependencies { implementation 'org.masl:agents:%s' }
+                """.formatted(UserBuild.VERSION));
+        write(project.resolve("robots/src/main/java/robots/" + type + ".java"), javaSource);
+        write(project.resolve("robots/src/main/resources/" + type + ".xml"), descriptor);
+        write(project.resolve("app/build.gradle"), UserBuild.BUILD + """
+                masl { agentPath { project(':robots').jar } }
+                """);
     }
 }
