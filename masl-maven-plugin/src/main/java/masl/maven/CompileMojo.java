@@ -1,0 +1,69 @@
+package masl.maven;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.apache.maven.model.Resource;
+import org.apache.maven.plugin.MojoExecutionException;
+import org.apache.maven.plugin.MojoFailureException;
+
+/**
+ * {@code masl:compile}, in {@code generate-sources}: translates the missions of {@code src/main/masl}
+ * into Java under {@code target/generated-sources/masl} (package {@code masl.generated.<program>}),
+ * a source root the compiler plug-in then compiles with the project's own Java. The descriptors of
+ * {@code src/main/masl} become resources, so that they travel in the jar next to the classes they
+ * describe and the jar can be another project's agent path.
+ */
+public class CompileMojo extends ProgramsMojo {
+
+    private File outputDirectory;
+
+    @Override
+    public void execute() throws MojoExecutionException, MojoFailureException {
+        Path programsDir = sourceDirectory().toPath();
+        addDescriptorsAsResources();
+        List<Path> programs = Programs.in(programsDir);
+        Path output = outputDirectory.toPath();
+        // Only the generated packages are emptied: a program deleted leaves no stale class, and nothing
+        // else a user may keep in a folder they chose is touched.
+        Folders.empty(output.resolve("masl").resolve("generated"));
+        if (programs.isEmpty()) {
+            getLog().info("No MASL programs in " + relative(programsDir));
+            return;
+        }
+        AgentsDependency.require(project(), plugin());
+        Map<String, String> javaSources = new ProjectTranslation(this).translate(programs);
+        for (Map.Entry<String, String> source : javaSources.entrySet()) {
+            write(output, source.getKey(), source.getValue());
+        }
+        project().addCompileSourceRoot(output.toString());
+        getLog().info("Translated " + programs.size() + " MASL program" + (programs.size() == 1 ? "" : "s")
+                + " of " + relative(programsDir) + " into " + relative(output));
+    }
+
+    /** Once: a lifecycle forked by masl:run runs this goal again on the same project. */
+    private void addDescriptorsAsResources() {
+        String folder = sourceDirectory().getPath();
+        if (project().getResources().stream().anyMatch(resource -> folder.equals(resource.getDirectory()))) {
+            return;
+        }
+        Resource descriptors = new Resource();
+        descriptors.setDirectory(folder);
+        descriptors.addInclude("**/*.xml");
+        project().addResource(descriptors);
+    }
+
+    private static void write(Path output, String className, String javaSource) throws MojoExecutionException {
+        Path target = output.resolve(className.replace('.', File.separatorChar) + ".java");
+        try {
+            Files.createDirectories(target.getParent());
+            Files.writeString(target, javaSource, StandardCharsets.UTF_8);
+        } catch (IOException failed) {
+            throw new MojoExecutionException("cannot write " + target, failed);
+        }
+    }
+}

@@ -1,0 +1,22 @@
+package masl.maven;
+
+/** What an exit status of the {@code masl} command means (its README: "Exit status"). */
+final class ExitStatus {
+
+    static final int MISSION_FAILED = 2;
+
+    private ExitStatus() {
+    }
+
+    static String meaning(int status) {
+        return switch (status) {
+            case 1 -> "errors in the program or its descriptors, or an agent class that cannot be made";
+            case MISSION_FAILED -> "the mission failed, deadlocked or timed out, or its journal could not be written";
+            case 64 -> "masl was given a bad option";
+            case 70 -> "an internal error of masl";
+            case 130 -> "stopped by Ctrl-C";
+            case 143 -> "stopped by SIGTERM";
+            default -> "a status masl does not give";
+        };
+    }
+}

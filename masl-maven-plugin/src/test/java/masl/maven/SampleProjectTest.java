@@ -1,0 +1,126 @@
+package masl.maven;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * samples/counter-team-maven, copied out of the checkout and built as it is by Debian's Maven and by a
+ * current Maven 3.9, with the plug-in and the modules published by this build: on each, the mission
+ * translated and compiled with the project's agent class and its JUnit test green, then a seeded
+ * {@code masl:run} in the same build, of the mission printing its journal (Maven 3.9) or of a mission
+ * that fails, failing with its status and the command that replays it (Debian's); and an error in a
+ * mission and in a descriptor failing {@code masl:check} at their positions. Two builds per Maven: each
+ * costs seconds of JVM start and of Maven's own plug-ins.
+ */
+class SampleProjectTest {
+
+    static List<Maven> mavens() {
+        return List.of(Maven.debian(), Maven.current());
+    }
+
+    @Test
+    void currentMavenTestsTheMissionThenRunsItWithASeed(@TempDir Path folder) throws Exception {
+        Path project = sample(folder);
+
+        Maven.Result build = Maven.current().run(project, "test", "masl:run", "-Dmission=count", "-Dseed=3");
+
+        assertTrue(build.succeeded(), build.output());
+        assertTestsPassed(project, build);
+        assertTrue(build.output().lines().anyMatch("total=9"::equals), "the journal of masl:run:\n" + build.output());
+    }
+
+    @Test
+    void debianMavenTestsTheMissionThenAFailedRunNamesItsStatusAndTheCommandThatReplaysIt(@TempDir Path folder) throws Exception {
+        Path project = sample(folder);
+        Files.writeString(project.resolve("src/main/masl/crash.masl"), """
+                import Default.xml as Default;
+                Default a = newAgent(Default);
+                scalar entry main (true) {
+                    local int zero = 0;
+                    .logln("half=" + (1 / zero));
+                }
+                """);
+
+        Maven.Result build = Maven.debian().run(project, "test", "masl:run", "-Dmission=crash", "-Dseed=5");
+
+        assertEquals(1, build.status(), build.output());
+        assertTestsPassed(project, build);
+        assertTrue(build.output().contains("caused by java.lang.ArithmeticException: / by zero"), "masl's report:\n" + build.output());
+        assertTrue(build.output().contains("mission crash failed with exit status 2 (the mission failed, deadlocked or timed out,"
+                + " or its journal could not be written); masl's report is above\n"
+                + "[ERROR] The same run again: mvn masl:run -Dmission=crash -Dseed=5\n"), build.output());
+    }
+
+    /** The missions translated and compiled with the project's agent class, and the JUnit test of count green. */
+    private static void assertTestsPassed(Path project, Maven.Result build) throws IOException {
+        assertTrue(build.output().contains("Tests run: 2, Failures: 0, Errors: 0, Skipped: 0"), build.output());
+        try (Stream<Path> generated = Files.list(project.resolve("target/generated-sources/masl/masl/generated/count"))) {
+            assertTrue(generated.anyMatch(file -> file.toString().endsWith(".java")), "the mission's Java in its source root");
+        }
+        assertTrue(Files.isRegularFile(project.resolve("target/classes/Counter.xml")), "the descriptor beside its class");
+    }
+
+    @ParameterizedTest
+    @MethodSource("mavens")
+    void errorsInAMissionAndInADescriptorFailCheckAtTheirPositions(Maven maven, @TempDir Path folder) throws Exception {
+        Path project = sample(folder);
+        Path mission = project.resolve("src/main/masl/count.masl");
+        Files.writeString(mission, Files.readString(mission).replace(".logln(\"total=\" + total);", ".logln(\"total=\" + total;"));
+        Path descriptor = project.resolve("src/main/masl/Counter.xml");
+        Files.writeString(descriptor, Files.readString(descriptor).replace("</Agent>", """
+                  <Primitive function_name="reset" member_id="K2" synchronous_call="true" return_type_name="void.class">
+                    <Modifier modifier_name="public"/>
+                  </Primitive>
+                </Agent>"""));
+        Files.writeString(project.resolve("src/main/masl/tally.masl"), """
+                import Counter.xml as Counter;
+                Counter a = newAgent(Counter);
+                scalar entry main (true) {
+                    .logln("clicks=" + .click());
+                }
+                """);
+
+        Maven.Result check = maven.run(project, "masl:check");
+
+        assertEquals(1, check.status(), check.output());
+        String output = check.output();
+        assertTrue(output.contains("""
+                [ERROR] src/main/masl/count.masl:13:32: error: expected ')'
+                [ERROR]         .logln("total=" + total;
+                [ERROR]                                ^
+                """), output);
+        assertTrue(output.contains("src/main/masl/Counter.xml:7:3: error: <Primitive function_name=\"reset\">:"
+                + " implementation class 'sample.Counter' has no public method void reset()"), output);
+        assertFalse(Files.exists(project.resolve("target/generated-sources")), "masl:check generates nothing");
+    }
+
+    /** The sample, copied out of the checkout, as a user would start from it. */
+    private static Path sample(Path folder) throws IOException {
+        Path source = Path.of(System.getProperty("masl.samples"), "counter-team-maven");
+        Path copy = folder.resolve("counter-team");
+        try (Stream<Path> files = Files.walk(source)) {
+            // Not what a build of the sample in the checkout may have left in target/.
+            for (Path file : files.filter(file -> !source.relativize(file).startsWith("target")).toList()) {
+                Path target = copy.resolve(source.relativize(file).toString());
+                if (Files.isDirectory(file)) {
+                    Files.createDirectories(target);
+                } else {
+                    Files.copy(file, target, StandardCopyOption.COPY_ATTRIBUTES);
+                }
+            }
+        }
+        return copy;
+    }
+}
