@@ -1,9 +1,6 @@
 package masl.maven;
 
 import java.io.File;
-import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
@@ -28,18 +25,14 @@ public class CompileMojo extends ProgramsMojo {
         addDescriptorsAsResources();
         List<Path> programs = Programs.in(programsDir);
         Path output = outputDirectory.toPath();
-        // Only the generated packages are emptied: a program deleted leaves no stale class, and nothing
-        // else a user may keep in a folder they chose is touched.
-        Folders.empty(output.resolve("masl").resolve("generated"));
+        GeneratedSources generated = new GeneratedSources(output);
         if (programs.isEmpty()) {
+            generated.update(Map.of());
             getLog().info("No MASL programs in " + relative(programsDir));
             return;
         }
         AgentsDependency.require(project(), plugin());
-        Map<String, String> javaSources = new ProjectTranslation(this).translate(programs);
-        for (Map.Entry<String, String> source : javaSources.entrySet()) {
-            write(output, source.getKey(), source.getValue());
-        }
+        generated.update(new ProjectTranslation(this).translate(programs));
         project().addCompileSourceRoot(output.toString());
         getLog().info("Translated " + programs.size() + " MASL program" + (programs.size() == 1 ? "" : "s")
                 + " of " + relative(programsDir) + " into " + relative(output));
@@ -55,15 +48,5 @@ public class CompileMojo extends ProgramsMojo {
         descriptors.setDirectory(folder);
         descriptors.addInclude("**/*.xml");
         project().addResource(descriptors);
-    }
-
-    private static void write(Path output, String className, String javaSource) throws MojoExecutionException {
-        Path target = output.resolve(className.replace('.', File.separatorChar) + ".java");
-        try {
-            Files.createDirectories(target.getParent());
-            Files.writeString(target, javaSource, StandardCharsets.UTF_8);
-        } catch (IOException failed) {
-            throw new MojoExecutionException("cannot write " + target, failed);
-        }
     }
 }

@@ -9,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.List;
+import java.util.jar.JarFile;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -18,7 +19,8 @@ import org.junit.jupiter.params.provider.MethodSource;
 /**
  * samples/counter-team-maven, copied out of the checkout and built as it is by Debian's Maven and by a
  * current Maven 3.9, with the plug-in and the modules published by this build: on each, the mission
- * translated and compiled with the project's agent class and its JUnit test green, then a seeded
+ * translated and compiled with the project's agent class and its JUnit test green (and the jar made,
+ * with Maven 3.9), then a seeded
  * {@code masl:run} in the same build, of the mission printing its journal (Maven 3.9) or of a mission
  * that fails, failing with its status and the command that replays it (Debian's); and an error in a
  * mission and in a descriptor failing {@code masl:check} at their positions. Two builds per Maven: each
@@ -34,11 +36,15 @@ class SampleProjectTest {
     void currentMavenTestsTheMissionThenRunsItWithASeed(@TempDir Path folder) throws Exception {
         Path project = sample(folder);
 
-        Maven.Result build = Maven.current().run(project, "test", "masl:run", "-Dmission=count", "-Dseed=3");
+        Maven.Result build = Maven.current().run(project, "verify", "masl:run", "-Dmission=count", "-Dseed=3");
 
         assertTrue(build.succeeded(), build.output());
         assertTestsPassed(project, build);
         assertTrue(build.output().lines().anyMatch("total=9"::equals), "the journal of masl:run:\n" + build.output());
+        try (JarFile jar = new JarFile(project.resolve("target/counter-team-1.0.jar").toFile())) {
+            assertTrue(jar.getEntry("Counter.xml") != null && jar.getEntry("sample/Counter.class") != null,
+                    "the descriptor in the jar beside its class, so the jar can be an agent path");
+        }
     }
 
     @Test
