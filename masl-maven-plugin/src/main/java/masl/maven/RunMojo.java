@@ -2,11 +2,16 @@ package masl.maven;
 
 import java.io.File;
 import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
 import java.util.stream.Collectors;
+import masl.runtime.scheduling.ReplayCommand;
+import masl.translator.diagnostics.MaslErrorLines;
 import org.apache.maven.plugin.MojoExecutionException;
 import org.apache.maven.plugin.MojoFailureException;
 import org.eclipse.aether.RepositorySystem;
@@ -41,14 +46,31 @@ public class RunMojo extends ProgramsMojo {
         }
         List<Path> classPath = new MaslTool(repositorySystem, repositorySession, remoteRepositories)
                 .classPath(project(), plugin(), inJade, agentPath());
+        String name = Programs.missionName(program);
+        ReplayCommand replay = ReplayCommand.maven(name, sameRunProperties());
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", classPath.stream().map(Path::toString).collect(Collectors.joining(File.pathSeparator)),
+                // A seeded run that fails names this goal as the way to run it again.
+                "-D" + ReplayCommand.PROPERTY + "=" + replay.template(),
                 MaslTool.MAIN_CLASS));
         command.addAll(arguments(program, inJade));
-        int status = run(command);
+        MaslErrorLines report = new MaslErrorLines(System.err);
+        int status = run(command, report);
         if (status != 0) {
-            throw new MojoFailureException(failure(Programs.missionName(program), status, inJade));
+            throw new MojoFailureException(failure(name, status, report.why(), inJade ? null : replay));
         }
+    }
+
+    /** The user properties besides the mission and the seed that make a run what it was. */
+    private List<String> sameRunProperties() {
+        List<String> properties = new ArrayList<>();
+        if (timeout != null) {
+            properties.add("timeout=" + timeout);
+        }
+        if (callTimeout != null) {
+            properties.add("callTimeout=" + callTimeout);
+        }
+        return properties;
     }
 
     private List<String> arguments(Path program, boolean inJade) {
@@ -73,16 +95,24 @@ public class RunMojo extends ProgramsMojo {
         }
     }
 
-    /** Runs masl with this JVM's standard streams, so the journal reaches Maven's output as it is written. */
-    private int run(List<String> command) throws MojoExecutionException {
+    /**
+     * Runs masl with the journal on this JVM's standard output, as it is written, and its standard
+     * error passed on to this JVM's through {@code report}, which reads why a run failed.
+     */
+    private int run(List<String> command, MaslErrorLines report) throws MojoExecutionException {
         Process masl;
         try {
-            masl = new ProcessBuilder(command).directory(project().getBasedir()).inheritIO().start();
+            masl = new ProcessBuilder(command).directory(project().getBasedir())
+                    .redirectInput(ProcessBuilder.Redirect.INHERIT).redirectOutput(ProcessBuilder.Redirect.INHERIT).start();
         } catch (IOException cannotStart) {
             throw new MojoExecutionException("cannot start " + command.get(0), cannotStart);
         }
+        Thread errors = new Thread(() -> passOn(masl.getErrorStream(), report), "masl run's standard error");
+        errors.start();
         try {
-            return masl.waitFor();
+            int status = masl.waitFor();
+            errors.join();
+            return status;
         } catch (InterruptedException interrupted) {
             masl.destroy();
             Thread.currentThread().interrupt();
@@ -90,17 +120,34 @@ public class RunMojo extends ProgramsMojo {
         }
     }
 
-    private String failure(String name, int status, boolean inJade) {
-        String failed = "mission " + name + " failed with exit status " + status + " (" + ExitStatus.meaning(status)
-                + "); masl's report is above";
-        if (status != ExitStatus.MISSION_FAILED || inJade) {
-            return failed;
+    private static void passOn(InputStream from, OutputStream to) {
+        try (from) {
+            from.transferTo(to);
+            to.flush();
+        } catch (IOException cannotPass) {
+            throw new UncheckedIOException("cannot pass on masl's standard error", cannotPass);
+        }
+    }
+
+    /**
+     * Which mission failed, why (masl's own words), with which exit status and what it means; for a
+     * mission that ran and failed, the command that runs it again (none in JADE, where no seed applies).
+     */
+    private String failure(String name, int status, String why, ReplayCommand replay) {
+        StringBuilder message = new StringBuilder("mission ").append(name).append(" failed");
+        if (!why.isEmpty()) {
+            message.append(": ").append(why);
+        }
+        message.append(" (masl exit status ").append(status).append(": ").append(ExitStatus.meaning(status))
+                .append("); masl's report is above");
+        if (status != ExitStatus.MISSION_FAILED || replay == null) {
+            return message.toString();
         }
         if (seed != null) {
-            return failed + "\nThe same run again: mvn masl:run -Dmission=" + name + " -Dseed=" + seed;
+            return message.append("\nThe same run again: ").append(replay.template().replace(ReplayCommand.SEED, seed)).toString();
         }
-        return failed + "\nA run to replay: mvn masl:run -Dmission=" + name + " -Dseed=N (any number N: one thread,"
-                + " every scheduling choice drawn from it)";
+        return message.append("\nA run to replay: ").append(replay.template().replace(ReplayCommand.SEED, "N"))
+                .append(" (any number N: one thread, every scheduling choice drawn from it)").toString();
     }
 
     private Path chosenProgram() throws MojoFailureException {

@@ -1,4 +1,4 @@
-package masl.gradle;
+package masl.translator.diagnostics;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -11,9 +11,10 @@ import java.util.List;
  * The standard error of {@code masl run}, passed on as it comes and read on the way for why the
  * run failed: the first diagnostic of a program with errors ({@code file:line:col: error: …}), or
  * masl's own last word on the mission ({@code masl: the mission deadlocked…}) with the failure it
- * names on the line below. Only the first lines are kept, enough for either.
+ * names on the line below. Only the first lines are kept, enough for either. The build plug-ins,
+ * which start {@code masl run} in a JVM of their own, say with it why their task or goal failed.
  */
-final class MaslErrorLines extends OutputStream {
+public final class MaslErrorLines extends OutputStream {
 
     private static final int KEPT_LINES = 500;
     private static final String MASL = "masl: ";
@@ -23,7 +24,7 @@ final class MaslErrorLines extends OutputStream {
     private final ByteArrayOutputStream line = new ByteArrayOutputStream();
     private final List<String> lines = new ArrayList<>();
 
-    MaslErrorLines(OutputStream passedOn) {
+    public MaslErrorLines(OutputStream passedOn) {
         this.passedOn = passedOn;
     }
 
@@ -50,7 +51,7 @@ final class MaslErrorLines extends OutputStream {
     }
 
     /** Why masl says the run failed; empty when it said nothing recognisable. */
-    String why() {
+    public String why() {
         if (line.size() > 0) {
             endLine();
         }
