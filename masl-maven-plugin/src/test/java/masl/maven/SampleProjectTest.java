@@ -68,8 +68,8 @@ class SampleProjectTest {
         String output = build.output();
         assertTrue(output.contains("caused by java.lang.ArithmeticException: / by zero"), "masl's report:\n" + output);
         assertTrue(output.contains("masl: the same run again: mvn masl:run -Dmission=crash -Dseed=5\n"), "masl's replay hint:\n" + output);
-        assertTrue(output.contains("mission crash failed: the mission failed: java.lang.IllegalStateException: agent a (0) at pc 1"
-                + " (crash.masl:4: declarations of main) failed (masl exit status 2: the mission failed, deadlocked or timed out,"
+        assertTrue(output.contains("mission crash failed: the mission failed: java.lang.IllegalStateException: agent a (0) at pc 2"
+                + " (crash.masl:5: .logln(\"half=\" + (1 / zero));) failed (masl exit status 2: the mission failed, deadlocked or timed out,"
                 + " or its journal could not be written); masl's report is above\n"
                 + "[ERROR] The same run again: mvn masl:run -Dmission=crash -Dseed=5\n"), output);
     }
