@@ -1,5 +1,6 @@
 package masl.cli.timeline;
 
+import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
@@ -27,7 +28,7 @@ public final class TimelineHtml {
         "#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#76b7b2", "#edc948",
         "#b07aa1", "#ff9da7", "#9c755f", "#bab0ac", "#1f77b4", "#8c564b",
     };
-    private static final ObjectMapper JSON = new ObjectMapper();
+    private static final ObjectMapper JSON = new ObjectMapper(new JsonFactory().setCharacterEscapes(new ScriptDataEscapes()));
 
     private final Timeline timeline;
     private final String title;
@@ -72,7 +73,7 @@ public final class TimelineHtml {
         return PALETTE[Math.floorMod(index, PALETTE.length)];
     }
 
-    /** The timeline as JSON, times relative to its start; {@code </} escaped so it cannot end the script. */
+    /** The timeline as JSON, times relative to its start, escaped so that no string can end or change its script element. */
     private String data() {
         Map<String, Object> data = new LinkedHashMap<>();
         data.put("clock", timeline.inRecordOrder() ? "record" : "nanos");
@@ -102,7 +103,7 @@ public final class TimelineHtml {
                 "t", t(marker.nanos()), "agent", marker.agent(), "kind", marker.kind(), "label", marker.label(),
                 "source", marker.source())).toList());
         try {
-            return JSON.writeValueAsString(data).replace("</", "<\\/");
+            return JSON.writeValueAsString(data);
         } catch (JsonProcessingException cannot) {
             throw new IllegalStateException("the timeline cannot be written as JSON", cannot);
         }

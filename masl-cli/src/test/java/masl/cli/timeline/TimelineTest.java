@@ -65,7 +65,7 @@ class TimelineTest {
 
         assertTrue(page.startsWith("<!DOCTYPE html>"));
         assertTrue(page.contains("<title>trace &lt;1&gt;</title>"));
-        assertTrue(page.contains("<\\/script><b>x"), "a name in the data cannot end its script");
+        assertTrue(page.contains("\\u003C/script\\u003E\\u003Cb\\u003Ex"), "a name in the data cannot end its script");
         assertEquals(2, page.split("</script>", -1).length - 1, "the data's and the drawing's scripts only");
         assertFalse(page.contains("<script src"), "no external script");
         assertFalse(page.contains("<link"), "no external style");
