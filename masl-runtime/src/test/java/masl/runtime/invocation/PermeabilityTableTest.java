@@ -23,7 +23,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 
 /**
  * MASL §11, table-driven: for each of the 8 combinations of x bits (u g o) that state {@code xK} of
- * agents/TestAgent.xml gives {@code nop}, the callee (agent 0, in block {@code inner}) takes that
+ * agents/Default.xml gives {@code nop}, the callee (agent 0, in block {@code inner}) takes that
  * state, and {@code nop} is invoked by the callee itself (u), by a member of the same innermost
  * block (g), by an agent in the parent block {@code main} (o) and by one in the sibling block
  * {@code elsewhere} (o). Exactly the allowed invocations run, each once.

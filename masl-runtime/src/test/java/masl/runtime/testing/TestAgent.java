@@ -5,7 +5,7 @@ import masl.runtime.AgentImplementation;
 /** The primitives of {@code Default} the tests need (masl-runtime cannot depend on the agents module). */
 public class TestAgent extends AgentImplementation {
 
-    /** An attribute for the permeability tests (descriptor agents/TestAgent.xml). */
+    /** An attribute for the permeability tests (descriptor agents/Default.xml). */
     public volatile int battery;
 
     public int getProxyID() {
@@ -22,6 +22,12 @@ public class TestAgent extends AgentImplementation {
 
     public void logln(String message) {
         services().log(message + "\n");
+    }
+
+    /** Logs {@code label} and {@code value} on a line and returns {@code value}: an expression a test sees evaluated. */
+    public int logged(String label, int value) {
+        logln(label + value);
+        return value;
     }
 
     /** Uses {@code amount} of the battery and returns what is left (the degraded-mode tests). */

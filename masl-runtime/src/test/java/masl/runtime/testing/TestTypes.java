@@ -15,9 +15,9 @@ public final class TestTypes {
     private TestTypes() {
     }
 
-    /** {@code agents/TestAgent.xml}: the root type of the tests, with its permeability states. */
+    /** {@code agents/Default.xml}: the root type of the tests, with its permeability states. */
     public static AgentType testAgent() {
-        return loader().load(folder().resolve("TestAgent.xml"));
+        return loader().load(folder().resolve("Default.xml"));
     }
 
     /** {@code agents/TestRobot.xml}: a subtype of {@link #testAgent()} with a static primitive. */
@@ -29,9 +29,10 @@ public final class TestTypes {
         return new DescriptorLoader(AgentPath.of(List.of(folder()), TestTypes.class.getClassLoader()), ROOT);
     }
 
-    private static Path folder() {
+    /** The folder of the tests' descriptors, where {@link MaslProgram}s are translated. */
+    static Path folder() {
         try {
-            return Path.of(TestTypes.class.getResource("/agents/TestAgent.xml").toURI()).getParent();
+            return Path.of(TestTypes.class.getResource("/agents/Default.xml").toURI()).getParent();
         } catch (URISyntaxException e) {
             throw new IllegalStateException(e);
         }

@@ -1,0 +1,92 @@
+package masl.runtime.testing;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Supplier;
+import java.util.stream.Collectors;
+import java.util.stream.IntStream;
+import masl.runtime.AgentImplementation;
+import masl.runtime.Mission;
+import masl.runtime.MissionOutcome;
+import masl.runtime.MissionProgram;
+import masl.runtime.descriptor.AgentPath;
+import masl.runtime.scheduling.Scheduler;
+import masl.runtime.trace.Trace;
+import masl.translator.MaslClassPath;
+import masl.translator.MissionLoader;
+import masl.translator.Translation;
+import masl.translator.Translator;
+import masl.translator.source.SourceFile;
+
+/**
+ * A test program written in MASL and translated by masl's own translator, so that what the runtime
+ * is tested with is what the translator emits. Its agents are {@link TestAgent}s, of the type
+ * {@code agents/Default.xml}: a program begins with {@link #header(int)}. Each text is translated and
+ * compiled once per test JVM; each run is a fresh mission of it.
+ */
+public final class MaslProgram {
+
+    private static final Duration TIMEOUT = Duration.ofSeconds(20);
+    private static final Map<String, MaslProgram> TRANSLATED = new ConcurrentHashMap<>();
+
+    private final MissionLoader loaded;
+
+    private MaslProgram(MissionLoader loaded) {
+        this.loaded = loaded;
+    }
+
+    /**
+     * The import of the tests' root type and {@code agents} agents of it, {@code a0}, {@code a1}, …
+     * (proxy ids 0, 1, …, as {@link Missions} names them).
+     */
+    public static String header(int agents) {
+        return "import Default.xml as Default;\n"
+                + IntStream.range(0, agents).mapToObj(i -> "a" + i).collect(Collectors.joining(", ", "Default ", ""))
+                + " = newAgent(Default);\n";
+    }
+
+    /** {@code text} translated and compiled (once); {@code name} is its file name in diagnostics and trace. */
+    public static MaslProgram of(String name, String text) {
+        return TRANSLATED.computeIfAbsent(name + "\n" + text, key -> translate(name, text));
+    }
+
+    private static MaslProgram translate(String name, String text) {
+        Path agents = TestTypes.folder();
+        Path testClasses = Path.of(MaslClassPath.locationOf(TestAgent.class).orElseThrow());
+        AgentPath path = AgentPath.of(List.of(agents, testClasses), MaslProgram.class.getClassLoader());
+        Translation translation = new Translator(path).translate(new SourceFile(name, agents, text));
+        if (!translation.succeeded()) {
+            throw new AssertionError(name + " does not translate:\n" + translation.diagnostics().sorted());
+        }
+        return new MaslProgram(MissionLoader.load(translation, path));
+    }
+
+    /** A run on {@code driver}'s scheduler, which must complete. */
+    public MissionOutcome run(Driver driver) {
+        return run(driver.newScheduler(), Trace.NONE);
+    }
+
+    /** A run under {@code scheduler} recording into {@code trace}, which must complete. */
+    public MissionOutcome run(Scheduler scheduler, Trace trace) {
+        return run(scheduler, trace, TestAgent::new);
+    }
+
+    /** As {@link #run(Scheduler, Trace)}, each agent's implementation made by {@code agents}. */
+    public MissionOutcome run(Scheduler scheduler, Trace trace, Supplier<? extends TestAgent> agents) {
+        try {
+            return newMission(agents).scheduler(scheduler).trace(trace).build().run(TIMEOUT).requireCompleted();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new AssertionError("interrupted", e);
+        }
+    }
+
+    /** A builder holding the program's agents, each made by {@code agents}; the caller adds the rest. */
+    public Mission.Builder newMission(Supplier<? extends TestAgent> agents) {
+        MissionProgram program = loaded.program();
+        return program.configure(Mission.builder(), spec -> (AgentImplementation) agents.get());
+    }
+}
