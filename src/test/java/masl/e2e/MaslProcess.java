@@ -46,10 +46,20 @@ final class MaslProcess implements AutoCloseable {
 
     /** Starts {@code masl ARGUMENTS} with {@code environment} added to this JVM's, standard output written to {@code out}. */
     static MaslProcess start(Map<String, String> environment, File out, String... arguments) throws IOException {
+        return start(environment, Path.of(""), out, arguments);
+    }
+
+    /** Starts {@code masl ARGUMENTS} in the working folder {@code folder}, standard output written to {@code out}. */
+    static MaslProcess startIn(Path folder, File out, String... arguments) throws IOException {
+        return start(Map.of(), folder, out, arguments);
+    }
+
+    private static MaslProcess start(Map<String, String> environment, Path folder, File out, String... arguments)
+            throws IOException {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), Main.class.getName()));
         command.addAll(List.of(arguments));
-        ProcessBuilder builder = new ProcessBuilder(command).redirectOutput(out);
+        ProcessBuilder builder = new ProcessBuilder(command).redirectOutput(out).directory(folder.toAbsolutePath().toFile());
         builder.environment().putAll(environment);
         return new MaslProcess(builder.start());
     }

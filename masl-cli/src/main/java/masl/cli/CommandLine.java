@@ -28,8 +28,6 @@ final class CommandLine {
      * ({@code Long.MAX_VALUE} ns is 292 years), and longer than any mission.
      */
     static final long MAX_TIMEOUT_SECONDS = 3650L * 24 * 60 * 60;
-    /** Where {@code masl run --place} writes the mission's secret and {@code masl container} reads it, by default. */
-    static final String DEFAULT_SECRET_FILE = ".masl-mission-secret";
 
     final String command;
     final List<String> operands = new ArrayList<>();

@@ -7,6 +7,7 @@ import masl.jade.JadeException;
 import masl.jade.JadeOptions;
 import masl.jade.MaslContainer;
 import masl.jade.MissionSecret;
+import masl.jade.SecretFile;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.descriptor.DescriptorLoader;
 
@@ -92,8 +93,9 @@ final class ContainerCommand {
             try {
                 return MaslContainer.start(JadeOptions.join(line.mainHost, line.mainPort), line.containerName,
                         descriptors::loadByClassName, descriptors.implementationClasses(),
-                        event -> out.println("masl-event " + event.getContent()), MissionSecret.Source.file(Path.of(
-                                line.secretFile == null ? CommandLine.DEFAULT_SECRET_FILE : line.secretFile)),
+                        event -> out.println("masl-event " + event.getContent()), MissionSecret.Source.file(
+                                line.secretFile != null ? Path.of(line.secretFile)
+                                        : SecretFile.defaultFor(Path.of(""), line.mainPort)),
                         refusal -> err.println("masl: container " + line.containerName + ": " + refusal));
             } catch (JadeException notYet) {
                 if (System.nanoTime() - deadline > 0) {

@@ -121,8 +121,9 @@ final class Help {
                 """);
         OPTIONS.put("--secret-file", """
                 --secret-file FILE  with --place (and for masl container): where run writes a fresh secret for the
-                                    mission (owner-only, deleted at its end) and its containers read it; they obey
-                                    only messages signed with it (default: .masl-mission-secret in this folder)
+                                    mission (a new owner-only file, deleted at its end; an existing file is refused)
+                                    and its containers read it; they obey only messages signed with it
+                                    (default: .masl-mission-secret-PORT in this folder, PORT the main container's)
                 """);
         OPTIONS.put("--sim", """
                 --sim SCENARIO      run the mission the scenario (NAME.scenario.xml) names on its simulated robots

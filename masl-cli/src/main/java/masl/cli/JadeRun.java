@@ -2,7 +2,6 @@ package masl.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
@@ -15,6 +14,7 @@ import masl.jade.JadePlatform;
 import masl.jade.MissionSecret;
 import masl.jade.Placement;
 import masl.jade.Readiness;
+import masl.jade.SecretFile;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
 import masl.runtime.descriptor.AgentPath;
@@ -39,6 +39,7 @@ final class JadeRun {
     private final JadeOptions options;
     private final Map<String, String> placement;
     private final JournalOutput journal;
+    /** {@code --secret-file}, or null: {@link SecretFile#defaultFor} the platform. */
     private final Path secretFile;
     private final Duration callTimeout;
     private final PrintStream err;
@@ -70,7 +71,7 @@ final class JadeRun {
             throw new UsageException("--secret-file is where the containers of --place find the mission's secret:"
                     + " give it with --place");
         }
-        this.secretFile = Path.of(line.secretFile == null ? CommandLine.DEFAULT_SECRET_FILE : line.secretFile);
+        this.secretFile = line.secretFile == null ? null : Path.of(line.secretFile);
         this.callTimeout = line.callTimeoutMillis == null ? null : Duration.ofMillis(line.callTimeoutMillis);
         this.err = err;
     }
@@ -111,21 +112,20 @@ final class JadeRun {
                         mission.stop(StopOnSignal.REASON);
                     }
                 });
-        try {
-            if (callTimeout != null) {
-                launcher.callTimeout(callTimeout);
-            }
-            if (!placement.isEmpty()) {
-                launcher.secret(shareSecret());
-            }
-            try (JadePlatform platform = JadePlatform.start(options)) {
+        if (callTimeout != null) {
+            launcher.callTimeout(callTimeout);
+        }
+        try (JadePlatform platform = JadePlatform.start(options)) {
+            Optional<SecretFile> shared = placement.isEmpty() ? Optional.empty() : Optional.of(shareSecret(platform, launcher));
+            try {
                 err.println(Readiness.platform(platform));
                 err.flush();
                 return launcher.run(platform, timeout);
+            } finally {
+                shared.ifPresent(SecretFile::close);
             }
-        } catch (IOException unwritable) {
-            return failed(new PlatformFailure("cannot write the mission's secret for its containers to " + secretFile
-                    + ": " + unwritable.getMessage()), MissionOutcome.Status.FAILED);
+        } catch (UnsharedSecret unwritable) {
+            return failed(new PlatformFailure(unwritable.getMessage()), MissionOutcome.Status.FAILED);
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
             return failed(interrupted, MissionOutcome.Status.STOPPED);
@@ -133,30 +133,32 @@ final class JadeRun {
             return failed(new PlatformFailure(platform.getMessage()), MissionOutcome.Status.FAILED);
         } catch (IllegalStateException cannotRun) {
             return failed(cannotRun, MissionOutcome.Status.FAILED);
-        } finally {
-            forgetSecret();
         }
     }
 
     /**
-     * A fresh secret for this mission, written to {@code --secret-file} (owner-only) for the
-     * containers of {@code --place} to read when its coordinator first writes to them.
+     * A fresh secret for this mission, written to a new file (owner-only), {@code --secret-file} or
+     * the platform's default, for the containers of {@code --place} to read when its coordinator
+     * first writes to them; written before the readiness line, so a container started on that line
+     * finds it. A file already there is refused and left as it was.
      */
-    private MissionSecret shareSecret() throws IOException {
+    private SecretFile shareSecret(JadePlatform platform, JadeLauncher launcher) throws UnsharedSecret {
+        Path file = secretFile != null ? secretFile : SecretFile.defaultFor(Path.of(""), platform.mainPort());
         MissionSecret secret = MissionSecret.generate();
-        secret.writeTo(secretFile);
-        return secret;
+        try {
+            SecretFile shared = secret.writeTo(file);
+            launcher.secret(secret);
+            return shared;
+        } catch (IOException unwritable) {
+            throw new UnsharedSecret("cannot write the mission's secret for its containers to " + file + ": "
+                    + unwritable.getMessage());
+        }
     }
 
-    /** The secret served this mission only: its file goes with it. */
-    private void forgetSecret() {
-        if (placement.isEmpty()) {
-            return;
-        }
-        try {
-            Files.deleteIfExists(secretFile);
-        } catch (IOException kept) {
-            // Harmless: the next mission writes a secret of its own over it.
+    /** The mission's secret could not be handed to its containers: the mission does not start. */
+    private static final class UnsharedSecret extends Exception {
+        UnsharedSecret(String message) {
+            super(message);
         }
     }
 

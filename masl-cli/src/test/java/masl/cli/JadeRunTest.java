@@ -104,6 +104,18 @@ class JadeRunTest {
         assertEquals(64, Run.of("run", program, "--secret-file", "s").status(), "--secret-file needs --platform jade");
     }
 
+    /** A file named as the secret's is the user's: the mission does not start, and the file is as it was. */
+    @Test
+    void aSecretFileThatExistsIsRefusedAndKept() throws IOException {
+        String program = write("one.masl", HEADER + "scalar entry main (true) { .nop(); }\n");
+        String notes = write("notes.txt", "my notes\n");
+        Run run = Run.of("run", program, "--platform", "jade", "--place", "b=c2", "--secret-file", notes);
+        assertEquals(2, run.status(), run::toString);
+        assertTrue(run.err().contains("masl: cannot write the mission's secret for its containers to " + notes
+                + ": it exists, and the mission's secret is written only to a file the mission creates"), run.err());
+        assertEquals("my notes\n", Files.readString(Path.of(notes)));
+    }
+
     @Test
     void aContainerNeedsItsPlatformAndName() {
         Run noName = Run.of("container", "--main-host", "127.0.0.1", "--main-port", "1099");

@@ -3,11 +3,8 @@ package masl.jade;
 import jade.lang.acl.ACLMessage;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.attribute.PosixFilePermissions;
 import java.security.GeneralSecurityException;
 import java.security.MessageDigest;
 import java.security.SecureRandom;
@@ -79,26 +76,15 @@ public final class MissionSecret {
     }
 
     /**
-     * Writes this secret to {@code file} (replacing it) so that only its owner can read it: written to
-     * a new file of the same folder, created with owner-only permissions where the file system has
-     * them, then moved into place, so that no reader sees it half-written.
+     * Writes this secret to {@code file}, a new file only its owner can read (created with owner-only
+     * permissions where the file system has them, in one write, before any container is told to read
+     * it). A file that exists, or a symbolic link, is refused and left as it was: it may be a user's
+     * file or the secret of another mission still running. {@link SecretFile#close()} deletes it.
+     *
+     * @throws IOException if {@code file} exists or cannot be created or written
      */
-    public void writeTo(Path file) throws IOException {
-        Path folder = file.toAbsolutePath().getParent();
-        Path fresh = folder.resolve("." + file.getFileName() + "." + UnguessableIds.next("new"));
-        try {
-            Files.createFile(fresh, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-------")));
-        } catch (UnsupportedOperationException noPosix) {
-            Files.createFile(fresh);
-        } catch (FileAlreadyExistsException impossible) {
-            throw new IOException("cannot create " + fresh + ": it exists", impossible);
-        }
-        try {
-            Files.writeString(fresh, HEX.formatHex(key.getEncoded()) + "\n", StandardCharsets.US_ASCII);
-            Files.move(fresh, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } finally {
-            Files.deleteIfExists(fresh);
-        }
+    public SecretFile writeTo(Path file) throws IOException {
+        return SecretFile.create(file, HEX.formatHex(key.getEncoded()) + "\n");
     }
 
     /**

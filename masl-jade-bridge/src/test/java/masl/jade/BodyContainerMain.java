@@ -28,7 +28,9 @@ public final class BodyContainerMain {
      * {@link #SECRET} in a file of its own.
      */
     public static SecondJvm start(JadePlatform platform, String name) throws IOException {
-        Path secretFile = Files.createTempFile("masl-mission", ".secret");
+        Path folder = Files.createTempDirectory("masl-mission");
+        Path secretFile = folder.resolve("secret");
+        folder.toFile().deleteOnExit();
         secretFile.toFile().deleteOnExit();
         SECRET.writeTo(secretFile);
         return SecondJvm.start(BodyContainerMain.class, platform.host(), Integer.toString(platform.port()), name,

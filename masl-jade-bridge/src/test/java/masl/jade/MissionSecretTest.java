@@ -2,6 +2,7 @@ package masl.jade;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -42,16 +43,45 @@ class MissionSecretTest {
     @Test
     void theFileOnlyItsOwnerCanRead(@TempDir Path folder) throws IOException {
         Path file = folder.resolve("mission.secret");
-        Files.writeString(file, "an older secret");
-        secret.writeTo(file);
-        assertEquals("rw-------", PosixFilePermissions.toString(Files.getPosixFilePermissions(file)));
-        assertEquals(1, Files.list(folder).count(), "no file left beside it");
-        ACLMessage end = end("{}");
-        secret.sign(end, "b", 7);
-        assertTrue(MissionSecret.readFrom(file).signed(end, "b"));
+        try (SecretFile shared = secret.writeTo(file)) {
+            assertEquals("rw-------", PosixFilePermissions.toString(Files.getPosixFilePermissions(file)));
+            assertEquals(1, Files.list(folder).count(), "no file left beside it");
+            ACLMessage end = end("{}");
+            secret.sign(end, "b", 7);
+            assertTrue(MissionSecret.readFrom(file).signed(end, "b"));
+        }
+        assertFalse(Files.exists(file), "the secret outlived its mission");
         Files.writeString(file, "not a secret\n");
         IOException unreadable = assertThrows(IOException.class, () -> MissionSecret.readFrom(file));
         assertEquals(file + " holds no mission secret (64 hexadecimal digits)", unreadable.getMessage());
+    }
+
+    @Test
+    void aFileThatExistsIsNeitherOverwrittenNorDeleted(@TempDir Path folder) throws IOException {
+        Path notes = Files.writeString(folder.resolve("notes.txt"), "my notes\n");
+        IOException refused = assertThrows(IOException.class, () -> secret.writeTo(notes));
+        assertTrue(refused.getMessage().startsWith("it exists, and the mission's secret is written only to a file"
+                + " the mission creates"), refused.getMessage());
+        assertEquals("my notes\n", Files.readString(notes));
+        Path link = Files.createSymbolicLink(folder.resolve("link"), folder.resolve("nowhere"));
+        assertThrows(IOException.class, () -> secret.writeTo(link));
+        assertFalse(Files.exists(folder.resolve("nowhere")), "a secret written through a symbolic link");
+    }
+
+    @Test
+    void aFilePutInPlaceOfTheSecretIsNotDeleted(@TempDir Path folder) throws IOException {
+        Path file = folder.resolve("mission.secret");
+        try (SecretFile shared = secret.writeTo(file)) {
+            Files.delete(file);
+            Files.writeString(file, "another mission's\n");
+        }
+        assertEquals("another mission's\n", Files.readString(file));
+    }
+
+    @Test
+    void eachPlatformHasItsOwnDefaultFile(@TempDir Path folder) {
+        assertNotEquals(SecretFile.defaultFor(folder, 1099), SecretFile.defaultFor(folder, 1100));
+        assertEquals(folder, SecretFile.defaultFor(folder, 1099).getParent());
     }
 
     private static ACLMessage end(String content) {
