@@ -21,7 +21,7 @@ public class CheckMojo extends ProgramsMojo {
             getLog().info("No MASL programs in " + relative(programsDir));
             return;
         }
-        new ProjectTranslation(this).translate(programs);
+        new ProjectTranslation(this, SourceScope.MAIN).translate(programs);
         getLog().info("No errors in the " + programs.size() + " MASL program" + (programs.size() == 1 ? "" : "s")
                 + " of " + relative(programsDir));
     }

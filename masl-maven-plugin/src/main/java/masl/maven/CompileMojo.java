@@ -32,21 +32,26 @@ public class CompileMojo extends ProgramsMojo {
             return;
         }
         AgentsDependency.require(project(), plugin());
-        generated.update(new ProjectTranslation(this).translate(programs));
-        project().addCompileSourceRoot(output.toString());
+        generated.update(new ProjectTranslation(this, scope()).translate(programs));
+        scope().addSourceRoot(project(), output.toString());
         getLog().info("Translated " + programs.size() + " MASL program" + (programs.size() == 1 ? "" : "s")
                 + " of " + relative(programsDir) + " into " + relative(output));
+    }
+
+    /** The main code's missions; {@link TestCompileMojo} translates the tests'. */
+    SourceScope scope() {
+        return SourceScope.MAIN;
     }
 
     /** Once: a lifecycle forked by masl:run runs this goal again on the same project. */
     private void addDescriptorsAsResources() {
         String folder = sourceDirectory().getPath();
-        if (project().getResources().stream().anyMatch(resource -> folder.equals(resource.getDirectory()))) {
+        if (scope().resources(project()).stream().anyMatch(resource -> folder.equals(resource.getDirectory()))) {
             return;
         }
         Resource descriptors = new Resource();
         descriptors.setDirectory(folder);
         descriptors.addInclude("**/*.xml");
-        project().addResource(descriptors);
+        scope().addResource(project(), descriptors);
     }
 }

@@ -15,23 +15,24 @@ import masl.translator.Translator;
 import masl.translator.diagnostics.Diagnostic;
 import masl.translator.diagnostics.DiagnosticPrinter;
 import masl.translator.source.SourceFile;
-import org.apache.maven.artifact.DependencyResolutionRequiredException;
 import org.apache.maven.plugin.MojoExecutionException;
 import org.apache.maven.plugin.MojoFailureException;
 
 /**
- * Translates every program of a project's {@code src/main/masl}, as {@code masl check} and
- * {@code masl compile} do: each program against the descriptors next to it, along the agent path and
- * on the class path, and each descriptor against its agent class, with the project's own Java compiled
- * first ({@link AgentClasses}). Every program's errors are reported in one failure, with masl's
+ * Translates every program of a project's {@code src/main/masl} or {@code src/test/masl}, as
+ * {@code masl check} and {@code masl compile} do: each program against the descriptors next to it,
+ * along the agent path and on the class path, and each descriptor against its agent class, with the
+ * project's own Java of that half compiled first ({@link AgentClasses}). Every program's errors are reported in one failure, with masl's
  * {@code file:line:column} diagnostics.
  */
 final class ProjectTranslation {
 
     private final ProgramsMojo mojo;
+    private final SourceScope scope;
 
-    ProjectTranslation(ProgramsMojo mojo) {
+    ProjectTranslation(ProgramsMojo mojo, SourceScope scope) {
         this.mojo = mojo;
+        this.scope = scope;
     }
 
     /**
@@ -40,9 +41,9 @@ final class ProjectTranslation {
      * @throws MojoFailureException naming each error of the programs, their descriptors or the project's Java
      */
     Map<String, String> translate(List<Path> programs) throws MojoExecutionException, MojoFailureException {
-        Path agentClasses = Path.of(mojo.project().getBuild().getDirectory(), "masl", "agent-classes");
-        List<Path> classPath = compileClassPath();
-        AgentClasses.compile(mojo.project().getCompileSourceRoots().stream().map(Path::of).toList(), classPath, agentClasses,
+        Path agentClasses = scope.agentClasses(mojo.project());
+        List<Path> classPath = scope.classPath(mojo.project());
+        AgentClasses.compile(scope.javaSourceRoots(mojo.project()).stream().map(Path::of).toList(), classPath, agentClasses,
                 sourceEncoding());
         List<Path> lookup = new ArrayList<>(List.of(agentClasses));
         lookup.addAll(classPath);
@@ -68,19 +69,6 @@ final class ProjectTranslation {
             throw new MojoFailureException("MASL translation failed:\n" + new DiagnosticPrinter(texts).report(errors));
         }
         return javaSources;
-    }
-
-    /**
-     * The project's compile class path without its own output folder, whose classes may be those of an
-     * earlier build: the agent classes compiled just now stand for them.
-     */
-    private List<Path> compileClassPath() throws MojoExecutionException {
-        try {
-            Path output = Path.of(mojo.project().getBuild().getOutputDirectory());
-            return mojo.project().getCompileClasspathElements().stream().map(Path::of).filter(entry -> !entry.equals(output)).toList();
-        } catch (DependencyResolutionRequiredException unresolved) {
-            throw new MojoExecutionException("the project's dependencies are not resolved", unresolved);
-        }
     }
 
     private String sourceEncoding() {

@@ -24,7 +24,8 @@ import org.junit.jupiter.params.provider.MethodSource;
  * with Maven 3.9), then a seeded
  * {@code masl:run} in the same build, of the mission printing its journal (Maven 3.9) or of a mission
  * that fails, failing with its status and the command that replays it (Debian's); and an error in a
- * mission and in a descriptor failing {@code masl:check} at their positions. Two builds per Maven: each
+ * mission and in a descriptor failing {@code masl:check} at their positions, and one in a mission of the
+ * tests failing the build before any test runs. Two builds per Maven: each
  * costs seconds of JVM start and of Maven's own plug-ins.
  */
 @Tag("slow")
@@ -74,11 +75,33 @@ class SampleProjectTest {
                 + "[ERROR] The same run again: mvn masl:run -Dmission=crash -Dseed=5\n"), output);
     }
 
+    @Test
+    void aMistakeInAMissionOfTheTestsFailsTheBuildAtItsPositionBeforeAnyTestRuns(@TempDir Path folder) throws Exception {
+        Path project = sample(folder);
+        Path mission = project.resolve("src/test/masl/click.masl");
+        Files.writeString(mission, Files.readString(mission).replace(".click());\n}", ".clack());\n}"));
+
+        Maven.Result build = Maven.current().run(project, "test");
+
+        assertEquals(1, build.status(), build.output());
+        String output = build.output();
+        assertTrue(output.contains("masl-maven-plugin:0.1.0:testCompile"), output);
+        assertTrue(output.lines().anyMatch(line -> line.matches("\\[ERROR\\] src/test/masl/click\\.masl:7:2[45]: error: .*clack.*")), output);
+        assertFalse(output.contains("T E S T S"), "no test runs:\n" + output);
+        assertTrue(Files.isDirectory(project.resolve("target/classes/masl/generated/count")), "the main code compiled first");
+    }
+
     /** The missions translated and compiled with the project's agent class, and the JUnit test of count green. */
     private static void assertTestsPassed(Path project, Maven.Result build) throws IOException {
-        assertTrue(build.output().contains("Tests run: 2, Failures: 0, Errors: 0, Skipped: 0"), build.output());
+        assertTrue(build.output().contains("Tests run: 3, Failures: 0, Errors: 0, Skipped: 0"), build.output());
         try (Stream<Path> generated = Files.list(project.resolve("target/generated-sources/masl/masl/generated/count"))) {
             assertTrue(generated.anyMatch(file -> file.toString().endsWith(".java")), "the mission's Java in its source root");
+        }
+        try (Stream<Path> generated = Files.list(project.resolve("target/generated-test-sources/masl/masl/generated/click"))) {
+            assertTrue(generated.anyMatch(file -> file.toString().endsWith(".java")), "the tests' mission's Java in the test source root");
+        }
+        try (Stream<Path> compiled = Files.list(project.resolve("target/test-classes/masl/generated/click"))) {
+            assertTrue(compiled.anyMatch(file -> file.toString().endsWith(".class")), "the tests' mission compiled with the tests");
         }
         assertTrue(Files.isRegularFile(project.resolve("target/classes/Counter.xml")), "the descriptor beside its class");
     }

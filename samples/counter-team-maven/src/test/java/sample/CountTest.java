@@ -7,6 +7,7 @@ import org.junit.jupiter.api.Test;
 class CountTest {
 
     private final MaslMission count = MaslMission.fromFile(Path.of("src/main/masl/count.masl"));
+    private final MaslMission click = MaslMission.fromFile(Path.of("src/test/masl/click.masl"));
 
     @Test
     void everyClickIsCounted() {
@@ -16,5 +17,10 @@ class CountTest {
     @Test
     void noClickIsLostUnderAnySchedule() {
         count.explore(200).assertEveryRun(run -> run.assertJournal("total=9\n"));
+    }
+
+    @Test
+    void aMissionOfTheTestsUsesTheAgentTypesOfTheMainCode() {
+        click.run().assertJournal("clicks=3\n");
     }
 }
