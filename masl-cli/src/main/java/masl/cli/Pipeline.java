@@ -6,12 +6,12 @@ import java.nio.charset.StandardCharsets;
 import java.util.Map;
 import java.util.Optional;
 import masl.runtime.descriptor.AgentPath;
+import masl.runtime.diagnostic.DiagnosticPrinter;
 import masl.translator.MissionLoader;
 import masl.translator.Translation;
 import masl.translator.Translator;
 import masl.translator.cache.CompiledMission;
 import masl.translator.cache.CompiledMissionCache;
-import masl.translator.diagnostics.DiagnosticPrinter;
 import masl.translator.source.SourceFile;
 
 /**

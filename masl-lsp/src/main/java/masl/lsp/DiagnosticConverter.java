@@ -1,6 +1,6 @@
 package masl.lsp;
 
-import masl.translator.diagnostics.Diagnostic;
+import masl.runtime.diagnostic.Diagnostic;
 import org.eclipse.lsp4j.DiagnosticSeverity;
 import org.eclipse.lsp4j.Position;
 import org.eclipse.lsp4j.Range;

@@ -53,10 +53,9 @@ class DiagnosticsTest {
         Diagnostic only = single(editor.diagnostics(editor.uri));
         String line = program.split("\n")[3];
         assertEquals(new Position(3, line.indexOf("undeclared")), only.getRange().getStart());
-        String frontEnd = new Frontend(AgentPath.parse("")).analyse(SourceFile.of("p.masl", program))
-                .diagnostics().sorted().get(0).toString();
-        assertEquals(line.codePointCount(0, line.indexOf("undeclared")) + 1, Integer.parseInt(
-                frontEnd.replaceAll(".*column=(\\d+).*", "$1")), "the front end counts code points");
+        int frontEndColumn = new Frontend(AgentPath.parse("")).analyse(SourceFile.of("p.masl", program))
+                .diagnostics().sorted().get(0).column();
+        assertEquals(line.codePointCount(0, line.indexOf("undeclared")) + 1, frontEndColumn, "the front end counts code points");
     }
 
     @Test

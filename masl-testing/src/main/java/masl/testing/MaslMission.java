@@ -11,12 +11,12 @@ import java.util.Optional;
 import java.util.stream.LongStream;
 import masl.runtime.MissionOutcome;
 import masl.runtime.descriptor.AgentPath;
+import masl.runtime.diagnostic.DiagnosticPrinter;
 import masl.runtime.scheduling.ReplayCommand;
 import masl.runtime.trace.MemoryTrace;
 import masl.translator.MissionLoader;
 import masl.translator.Translation;
 import masl.translator.Translator;
-import masl.translator.diagnostics.DiagnosticPrinter;
 import masl.translator.source.SourceFile;
 
 /**

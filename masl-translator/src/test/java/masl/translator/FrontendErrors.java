@@ -2,7 +2,7 @@ package masl.translator;
 
 import java.util.stream.Collectors;
 import masl.runtime.descriptor.AgentPath;
-import masl.translator.diagnostics.Diagnostic;
+import masl.runtime.diagnostic.Diagnostic;
 import masl.translator.source.SourceFile;
 
 /** The errors {@code masl check} reports for a program, as their headlines, one a line. */

@@ -2,6 +2,7 @@ package masl.runtime.descriptor;
 
 import java.util.List;
 import java.util.stream.Collectors;
+import masl.runtime.diagnostic.Diagnostic;
 
 /**
  * A descriptor (or a supertype it needs) could not be loaded. Unchecked, so that loading can sit in
@@ -12,10 +13,10 @@ public class DescriptorException extends RuntimeException {
 
     private static final long serialVersionUID = 1L;
 
-    private final List<DescriptorProblem> problems;
+    private final List<Diagnostic> problems;
 
     /** @throws IllegalArgumentException if {@code problems} is empty: an error without a problem is a bug */
-    public DescriptorException(List<DescriptorProblem> problems) {
+    public DescriptorException(List<Diagnostic> problems) {
         super(render(problems));
         if (problems.isEmpty()) {
             throw new IllegalArgumentException("a DescriptorException needs at least one problem");
@@ -24,11 +25,11 @@ public class DescriptorException extends RuntimeException {
     }
 
     /** The problems, each naming file, line, column and element; at least one. */
-    public List<DescriptorProblem> problems() {
+    public List<Diagnostic> problems() {
         return problems;
     }
 
-    private static String render(List<DescriptorProblem> problems) {
-        return problems.stream().map(DescriptorProblem::toString).collect(Collectors.joining("\n"));
+    private static String render(List<Diagnostic> problems) {
+        return problems.stream().map(Diagnostic::toString).collect(Collectors.joining("\n"));
     }
 }

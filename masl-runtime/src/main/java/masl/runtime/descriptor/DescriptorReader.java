@@ -24,6 +24,7 @@ import javax.xml.transform.stream.StreamSource;
 import javax.xml.validation.Schema;
 import javax.xml.validation.SchemaFactory;
 import javax.xml.validation.ValidatorHandler;
+import masl.runtime.diagnostic.Diagnostic;
 import masl.runtime.xml.SecureXml;
 import org.xml.sax.ErrorHandler;
 import org.xml.sax.Locator;
@@ -42,7 +43,7 @@ final class DescriptorReader {
     static final String SCHEMA_RESOURCE = "agent-type.xsd";
 
     /** The tree (null when the file is not well-formed or unreadable) and the problems found. */
-    record Result(XmlElement root, List<DescriptorProblem> problems) {
+    record Result(XmlElement root, List<Diagnostic> problems) {
     }
 
     private DescriptorReader() {
@@ -62,7 +63,7 @@ final class DescriptorReader {
      * bytes were validated before (see {@link DescriptorLoader#readingValidated}).
      */
     static Result read(DescriptorSource source, boolean validate) {
-        List<DescriptorProblem> problems = new ArrayList<>();
+        List<Diagnostic> problems = new ArrayList<>();
         String file = source.displayName();
         try (InputStream in = source.open()) {
             XMLStreamReader reader = SecureXml.reader(source.uri().toString(), in);
@@ -75,9 +76,9 @@ final class DescriptorReader {
             problems.add(notWellFormed(file, e, source));
         } catch (IOException e) {
             String reason = e instanceof FileNotFoundException ? "file not found" : "cannot read the descriptor: " + e;
-            problems.add(new DescriptorProblem(file, 0, 0, reason));
+            problems.add(Diagnostic.error(file, 0, 0, reason));
         } catch (SAXException e) {
-            problems.add(new DescriptorProblem(file, 0, 0, "schema validation failed: " + e.getMessage()));
+            problems.add(Diagnostic.error(file, 0, 0, "schema validation failed: " + e.getMessage()));
         }
         return new Result(null, problems);
     }
@@ -102,7 +103,7 @@ final class DescriptorReader {
         }
     }
 
-    private static XmlElement readValidating(XMLStreamReader reader, String file, List<DescriptorProblem> problems,
+    private static XmlElement readValidating(XMLStreamReader reader, String file, List<Diagnostic> problems,
             boolean validate) throws XMLStreamException, SAXException {
         Deque<ElementBuilder> open = new ArrayDeque<>();
         ProblemCollector collector = new ProblemCollector(file, problems);
@@ -166,7 +167,7 @@ final class DescriptorReader {
      * The parser's problem at its position; one it gives without a position (a byte sequence that is
      * not UTF-8, found by the decoder under the parser) is placed at the first such byte.
      */
-    private static DescriptorProblem notWellFormed(String file, XMLStreamException e, DescriptorSource source) {
+    private static Diagnostic notWellFormed(String file, XMLStreamException e, DescriptorSource source) {
         int line = SecureXml.lineOf(e);
         int column = SecureXml.columnOf(e);
         if (line == 0) {
@@ -174,7 +175,7 @@ final class DescriptorReader {
             line = position[0];
             column = position[1];
         }
-        return new DescriptorProblem(file, line, column, "not well-formed XML: " + SecureXml.messageOf(e));
+        return Diagnostic.error(file, line, column, "not well-formed XML: " + SecureXml.messageOf(e));
     }
 
     /** Line and column (from 1) of the first byte of {@code source} that is not UTF-8, or of its start if none. */
@@ -299,11 +300,11 @@ final class DescriptorReader {
     /** Collects every validation error (validation goes on after one) as a rephrased problem. */
     private static final class ProblemCollector implements ErrorHandler {
         private final String file;
-        private final List<DescriptorProblem> problems;
+        private final List<Diagnostic> problems;
         /** The element the validator is at: being started, holding text, or just completed. */
         ElementBuilder validating;
 
-        ProblemCollector(String file, List<DescriptorProblem> problems) {
+        ProblemCollector(String file, List<Diagnostic> problems) {
             this.file = file;
             this.problems = problems;
         }
@@ -321,7 +322,7 @@ final class DescriptorReader {
             }
             String element = validating == null ? "" : validating.name;
             Map<String, String> attributes = validating == null ? Map.of() : validating.attributes;
-            problems.add(new DescriptorProblem(file, Math.max(exception.getLineNumber(), 1),
+            problems.add(Diagnostic.error(file, Math.max(exception.getLineNumber(), 1),
                     Math.max(exception.getColumnNumber(), 1), SchemaMessages.rephrase(message, element, attributes)));
         }
 

@@ -3,12 +3,13 @@ package masl.runtime.descriptor;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import masl.runtime.diagnostic.Diagnostic;
 
 /** The problems found in one descriptor file, collected as the checks go. */
 final class Problems {
 
     private final String file;
-    private final List<DescriptorProblem> found = new ArrayList<>();
+    private final List<Diagnostic> found = new ArrayList<>();
 
     Problems(String file) {
         this.file = file;
@@ -24,10 +25,10 @@ final class Problems {
     }
 
     void at(int line, int column, String message) {
-        found.add(new DescriptorProblem(file, line, column, message));
+        found.add(Diagnostic.error(file, line, column, message));
     }
 
-    void addAll(List<DescriptorProblem> problems) {
+    void addAll(List<Diagnostic> problems) {
         found.addAll(problems);
     }
 
@@ -39,10 +40,10 @@ final class Problems {
      * This file's problems sorted by position (stable: at one position they keep the finding order),
      * then those of other files (a supertype's) in the order they were added.
      */
-    List<DescriptorProblem> inFileOrder() {
-        List<DescriptorProblem> sorted = new ArrayList<>();
+    List<Diagnostic> inFileOrder() {
+        List<Diagnostic> sorted = new ArrayList<>();
         found.stream().filter(problem -> problem.file().equals(file))
-                .sorted(Comparator.comparingInt(DescriptorProblem::line).thenComparingInt(DescriptorProblem::column))
+                .sorted(Comparator.comparingInt(Diagnostic::line).thenComparingInt(Diagnostic::column))
                 .forEach(sorted::add);
         found.stream().filter(problem -> !problem.file().equals(file)).forEach(sorted::add);
         return sorted;

@@ -10,6 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import masl.runtime.diagnostic.Diagnostic;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -27,7 +28,7 @@ class DescriptorErrorsTest {
     @TempDir
     Path folder;
 
-    private List<DescriptorProblem> load(String xml) {
+    private List<Diagnostic> load(String xml) {
         Path file = write(folder, "T.xml", xml);
         return problemsOf(() -> TestDescriptors.loader().load(file));
     }
@@ -36,7 +37,7 @@ class DescriptorErrorsTest {
         return folder.resolve("T.xml");
     }
 
-    private List<DescriptorProblem> loadKheperaWith(String body) {
+    private List<Diagnostic> loadKheperaWith(String body) {
         return load(agent(KHEPERA, body));
     }
 
@@ -44,7 +45,7 @@ class DescriptorErrorsTest {
 
     @Test
     void notWellFormed() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Class name="java.util.List">
                 """);
         // Woodstox places the error inside the unexpected close tag.
@@ -59,7 +60,7 @@ class DescriptorErrorsTest {
     @Test
     void missingFile() {
         Path absent = folder.resolve("Absent.xml");
-        DescriptorProblem problem = problemsOf(() -> TestDescriptors.loader().load(absent)).get(0);
+        Diagnostic problem = problemsOf(() -> TestDescriptors.loader().load(absent)).get(0);
         assertEquals(absent.toString(), problem.file());
         assertEquals(0, problem.line());
         assertEquals(absent + ": error: file not found", problem.toString());
@@ -67,7 +68,7 @@ class DescriptorErrorsTest {
 
     @Test
     void elementInANamespaceIsNotADescriptorElement() {
-        List<DescriptorProblem> problems = load("""
+        List<Diagnostic> problems = load("""
                 <?xml version="1.0"?>
                 <m:Agent xmlns:m="urn:masl" short_class_name="T" full_class_name="masl.runtime.descriptor.fixtures.Robot"/>
                 """);
@@ -76,14 +77,14 @@ class DescriptorErrorsTest {
 
     @Test
     void problemPrintsAsFileLineColumn() {
-        assertEquals("a/T.xml:3:5: error: boom", new DescriptorProblem("a/T.xml", 3, 5, "boom").toString());
-        assertEquals("a/T.xml:3: error: boom", new DescriptorProblem("a/T.xml", 3, 0, "boom").toString());
-        assertEquals("a/T.xml: error: boom", new DescriptorProblem("a/T.xml", 0, 0, "boom").toString());
+        assertEquals("a/T.xml:3:5: error: boom", Diagnostic.error("a/T.xml", 3, 5, "boom").toString());
+        assertEquals("a/T.xml:3: error: boom", Diagnostic.error("a/T.xml", 3, 0, "boom").toString());
+        assertEquals("a/T.xml: error: boom", Diagnostic.error("a/T.xml", 0, 0, "boom").toString());
     }
 
     @Test
     void unknownAttribute() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Attribute attribute_name="battery" member_id="A1" attribute_class="int" colour="red"/>
                 """);
         assertSingleProblem(problems, file(), 3, 3, "<Attribute>: unknown attribute 'colour'");
@@ -91,7 +92,7 @@ class DescriptorErrorsTest {
 
     @Test
     void missingAttribute() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Primitive function_name="stopGripper" synchronous_call="false" return_type_name="void"/>
                 """);
         assertSingleProblem(problems, file(), 3, 3, "<Primitive>: missing attribute 'member_id'");
@@ -103,7 +104,7 @@ class DescriptorErrorsTest {
         Locale before = Locale.getDefault();
         Locale.setDefault(Locale.forLanguageTag(language));
         try {
-            List<DescriptorProblem> problems = loadKheperaWith("""
+            List<Diagnostic> problems = loadKheperaWith("""
                       <Attribute attribute_name="battery" member_id="A1" attribute_class="int" colour="red"/>
                       <Permeability permeability_name="open" umask="8"/>
                       <Sensor/>
@@ -120,7 +121,7 @@ class DescriptorErrorsTest {
 
     @Test
     void missingAttributeOfAgent() {
-        List<DescriptorProblem> problems = load("""
+        List<Diagnostic> problems = load("""
                 <?xml version="1.0"?>
                 <Agent full_class_name="masl.runtime.descriptor.fixtures.Khepera"/>
                 """);
@@ -129,7 +130,7 @@ class DescriptorErrorsTest {
 
     @Test
     void unknownElement() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Attribute attribute_name="battery" member_id="A1" attribute_class="int"/>
                   <Sensor name="sonar"/>
                 """);
@@ -139,7 +140,7 @@ class DescriptorErrorsTest {
 
     @Test
     void rootElementMustBeAgent() {
-        List<DescriptorProblem> problems = load("""
+        List<Diagnostic> problems = load("""
                 <?xml version="1.0"?>
                 <Robot short_class_name="T"/>
                 """);
@@ -148,7 +149,7 @@ class DescriptorErrorsTest {
 
     @Test
     void textIsNotAllowed() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   hello
                 """);
         assertEquals(1, problems.size(), () -> TestDescriptors.render(problems));
@@ -158,7 +159,7 @@ class DescriptorErrorsTest {
     @ParameterizedTest
     @CsvSource({"88", "1111", "64", "rw-"})
     void rightsMustBeThreeOctalDigits(String rights) {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Permeability permeability_name="open" umask="000">
                     <Member member_id="D1" rights="%s"/>
                   </Permeability>
@@ -169,7 +170,7 @@ class DescriptorErrorsTest {
 
     @Test
     void umaskMustBeThreeOctalDigits() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Permeability permeability_name="open" umask="9"/>
                 """);
         assertSingleProblem(problems, file(), 3, 3,
@@ -178,7 +179,7 @@ class DescriptorErrorsTest {
 
     @Test
     void booleanAttributeMustBeTrueOrFalse() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Primitive function_name="stopGripper" member_id="P3" synchronous_call="yes"
                              return_type_name="void"/>
                 """);
@@ -188,7 +189,7 @@ class DescriptorErrorsTest {
 
     @Test
     void unknownModifier() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Attribute attribute_name="battery" member_id="A1" attribute_class="int">
                     <Modifier modifier_name="volatile"/>
                   </Attribute>
@@ -201,7 +202,7 @@ class DescriptorErrorsTest {
 
     @Test
     void duplicateMemberId() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Attribute attribute_name="battery" member_id="A1" attribute_class="int"/>
                   <Primitive function_name="stopGripper" member_id="A1" synchronous_call="false" return_type_name="void"/>
                 """);
@@ -211,7 +212,7 @@ class DescriptorErrorsTest {
 
     @Test
     void duplicateMemberName() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Primitive function_name="stopGripper" member_id="P3" synchronous_call="false" return_type_name="void"/>
                   <Attribute attribute_name="stopGripper" member_id="A9" attribute_class="int"/>
                 """);
@@ -221,7 +222,7 @@ class DescriptorErrorsTest {
 
     @Test
     void duplicateStateName() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Permeability permeability_name="open" umask="000"/>
                   <Permeability permeability_name="open" umask="777"/>
                 """);
@@ -231,7 +232,7 @@ class DescriptorErrorsTest {
 
     @Test
     void memberListedTwiceInAState() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Permeability permeability_name="open" umask="000">
                     <Member member_id="D1" rights="111"/>
                     <Member member_id="D1" rights="100"/>
@@ -242,7 +243,7 @@ class DescriptorErrorsTest {
 
     @Test
     void memberNamingAnUnknownId() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Permeability permeability_name="open" umask="000">
                     <Member member_id="D1" rights="111"/>
                     <Member member_id="P9" rights="111"/>
@@ -254,7 +255,7 @@ class DescriptorErrorsTest {
 
     @Test
     void countermeasureNamingNoPrimitive() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Primitive function_name="startGripper" member_id="P2" synchronous_call="false"
                              return_type_name="void" countermeasure="dropGripper"/>
                 """);
@@ -264,7 +265,7 @@ class DescriptorErrorsTest {
 
     @Test
     void countermeasureNamingItself() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Primitive function_name="startGripper" member_id="P2" synchronous_call="false"
                              return_type_name="void" countermeasure="startGripper"/>
                 """);
@@ -273,7 +274,7 @@ class DescriptorErrorsTest {
 
     @Test
     void countermeasureOnASynchronousPrimitive() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Primitive function_name="startGripper" member_id="P2" synchronous_call="true"
                              return_type_name="void" countermeasure="nop"/>
                 """);
@@ -282,7 +283,7 @@ class DescriptorErrorsTest {
 
     @Test
     void countermeasureTakingParameters() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Primitive function_name="startGripper" member_id="P2" synchronous_call="false"
                              return_type_name="void" countermeasure="log"/>
                 """);
@@ -291,7 +292,7 @@ class DescriptorErrorsTest {
 
     @Test
     void everyProblemOfAFileIsReportedInFileOrder() {
-        List<DescriptorProblem> problems = loadKheperaWith("""
+        List<Diagnostic> problems = loadKheperaWith("""
                   <Attribute attribute_name="battery" member_id="A1" attribute_class="int" colour="red"/>
                   <Primitive function_name="fly" member_id="P8" synchronous_call="true" return_type_name="void"/>
                   <Permeability permeability_name="open" umask="000">

@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
+import masl.runtime.diagnostic.Diagnostic;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -24,7 +25,7 @@ class FipaBindingTest {
         return folder.resolve("T.xml");
     }
 
-    private List<DescriptorProblem> problems(String body) {
+    private List<Diagnostic> problems(String body) {
         Path file = write(folder, "T.xml", agent(ROBOT, body));
         return problemsOf(() -> TestDescriptors.loader().load(file));
     }

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.nio.file.Path;
 import java.util.List;
+import masl.runtime.diagnostic.Diagnostic;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -21,12 +22,12 @@ class ImplementationErrorsTest {
 
     private Path file;
 
-    private List<DescriptorProblem> load(String className, String body) {
+    private List<Diagnostic> load(String className, String body) {
         file = write(folder, "T.xml", agent(className, body));
         return problemsOf(() -> TestDescriptors.loader().load(file));
     }
 
-    private List<DescriptorProblem> loadKheperaWith(String body) {
+    private List<Diagnostic> loadKheperaWith(String body) {
         return load(FIXTURES + "Khepera", body);
     }
 

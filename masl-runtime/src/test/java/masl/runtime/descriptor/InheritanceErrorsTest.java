@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.nio.file.Path;
 import java.util.List;
+import masl.runtime.diagnostic.Diagnostic;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -62,7 +63,7 @@ class InheritanceErrorsTest {
                 <Agent short_class_name="K" full_class_name="masl.runtime.descriptor.fixtures.Khepera"
                        super_full_class_name="masl.runtime.descriptor.fixtures.Robot"/>
                 """);
-        List<DescriptorProblem> problems = problemsOf(() -> TestDescriptors.loader().load(robot));
+        List<Diagnostic> problems = problemsOf(() -> TestDescriptors.loader().load(robot));
         assertEquals(2, problems.size(), () -> TestDescriptors.render(problems));
         assertProblem(problems.get(0), robot, 2, 1, "supertype 'masl.runtime.descriptor.fixtures.Khepera'",
                 "has errors");
@@ -90,7 +91,7 @@ class InheritanceErrorsTest {
                 </Agent>
                 """);
         Path file = kheperaUnderRobot("");
-        List<DescriptorProblem> problems = problemsOf(() -> TestDescriptors.loader().load(file));
+        List<Diagnostic> problems = problemsOf(() -> TestDescriptors.loader().load(file));
         assertEquals(2, problems.size(), () -> TestDescriptors.render(problems));
         assertProblem(problems.get(0), file, 2, 1, "supertype 'masl.runtime.descriptor.fixtures.Robot' (" + broken
                 + ") has errors");
@@ -153,7 +154,7 @@ class InheritanceErrorsTest {
         Path file = kheperaUnderRobot("""
                   <Attribute attribute_name="move" member_id="R1" attribute_class="int"/>
                 """);
-        List<DescriptorProblem> problems = problemsOf(() -> TestDescriptors.loader().load(file));
+        List<Diagnostic> problems = problemsOf(() -> TestDescriptors.loader().load(file));
         assertEquals(2, problems.size(), () -> TestDescriptors.render(problems));
         assertProblem(problems.get(0), file, 4, 3, "attribute 'move' has the name of a primitive inherited from Robot");
         assertProblem(problems.get(1), file, 4, 3, "has no public field int move");

@@ -10,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Random;
+import masl.runtime.diagnostic.Diagnostic;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -64,7 +65,7 @@ class RobustnessTest {
             load(text);
             fail("a descriptor that is not UTF-8 was accepted");
         } catch (DescriptorException expected) {
-            DescriptorProblem problem = expected.problems().get(0);
+            Diagnostic problem = expected.problems().get(0);
             assertEquals(3, problem.line(), problem::toString);
             assertEquals(27, problem.column(), problem::toString);
         }

@@ -12,6 +12,7 @@ import java.net.Socket;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
+import masl.runtime.diagnostic.Diagnostic;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -83,7 +84,7 @@ class SecureReadingTest {
                 <!DOCTYPE Agent [<!ENTITY x SYSTEM "%s">]>
                 <Agent short_class_name="&x;" full_class_name="masl.runtime.descriptor.fixtures.Robot"/>
                 """.formatted(secret.toUri()));
-        List<DescriptorProblem> problems = problemsOf(() -> TestDescriptors.loader().load(file));
+        List<Diagnostic> problems = problemsOf(() -> TestDescriptors.loader().load(file));
         assertRefused(problems, file, 3);
     }
 
@@ -95,7 +96,7 @@ class SecureReadingTest {
                 <!DOCTYPE Agent [<!ENTITY x SYSTEM "%s">]>
                 <Agent short_class_name="X" full_class_name="masl.runtime.descriptor.fixtures.Robot">&x;</Agent>
                 """.formatted(secret.toUri()));
-        List<DescriptorProblem> problems = problemsOf(() -> TestDescriptors.loader().load(file));
+        List<Diagnostic> problems = problemsOf(() -> TestDescriptors.loader().load(file));
         assertRefused(problems, file, 3);
     }
 
@@ -110,9 +111,9 @@ class SecureReadingTest {
         assertRefused(problemsOf(() -> TestDescriptors.loader().load(file)), file, 3);
     }
 
-    private static void assertRefused(List<DescriptorProblem> problems, Path file, int line) {
+    private static void assertRefused(List<Diagnostic> problems, Path file, int line) {
         assertEquals(1, problems.size(), () -> TestDescriptors.render(problems));
-        DescriptorProblem problem = problems.get(0);
+        Diagnostic problem = problems.get(0);
         assertEquals(file.toString(), problem.file());
         assertEquals(line, problem.line());
         assertTrue(problem.message().contains("entity"), problem.message());

@@ -11,6 +11,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import masl.runtime.diagnostic.Diagnostic;
 import org.junit.jupiter.api.function.Executable;
 
 /** Shared by the descriptor tests: the fixture descriptors, a loader over them, problem assertions. */
@@ -52,18 +53,18 @@ final class TestDescriptors {
     }
 
     /** The problems of a loading that must fail. */
-    static List<DescriptorProblem> problemsOf(Executable loading) {
+    static List<Diagnostic> problemsOf(Executable loading) {
         return assertThrows(DescriptorException.class, loading).problems();
     }
 
     /** Asserts there is exactly one problem, at {@code file:line:column}, whose message contains each fragment. */
-    static DescriptorProblem assertSingleProblem(List<DescriptorProblem> problems, Path file, int line, int column,
+    static Diagnostic assertSingleProblem(List<Diagnostic> problems, Path file, int line, int column,
             String... fragments) {
         assertEquals(1, problems.size(), () -> "expected one problem, got:\n" + render(problems));
         return assertProblem(problems.get(0), file, line, column, fragments);
     }
 
-    static DescriptorProblem assertProblem(DescriptorProblem problem, Path file, int line, int column,
+    static Diagnostic assertProblem(Diagnostic problem, Path file, int line, int column,
             String... fragments) {
         assertEquals(file.toString(), problem.file(), problem::toString);
         assertEquals(line, problem.line(), problem::toString);
@@ -75,8 +76,8 @@ final class TestDescriptors {
         return problem;
     }
 
-    static String render(List<DescriptorProblem> problems) {
-        return String.join("\n", problems.stream().map(DescriptorProblem::toString).toList());
+    static String render(List<Diagnostic> problems) {
+        return String.join("\n", problems.stream().map(Diagnostic::toString).toList());
     }
 
     /** A minimal valid descriptor of the fixture root's subtype, with {@code body} inside {@code <Agent>}. */

@@ -14,9 +14,7 @@ import masl.grammar.MASLParser;
 import masl.runtime.descriptor.AgentType;
 import masl.runtime.descriptor.DescriptorException;
 import masl.runtime.descriptor.DescriptorLoader;
-import masl.runtime.descriptor.DescriptorProblem;
 import masl.runtime.descriptor.DescriptorSource;
-import masl.translator.diagnostics.Diagnostic;
 import masl.translator.diagnostics.Suggestions;
 import masl.translator.parse.Literals;
 import org.antlr.v4.runtime.CommonTokenStream;
@@ -220,10 +218,7 @@ final class HeaderChecker {
             }
             return descriptors.load(source.get());
         } catch (DescriptorException invalid) {
-            for (DescriptorProblem problem : invalid.problems()) {
-                errors.diagnostics().add(new Diagnostic(problem.file(), problem.line(), problem.column(),
-                        problem.message()));
-            }
+            invalid.problems().forEach(errors.diagnostics()::add);
             errors.at(where, "descriptor " + file + " has errors");
             return null;
         } catch (InvalidPathException impossiblePath) {

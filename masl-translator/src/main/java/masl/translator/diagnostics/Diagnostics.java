@@ -5,6 +5,7 @@ import java.util.Collections;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
+import masl.runtime.diagnostic.Diagnostic;
 
 /**
  * Collects every error of a run, so a user sees all of them at once rather than the first only.
@@ -15,7 +16,7 @@ public final class Diagnostics {
     private final Set<Diagnostic> reported = new LinkedHashSet<>();
 
     public void error(String file, int line, int column, String message) {
-        reported.add(new Diagnostic(file, line, column, message));
+        reported.add(Diagnostic.error(file, line, column, message));
     }
 
     public void add(Diagnostic diagnostic) {

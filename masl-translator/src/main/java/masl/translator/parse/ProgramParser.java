@@ -26,7 +26,7 @@ import org.antlr.v4.runtime.misc.ParseCancellationException;
 
 /**
  * Parses a MASL program with the ANTLR grammar and turns every syntax error into a positioned
- * {@link masl.translator.diagnostics.Diagnostic} in the user's words. Every syntax error of a file
+ * {@link masl.runtime.diagnostic.Diagnostic} in the user's words. Every syntax error of a file
  * is reported in one run, each once: {@link TokenRepairs} first reports and repairs the mistakes a
  * reader sees at a glance (a misspelt keyword, a Java habit, a brace missing by the indentation), then
  * ANTLR's recovery ({@link RecoveryStrategy}) goes on after each remaining error.

@@ -8,7 +8,7 @@ import java.util.List;
 import java.util.stream.Collectors;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.descriptor.DescriptorLoader;
-import masl.translator.diagnostics.Diagnostic;
+import masl.runtime.diagnostic.Diagnostic;
 import masl.translator.diagnostics.Diagnostics;
 import masl.translator.parse.ProgramParser;
 import masl.translator.source.SourceFile;

@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
-import masl.translator.diagnostics.Diagnostic;
+import masl.runtime.diagnostic.Diagnostic;
 import org.junit.jupiter.api.Test;
 
 /** Errors in the program's headers: descriptors, agent types, agents and Entry declarations (MASL §3, §4). */

@@ -6,10 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.stream.Collectors;
 import masl.runtime.descriptor.AgentPath;
+import masl.runtime.diagnostic.Diagnostic;
 import masl.runtime.scheduling.SeededScheduler;
 import masl.translator.MissionLoader;
 import masl.translator.Translation;
-import masl.translator.diagnostics.Diagnostic;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 

@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.util.List;
-import masl.translator.diagnostics.Diagnostic;
+import masl.runtime.diagnostic.Diagnostic;
 import masl.translator.diagnostics.Diagnostics;
 import masl.translator.source.SourceFile;
 import org.junit.jupiter.api.Test;
@@ -72,8 +72,8 @@ class LiteralsTest {
                 + "scalar entry main (true) {\n  .logln(\"a\\u0022); System.exit(5); //\");\n  .logln('\\u0027');\n}\n"),
                 diagnostics);
         assertEquals(List.of(
-                new Diagnostic("p.masl", 4, 12, "\\u0022 is \", which Java reads as the end of the string: write \\\""),
-                new Diagnostic("p.masl", 5, 11,
+                Diagnostic.error("p.masl", 4, 12, "\\u0022 is \", which Java reads as the end of the string: write \\\""),
+                Diagnostic.error("p.masl", 5, 11,
                         "\\u0027 is ', which Java reads as the end of the character literal: write \\'")),
                 diagnostics.sorted());
     }
@@ -83,7 +83,7 @@ class LiteralsTest {
         Diagnostics diagnostics = new Diagnostics();
         ProgramParser.parse(SourceFile.of("p.masl", HEADER
                 + "scalar entry main (true) {\n  .logln(\"\uD83D\uDE00\\u000a\");\n}\n"), diagnostics);
-        assertEquals(List.of(new Diagnostic("p.masl", 4, 12, "\\u000a is a line break, which ends the line in Java"
+        assertEquals(List.of(Diagnostic.error("p.masl", 4, 12, "\\u000a is a line break, which ends the line in Java"
                 + " before the string is read: write \\n")), diagnostics.sorted());
     }
 

@@ -3,7 +3,7 @@ package masl.translator.parse;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.List;
-import masl.translator.diagnostics.Diagnostic;
+import masl.runtime.diagnostic.Diagnostic;
 import masl.translator.diagnostics.Diagnostics;
 import masl.translator.source.SourceFile;
 import org.junit.jupiter.api.Test;
@@ -20,7 +20,7 @@ class SyntaxErrorTest {
     }
 
     private static void assertSingleError(String program, int line, int column, String message) {
-        assertEquals(List.of(new Diagnostic("p.masl", line, column, message)), errorsOf(program));
+        assertEquals(List.of(Diagnostic.error("p.masl", line, column, message)), errorsOf(program));
     }
 
     @Test
@@ -49,7 +49,7 @@ class SyntaxErrorTest {
 
     @Test
     void unterminatedString() {
-        assertEquals(new Diagnostic("p.masl", 4, 8, "unterminated string literal"),
+        assertEquals(Diagnostic.error("p.masl", 4, 8, "unterminated string literal"),
                 errorsOf(HEADER + "scalar entry main (true) {\n  .log(\"hello);\n}\n").get(0));
     }
 
@@ -99,8 +99,8 @@ class SyntaxErrorTest {
                 + "  .log(#);\n"
                 + "}\n");
         assertEquals(List.of(
-                new Diagnostic("p.masl", 4, 12, "expected ';'"),
-                new Diagnostic("p.masl", 6, 13, "unexpected '=', expected a name"),
-                new Diagnostic("p.masl", 7, 8, "unexpected character '#'")), errors);
+                Diagnostic.error("p.masl", 4, 12, "expected ';'"),
+                Diagnostic.error("p.masl", 6, 13, "unexpected '=', expected a name"),
+                Diagnostic.error("p.masl", 7, 8, "unexpected character '#'")), errors);
     }
 }

@@ -1,4 +1,4 @@
-package masl.translator.diagnostics;
+package masl.runtime.diagnostic;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -7,8 +7,10 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.util.EnumMap;
 import java.util.HashMap;
 import java.util.Map;
+import java.util.stream.Collectors;
 
 /**
  * Renders diagnostics as compilers do: the headline, the offending source line, and a caret under
@@ -75,14 +77,16 @@ public final class DiagnosticPrinter {
         return text.toString(StandardCharsets.UTF_8);
     }
 
+    /** Each diagnostic rendered, then how many errors and warnings there were ({@code 2 errors, 1 warning}). */
     public void print(Iterable<Diagnostic> diagnostics, PrintStream err) {
-        int count = 0;
+        Map<Severity, Integer> counts = new EnumMap<>(Severity.class);
         for (Diagnostic diagnostic : diagnostics) {
             err.print(render(diagnostic));
-            count++;
+            counts.merge(diagnostic.severity(), 1, Integer::sum);
         }
-        if (count > 0) {
-            err.println(count + (count == 1 ? " error" : " errors"));
+        if (!counts.isEmpty()) {
+            err.println(counts.entrySet().stream().map(count -> count.getValue() + " " + count.getKey().word()
+                    + (count.getValue() == 1 ? "" : "s")).collect(Collectors.joining(", ")));
         }
     }
 
