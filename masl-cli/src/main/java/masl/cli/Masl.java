@@ -6,6 +6,7 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
 import java.util.Map;
 import masl.runtime.descriptor.AgentPath;
 import masl.translator.cache.CompiledMissionCache;
@@ -161,13 +162,20 @@ public final class Masl {
         if (line.outputFolder == null) {
             throw new UsageException("masl compile needs -d DIR, the folder to write the Java sources into");
         }
-        Pipeline.Loaded loaded = Pipeline.load(source, AgentPath.parse(line.agentPath), err, progress);
+        AgentPath agentPath = AgentPath.parse(line.agentPath);
+        Pipeline.Loaded loaded = Pipeline.load(source, agentPath, err, progress);
         if (loaded == null) {
             return PROGRAM_ERRORS;
         }
         Path folder = Path.of(line.outputFolder);
-        for (Map.Entry<String, String> unit : loaded.translation().javaSources().entrySet()) {
-            Path file = folder.resolve(unit.getKey().replace('.', '/') + ".java");
+        Map<Path, String> files = new LinkedHashMap<>();
+        loaded.translation().javaSources().forEach((name, text) -> files.put(folder.resolve(name.replace('.', '/') + ".java"), text));
+        CommandInputs inputs = CommandInputs.ofProgram(source, agentPath);
+        for (Path file : files.keySet()) {
+            inputs.refuseOverwriting("the Java source", file);
+        }
+        for (Map.Entry<Path, String> unit : files.entrySet()) {
+            Path file = unit.getKey();
             try {
                 Files.createDirectories(file.getParent());
                 Files.writeString(file, unit.getValue());

@@ -7,6 +7,7 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.LinkedHashSet;
+import java.util.List;
 import java.util.Set;
 import masl.runtime.MissionOutcome;
 import masl.runtime.descriptor.AgentPath;
@@ -16,6 +17,7 @@ import masl.sim.scenario.ScenarioException;
 import masl.sim.scenario.ScenarioLoader;
 import masl.sim.scenario.ScenarioRunner;
 import masl.sim.scenario.SimulationResult;
+import masl.sim.xode.XodeSource;
 import masl.translator.source.SourceFile;
 
 /**
@@ -78,6 +80,7 @@ final class SimRun {
             return Masl.PROGRAM_ERRORS;
         }
         Path output = outputFolder(line.outputFolder, scenarioFile);
+        refuseOverwritingInputs(output, scenarioFile, scenario, source, agentPath);
         String unwritable = OutputFolder.cannotWrite(output);
         if (unwritable != null) {
             err.println("masl: cannot write the simulation's output to " + output + ": " + unwritable);
@@ -186,6 +189,21 @@ final class SimRun {
             err.println(outcome.report().stripTrailing());
         }
         return Masl.MISSION_FAILED;
+    }
+
+    /** None of the files written to {@code output} may be one the run reads. */
+    private static void refuseOverwritingInputs(Path output, Path scenarioFile, Scenario scenario, SourceFile source,
+            AgentPath agentPath) throws UsageException {
+        CommandInputs inputs = CommandInputs.ofProgram(source, agentPath).add("the scenario", scenarioFile);
+        scenario.worlds().forEach(world -> world.file().ifPresent(file -> inputs.add("the world", file)));
+        for (Scenario.Agent agent : scenario.agents()) {
+            agent.descriptor().ifPresent(file -> inputs.add("the descriptor", file));
+            agent.body().flatMap(XodeSource::file).ifPresent(file -> inputs.add("the body", file));
+        }
+        for (String name : List.of(ScenarioRunner.TRAJECTORIES, ScenarioRunner.EVENTS, ScenarioRunner.TRACE,
+                ScenarioRunner.JOURNAL, ScenarioRunner.PICTURE)) {
+            inputs.refuseOverwriting("the output", output.resolve(name));
+        }
     }
 
     private static String agentPathWithDescriptors(Scenario scenario, String userPath) {

@@ -33,6 +33,7 @@ final class TimelineCommand {
         if (!Files.isRegularFile(trace)) {
             throw new UsageException(traceName + ": no such file");
         }
+        new CommandInputs().add("the trace", trace).refuseOverwriting("the page", page);
         List<TraceRecord> records;
         try (Reader text = Files.newBufferedReader(trace, StandardCharsets.UTF_8)) {
             records = TraceReader.read(traceName, text);

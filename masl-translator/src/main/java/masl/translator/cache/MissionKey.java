@@ -3,14 +3,10 @@ package masl.translator.cache;
 import java.io.File;
 import java.io.IOException;
 import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.HexFormat;
 import java.util.List;
 import java.util.TreeSet;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
-import java.util.stream.Stream;
 import masl.runtime.MissionProgram;
 import masl.runtime.descriptor.AgentPath;
 import masl.translator.MaslClassPath;
@@ -35,8 +31,6 @@ import masl.translator.source.SourceFile;
  */
 final class MissionKey {
 
-    /** A descriptor path as the source may write it, quoted or not: a superset of its imports and types. */
-    private static final Pattern DESCRIPTOR_PATH = Pattern.compile("\"([^\"]*\\.xml)\"|([^\\s;\"]+\\.xml)");
     private static final String FORMAT = "masl compiled mission 1";
     private static byte[] installation;
 
@@ -47,9 +41,9 @@ final class MissionKey {
     static String of(SourceFile source, AgentPath agentPath) throws IOException {
         Fingerprint key = new Fingerprint().add(FORMAT).add(installation());
         key.add(source.name()).add(String.valueOf(source.folder())).add(source.text());
-        for (Path folder : descriptorFolders(source)) {
+        for (Path folder : MissionInputs.descriptorFolders(source)) {
             key.add(folder.toString());
-            for (Path file : xmlFilesIn(folder)) {
+            for (Path file : MissionInputs.xmlFilesIn(folder)) {
                 key.add(file.getFileName().toString()).addContent(file);
             }
         }
@@ -64,40 +58,6 @@ final class MissionKey {
             }
         }
         return HexFormat.of().formatHex(key.digest());
-    }
-
-    /** The program's folder and the folders of the descriptor paths its text names, relative to it or absolute. */
-    private static TreeSet<Path> descriptorFolders(SourceFile source) {
-        TreeSet<Path> folders = new TreeSet<>();
-        Path programFolder = source.folder();
-        if (programFolder != null) {
-            folders.add(programFolder.toAbsolutePath().normalize());
-        }
-        Matcher paths = DESCRIPTOR_PATH.matcher(source.text());
-        while (paths.find()) {
-            String written = paths.group(1) != null ? paths.group(1) : paths.group(2);
-            try {
-                Path path = Path.of(written);
-                Path file = path.isAbsolute() || programFolder == null ? path : programFolder.resolve(path);
-                Path folder = file.toAbsolutePath().normalize().getParent();
-                if (folder != null) {
-                    folders.add(folder);
-                }
-            } catch (InvalidPathException notAPath) {
-                // not a file name anywhere: no descriptor can be found under it
-            }
-        }
-        return folders;
-    }
-
-    private static List<Path> xmlFilesIn(Path folder) throws IOException {
-        if (!Files.isDirectory(folder)) {
-            return List.of();
-        }
-        try (Stream<Path> files = Files.list(folder)) {
-            return files.filter(file -> file.getFileName().toString().endsWith(".xml") && Files.isRegularFile(file))
-                    .sorted().toList();
-        }
     }
 
     /** masl's own classes, the shipped agents and the JDK, once per process. */

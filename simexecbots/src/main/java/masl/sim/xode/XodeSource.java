@@ -6,6 +6,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Optional;
 
 /**
  * Where an XODE document comes from, and the name its messages use. Documents are read as UTF-8
@@ -21,15 +22,22 @@ public final class XodeSource {
 
     private final String name;
     private final ByteSupplier bytes;
+    /** The file it is read from; null for a resource or text in memory. */
+    private final Path file;
 
     private XodeSource(String name, ByteSupplier bytes) {
+        this(name, bytes, null);
+    }
+
+    private XodeSource(String name, ByteSupplier bytes, Path file) {
         this.name = name;
         this.bytes = bytes;
+        this.file = file;
     }
 
     /** A file; messages name it as given. */
     public static XodeSource file(Path path) {
-        return new XodeSource(path.toString(), () -> Files.readAllBytes(path));
+        return new XodeSource(path.toString(), () -> Files.readAllBytes(path), path);
     }
 
     /** A class-path resource such as {@code masl/agents/robots/wheeled-robot.xode}. */
@@ -57,6 +65,11 @@ public final class XodeSource {
 
     public String name() {
         return name;
+    }
+
+    /** The file it is read from, when it is one (not a resource, not text in memory). */
+    public Optional<Path> file() {
+        return Optional.ofNullable(file);
     }
 
     String readText() throws XodeException {
