@@ -19,14 +19,13 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * samples/counter-team-maven, copied out of the checkout and built as it is by Debian's Maven and by a
- * current Maven 3.9, with the plug-in and the modules published by this build: on each, the mission
- * translated and compiled with the project's agent class and its JUnit test green (and the jar made,
- * with Maven 3.9), then a seeded
- * {@code masl:run} in the same build, of the mission printing its journal (Maven 3.9) or of a mission
- * that fails, failing with its status and the command that replays it (Debian's); and an error in a
- * mission and in a descriptor failing {@code masl:check} at their positions, and one in a mission of the
- * tests failing the build before any test runs. Two builds per Maven: each
- * costs seconds of JVM start and of Maven's own plug-ins.
+ * current Maven 3.9, with the plug-in and the modules published by this build: on each, the missions
+ * translated and compiled with the project's agent class and its JUnit tests green (and the jar made,
+ * with Maven 3.9), then a {@code masl:run} in the same build: seeded, of the mission printing its
+ * journal (Maven 3.9, which then runs it in JADE too) or of a mission that fails, failing with its
+ * status and the command that replays it (Debian's); an error in a mission and in a descriptor failing
+ * {@code masl:check} at their positions; one in a mission of the tests failing the build before any
+ * test runs. Few builds per Maven: each costs seconds of JVM start and of Maven's own plug-ins.
  */
 @Tag("slow")
 class SampleProjectTest {
@@ -36,7 +35,7 @@ class SampleProjectTest {
     }
 
     @Test
-    void currentMavenTestsTheMissionThenRunsItWithASeed(@TempDir Path folder) throws Exception {
+    void currentMavenTestsTheMissionThenRunsItWithASeedAndInJade(@TempDir Path folder) throws Exception {
         Path project = sample(folder);
 
         Maven.Result build = Maven.current().run(project, "verify", "masl:run", "-Dmission=count", "-Dseed=3");
@@ -48,6 +47,11 @@ class SampleProjectTest {
             assertTrue(jar.getEntry("Counter.xml") != null && jar.getEntry("sample/Counter.class") != null,
                     "the descriptor in the jar beside its class, so the jar can be an agent path");
         }
+
+        Maven.Result inJade = Maven.current().run(project, "masl:run", "-Dmission=count", "-Dplatform=jade", "-Dtimeout=60");
+
+        assertTrue(inJade.succeeded(), inJade.output());
+        assertTrue(inJade.output().lines().anyMatch("total=9"::equals), "the journal of masl:run in JADE:\n" + inJade.output());
     }
 
     @Test
