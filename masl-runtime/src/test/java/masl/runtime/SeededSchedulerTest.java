@@ -3,16 +3,16 @@ package masl.runtime;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.time.Duration;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
-import java.util.function.Function;
 import masl.runtime.scheduling.SeededScheduler;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.PhaseLog;
 import masl.runtime.testing.TestAgent;
 import masl.runtime.trace.MemoryTrace;
+import masl.runtime.trace.Trace;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -21,7 +21,7 @@ import org.junit.jupiter.api.Timeout;
 class SeededSchedulerTest {
 
     @Test
-    void theSameSeedGivesTheSameRunAndSeedsExploreDifferentRuns() throws InterruptedException {
+    void theSameSeedGivesTheSameRunAndSeedsExploreDifferentRuns() {
         Set<List<String>> distinctRuns = new HashSet<>();
         for (long seed = 0; seed < 20; seed++) {
             List<String> first = run(seed);
@@ -32,16 +32,10 @@ class SeededSchedulerTest {
         assertTrue(distinctRuns.size() > 1, "every seed gave the same run");
     }
 
-    private static List<String> run(long seed) throws InterruptedException {
+    private static List<String> run(long seed) {
         MemoryTrace memory = new MemoryTrace();
         PhaseLog log = new PhaseLog("group", memory);
-        Function<TestAgent, AgentProgram> program = self -> new SynchronousBlockTest.JoinAndLeave(self, log);
-        Mission.Builder builder = Mission.builder().main(SynchronousBlockTest.JoinAndLeave.MAIN)
-                .scheduler(new SeededScheduler(seed)).trace(log);
-        for (int i = 0; i <= SynchronousBlockTest.JoinAndLeave.MEMBERS; i++) {
-            builder.agent("a" + i, new TestAgent(), program);
-        }
-        builder.build().run(Duration.ofSeconds(20)).requireCompleted();
+        SynchronousBlockTest.JOIN_AND_LEAVE.run(new SeededScheduler(seed), log, () -> new TestAgent(log));
         // Events without their time stamps, and the phases of the block's instructions.
         List<String> run = new ArrayList<>(memory.events().stream()
                 .map(event -> event.toString().replaceAll("nanos=\\d+, ", "")).toList());
@@ -51,21 +45,9 @@ class SeededSchedulerTest {
 
     /** An hour of sleep ends well within the run's timeout of 20 s: on the virtual clock. */
     @Test
-    void sleepsTakeVirtualTime() throws InterruptedException {
-        EntryDefinition main = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-        Mission.builder().main(main).scheduler(new SeededScheduler(7))
-                .agent("sleeper", new TestAgent(), self -> new AgentProgram() {
-                    @Override
-                    @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-                    protected void resume(AgentContext ctx) {
-                        while (true) {
-                            switch (pc) {
-                                case 0: pc = 1; if (!ctx.sleep(Duration.ofHours(1).toMillis())) return;
-                                case 1: ctx.finish(); return;
-                                default: throw new IllegalStateException("pc " + pc);
-                            }
-                        }
-                    }
-                }).build().run(Duration.ofSeconds(20)).requireCompleted();
+    void sleepsTakeVirtualTime() {
+        MaslProgram.of("sleeper.masl", MaslProgram.header(1) + """
+                asynchronous entry main (true) { Thread.sleep(3600000); }
+                """).run(new SeededScheduler(7), Trace.NONE);
     }
 }

@@ -6,12 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.Objects;
-import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
-import masl.runtime.entry.Entry;
-import masl.runtime.testing.CompactProgram;
+import java.util.stream.Collectors;
+import java.util.stream.IntStream;
 import masl.runtime.testing.Driver;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.PhaseLog;
 import masl.runtime.testing.TestAgent;
@@ -26,63 +25,33 @@ import org.junit.jupiter.params.provider.EnumSource;
 @Timeout(120)
 class SynchronousBlockTest {
 
-    /**
-     * <pre>
-     * synchronous entry main (true) {
-     *   synchronous entry child (.getProxyID() % 2 == 0) { c0; c1; c2; c3; c4; }
-     *   m0; m1; … m9;
-     * }
-     * </pre>
-     * or, with {@code breakAfter} = 3, {@code { c0; c1; c2; break; … }}.
-     */
-    static final class ChildInLockStep extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
-        static final EntryDefinition CHILD = MAIN.child("child", Mode.SYNCHRONOUS);
-
-        private final PhaseLog log;
-        private final int breakAfter;
-        private int c;
-        private int m;
-
-        ChildInLockStep(TestAgent self, PhaseLog log, int breakAfter) {
-            super(self);
-            this.log = log;
-            this.breakAfter = breakAfter;
-        }
-
-        @Override
-        protected void resume(AgentContext ctx) {
-            int id = self.getProxyID();
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 7)) return; continue;
-                    case 1: if (!arrive(ctx, CHILD, id % 2 == 0, 2, 4)) return; continue;
-                    case 2: log.instruction(id, "c" + c++); if (!step(ctx, c < 5 && c != breakAfter ? 2 : 3)) return; continue;
-                    case 3:
-                        if (c == breakAfter) {
-                            ctx.breakOut(CHILD);
-                            pc = 4;
-                            continue;
-                        }
-                        if (!leave(ctx, CHILD, 4)) return;
-                        continue;
-                    case 4: if (!endOf(ctx, CHILD.sequence(), 5)) return; continue;
-                    case 5: log.instruction(id, "m" + m++); if (!step(ctx, m < 10 ? 5 : 6)) return; continue;
-                    case 6: if (!leave(ctx, MAIN, 7)) return; continue;
-                    case 7: if (!endOf(ctx, MAIN.sequence(), 8)) return; continue;
-                    case 8: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
-            }
-        }
+    /** Agent {@code k}'s instructions {@code c0}, {@code c1}, … as in {@link PhaseLog}. */
+    private static String instructions(String prefix, int count) {
+        return IntStream.range(0, count).mapToObj(k -> ".instruction(\"" + prefix + k + "\"); ").collect(Collectors.joining());
     }
+
+    /** A synchronous child of the even agents, {@code c0 … c4}, then {@code m0 … m9} in main. */
+    private static final MaslProgram CHILD_IN_LOCK_STEP = MaslProgram.of("child.masl", MaslProgram.header(6) + """
+            synchronous entry main (true) {
+              synchronous entry child (.getProxyID() %% 2 == 0) { %s}
+              %s
+            }
+            """.formatted(instructions("c", 5), instructions("m", 10)));
+
+    /** As {@link #CHILD_IN_LOCK_STEP}, the child's members breaking out after {@code c2}. */
+    private static final MaslProgram BREAK_OUT_OF_CHILD = MaslProgram.of("break.masl", MaslProgram.header(6) + """
+            synchronous entry main (true) {
+              synchronous entry child (.getProxyID() %% 2 == 0) { %sbreak; }
+              %s
+            }
+            """.formatted(instructions("c", 3), instructions("m", 10)));
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void synchronousChildKeepsLockStepWithItsParentsOtherMembers(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             PhaseLog log = new PhaseLog("main", Trace.NONE);
-            Missions.run(driver, ChildInLockStep.MAIN, 6, self -> new ChildInLockStep(self, log, -1), log);
+            CHILD_IN_LOCK_STEP.run(driver.newScheduler(), log, () -> new TestAgent(log));
             Map<Integer, Map<String, Integer>> phases = log.phases();
             for (int agent = 0; agent < 6; agent++) {
                 Map<String, Integer> phase = phases.get(agent);
@@ -111,7 +80,7 @@ class SynchronousBlockTest {
     void anAgentBreakingOutOfASynchronousChildKeepsPaceWithoutAnExtraBarrier(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             PhaseLog log = new PhaseLog("main", Trace.NONE);
-            Missions.run(driver, ChildInLockStep.MAIN, 6, self -> new ChildInLockStep(self, log, 3), log);
+            BREAK_OUT_OF_CHILD.run(driver.newScheduler(), log, () -> new TestAgent(log));
             Map<Integer, Map<String, Integer>> phases = log.phases();
             for (int agent = 0; agent < 6; agent++) {
                 Map<String, Integer> phase = phases.get(agent);
@@ -126,66 +95,26 @@ class SynchronousBlockTest {
         }
     }
 
-    /**
-     * <pre>
-     * synchronous entry main (true) {
-     *   scalar entry setup (true) { child.lock(); }
-     *   synchronous entry child (.getProxyID() % 2 == 0) { c0; c1; c2; }
-     *   if (.getProxyID() % 2 == 1) { m0; m1; m2; m3; m4 (agent 1 also runs child.release()); }
-     * }
-     * </pre>
-     */
-    static final class HeldAtChildEntry extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
-        static final EntryDefinition SETUP = MAIN.child("setup", Mode.SCALAR);
-        static final EntryDefinition CHILD = MAIN.child("child", Mode.SYNCHRONOUS);
-
-        private int c;
-        private int m;
-
-        HeldAtChildEntry(TestAgent self) {
-            super(self);
-        }
-
-        @Override
-        protected void resume(AgentContext ctx) {
-            int id = self.getProxyID();
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 10)) return; continue;
-                    case 1: if (!arrive(ctx, SETUP, true, 2, 3)) return; continue;
-                    case 2: ctx.entry(CHILD).lock(); if (!leave(ctx, SETUP, 3)) return; continue;
-                    case 3: if (!endOfChild(ctx, SETUP, 4)) return; continue;
-                    case 4: if (!arrive(ctx, CHILD, id % 2 == 0, 5, 7)) return; continue;
-                    case 5: self.nop(); c++; if (!step(ctx, c < 3 ? 5 : 6)) return; continue;
-                    case 6: if (!leave(ctx, CHILD, 7)) return; continue;
-                    case 7: if (!endOf(ctx, CHILD.sequence(), 8)) return; continue;
-                    case 8:
-                        if (id % 2 == 0) {
-                            pc = 9;
-                            continue;
-                        }
-                        if (id == 1 && m == 4) {
-                            ctx.entry(CHILD).release();
-                        }
-                        m++;
-                        if (!step(ctx, m < 5 ? 8 : 9)) return;
-                        continue;
-                    case 9: if (!leave(ctx, MAIN, 10)) return; continue;
-                    case 10: if (!endOf(ctx, MAIN.sequence(), 11)) return; continue;
-                    case 11: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
+    /** The odd agents run five instructions in main while the even ones are held at the child's entry barrier. */
+    private static final MaslProgram HELD_AT_CHILD_ENTRY = MaslProgram.of("held.masl", MaslProgram.header(6) + """
+            Entry child;
+            synchronous entry main (true) {
+              scalar entry setup (true) { child.lock(); }
+              synchronous entry child (.getProxyID() % 2 == 0) { .nop(); .nop(); .nop(); }
+              if (.getProxyID() % 2 == 1) {
+                .nop(); .nop(); .nop(); .nop();
+                if (.getProxyID() == 1) { child.release(); }
+                .nop();
+              }
             }
-        }
-    }
+            """);
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void agentsHeldAtAChildsEntryBarrierDoNotHoldTheParentsBarrier(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             MemoryTrace trace = new MemoryTrace();
-            Missions.run(driver, HeldAtChildEntry.MAIN, 6, HeldAtChildEntry::new, trace);
+            HELD_AT_CHILD_ENTRY.run(driver.newScheduler(), trace);
             List<TraceEvent> events = trace.events();
             int lastHeld = lastIndex(events, e -> e instanceof TraceEvent.WaitingIn w && w.block().equals("child"));
             int firstReleased = firstIndex(events, e -> e instanceof TraceEvent.Released r && r.block().equals("child"));
@@ -202,81 +131,29 @@ class SynchronousBlockTest {
     }
 
     /**
-     * <pre>
-     * synchronous entry main (true) {
-     *   synchronous entry child (true) {
-     *     local boolean reelected = false;
-     *     .nop();
-     *     if (.getProxyID() == 0 &amp;&amp; !reelected) { reelected = true; reelect; }
-     *     if (.getProxyID() == 1) { while (child.getWaitingInCount() == 0) {} child.release(); }
-     *     .nop();
-     *   }
-     * }
-     * </pre>
+     * Agent 0 re-elects itself once; agent 1 lets it in again. {@code reelected = true;} is an
+     * instruction of its own, so agent 1 keeps step with it ({@code .nop()}) before it busy-waits:
+     * a member busy-waiting in a synchronous block does not arrive at its barrier.
      */
-    static final class ReelectInSynchronousBlock extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
-        static final EntryDefinition CHILD = MAIN.child("child", Mode.SYNCHRONOUS);
-
-        private boolean keepChildLocals;
-        private boolean reelected;
-
-        ReelectInSynchronousBlock(TestAgent self) {
-            super(self);
-        }
-
-        @Override
-        protected void resume(AgentContext ctx) {
-            int id = self.getProxyID();
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 10)) return; continue;
-                    case 1:
-                        if (!arrive(ctx, CHILD, true, 2, 8)) return;
-                        if (pc == 8) {
-                            keepChildLocals = false;
-                        }
-                        continue;
-                    case 2:
-                        if (!keepChildLocals) {
-                            reelected = false;
-                        }
-                        keepChildLocals = false;
-                        self.nop();
-                        if (!step(ctx, 3)) return;
-                        continue;
-                    case 3:
-                        if (id == 0 && !reelected) {
-                            reelected = true;
-                            ctx.reelect(CHILD);
-                            keepChildLocals = true;
-                            pc = 1;
-                            continue;
-                        }
-                        pc = id == 1 ? 4 : 6;
-                        continue;
-                    case 4:
-                        if (!busyWait(ctx, ctx.entry(CHILD).getWaitingInCount() == 0, 5)) return;
-                        continue;
-                    case 5: ctx.entry(CHILD).release(); pc = 6; continue;
-                    case 6: self.nop(); if (!step(ctx, 7)) return; continue;
-                    case 7: if (!leave(ctx, CHILD, 8)) return; continue;
-                    case 8: if (!endOf(ctx, CHILD.sequence(), 9)) return; continue;
-                    case 9: if (!leave(ctx, MAIN, 10)) return; continue;
-                    case 10: if (!endOf(ctx, MAIN.sequence(), 11)) return; continue;
-                    case 11: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
+    private static final MaslProgram REELECT_IN_SYNCHRONOUS_BLOCK = MaslProgram.of("reelect.masl", MaslProgram.header(2) + """
+            Entry child;
+            synchronous entry main (true) {
+              synchronous entry child (true) {
+                local boolean reelected = false;
+                .nop();
+                if (.getProxyID() == 0 && !reelected) { reelected = true; reelect; }
+                if (.getProxyID() == 1) { .nop(); while (child.getWaitingInCount() == 0) {} child.release(); }
+                .nop();
+              }
             }
-        }
-    }
+            """);
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void reelectLeavesWithoutExitBarrierAndArrivesAgainAsANewArrival(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             MemoryTrace trace = new MemoryTrace();
-            Missions.run(driver, ReelectInSynchronousBlock.MAIN, 2, ReelectInSynchronousBlock::new, trace);
+            REELECT_IN_SYNCHRONOUS_BLOCK.run(driver.newScheduler(), trace);
             List<String> agent0 = new ArrayList<>();
             for (TraceEvent event : trace.events()) {
                 if (event instanceof TraceEvent.WaitingIn e && e.agent() == 0 && e.block().equals("child")) {
@@ -296,179 +173,88 @@ class SynchronousBlockTest {
         }
     }
 
+    static final int MEMBERS = 8;
+
     /**
      * Agents join a locked synchronous block one by one, as a keeper releases each as soon as it
      * waits, so they join waves in progress; member {@code k} runs {@code 2k + 1} instructions and
      * leaves by its end (even k) or by {@code break} (odd k).
      */
-    static final class JoinAndLeave extends CompactProgram {
-        static final int MEMBERS = 8;
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-        static final SharedDeclaration<Integer> FINISHED = MAIN.declareShared("finished", 0);
-        static final EntryDefinition SETUP = MAIN.child("setup", Mode.SCALAR);
-        static final ESequence KEEP_GROUP = MAIN.newSequence();
-        static final EntryDefinition KEEP = KEEP_GROUP.block("keep", Mode.ASYNCHRONOUS);
-        static final EntryDefinition GROUP = KEEP_GROUP.block("group", Mode.SYNCHRONOUS);
-
-        private final PhaseLog log;
-        private int k;
-
-        JoinAndLeave(TestAgent self, PhaseLog log) {
-            super(self);
-            this.log = log;
-        }
-
-        @Override
-        protected void resume(AgentContext ctx) {
-            int id = self.getProxyID();
-            Entry group = ctx.entry(GROUP);
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 15)) return; continue;
-                    case 1:
-                        ctx.shared(FINISHED).initialise(() -> 0);
-                        if (!arrive(ctx, SETUP, true, 2, 3)) return;
-                        continue;
-                    case 2: group.lock(); if (!leave(ctx, SETUP, 3)) return; continue;
-                    case 3: if (!endOf(ctx, SETUP.sequence(), 4)) return; continue;
-                    case 4: if (!busyWait(ctx, Objects.equals(group.getLockPolicy(), "free"), 5)) return; continue;
-                    case 5: if (!arrive(ctx, KEEP, id == 0, 6, 8)) return; continue;
-                    case 6:
-                        if (!(ctx.shared(FINISHED).get() < MEMBERS)) {
-                            pc = 7;
-                            continue;
-                        }
-                        if (group.getWaitingInCount() > 0) {
-                            group.release(1);
-                        }
-                        if (!ctx.busyWaitIteration()) return;
-                        continue;
-                    case 7: if (!leave(ctx, KEEP, 8)) return; continue;
-                    case 8: if (!arrive(ctx, GROUP, id != 0, 9, 12)) return; continue;
-                    case 9: log.instruction(id, "g" + k++); if (!step(ctx, k < 2 * id + 1 ? 9 : 10)) return; continue;
-                    case 10:
-                        if (id % 2 == 1) {
-                            ctx.breakOut(GROUP);
-                            pc = 12;
-                            continue;
-                        }
-                        pc = 11;
-                        continue;
-                    case 11: if (!leave(ctx, GROUP, 12)) return; continue;
-                    case 12: if (!endOf(ctx, KEEP_GROUP, 13)) return; continue;
-                    case 13:
-                        if (id != 0) {
-                            ctx.shared(FINISHED).getAndUpdate(n -> n + 1);
-                        }
-                        if (!step(ctx, 14)) return;
-                        continue;
-                    case 14: if (!leave(ctx, MAIN, 15)) return; continue;
-                    case 15: if (!endOf(ctx, MAIN.sequence(), 16)) return; continue;
-                    case 16: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
+    static final MaslProgram JOIN_AND_LEAVE = MaslProgram.of("join.masl", MaslProgram.header(MEMBERS + 1) + """
+            Entry group;
+            asynchronous entry main (true) {
+              shared int finished = 0;
+              scalar entry setup (true) { group.lock(); }
+              while (group.getLockPolicy() == "free") {}
+              asynchronous entry keep (.getProxyID() == 0) {
+                while (finished < %d) { if (group.getWaitingInCount() > 0) group.release(1); }
+              }
+              synchronous entry group (.getProxyID() != 0) {
+                local int k;
+                for (k = 0; k < 2 * .getProxyID() + 1; k++) .instruction("g" + k);
+                if (.getProxyID() %% 2 == 1) break;
+              }
+              if (.getProxyID() != 0) finished++;
             }
-        }
-    }
+            """.formatted(MEMBERS));
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void agentsJoiningAndLeavingMidWaveNeverDeadlockNorTripWithoutAMember(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             PhaseLog log = new PhaseLog("group", Trace.NONE);
-            Missions.run(driver, JoinAndLeave.MAIN, JoinAndLeave.MEMBERS + 1, self -> new JoinAndLeave(self, log), log);
+            JOIN_AND_LEAVE.run(driver.newScheduler(), log, () -> new TestAgent(log));
             assertEquals(List.of(), log.lockStepViolations());
             log.trips().forEach(trip -> assertTrue(trip.agents() > 0, trip::toString));
             Map<Integer, Map<String, Integer>> phases = log.phases();
-            for (int member = 1; member <= JoinAndLeave.MEMBERS; member++) {
+            for (int member = 1; member <= MEMBERS; member++) {
                 assertEquals(2 * member + 1, phases.get(member).size(), "instructions of member " + member);
             }
         }
     }
 
     /**
-     * A keeper releases members of a locked block: {@code release(n)} first, then all; or one, and
-     * the next one only once the block is empty again. Members record their shared variable.
+     * A keeper releases members of a locked block, once {@code waiting} wait, by {@code releases};
+     * members log their shared variable.
      */
-    static final class Gate extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-        static final EntryDefinition SETUP = MAIN.child("setup", Mode.SCALAR);
-        static final ESequence KEEP_GATE = MAIN.newSequence();
-        static final EntryDefinition KEEP = KEEP_GATE.block("keep", Mode.ASYNCHRONOUS);
-        static final EntryDefinition GATE = KEEP_GATE.block("gate", Mode.SYNCHRONOUS);
-        static final SharedDeclaration<Integer> GATE_S = GATE.declareShared("s", 0);
-
-        private final boolean oneWaveEach;
-        private final AtomicInteger waitingAfterRelease;
-        private final ConcurrentLinkedQueue<Integer> seen;
-
-        Gate(TestAgent self, boolean oneWaveEach, AtomicInteger waitingAfterRelease, ConcurrentLinkedQueue<Integer> seen) {
-            super(self);
-            this.oneWaveEach = oneWaveEach;
-            this.waitingAfterRelease = waitingAfterRelease;
-            this.seen = seen;
-        }
-
-        @Override
-        protected void resume(AgentContext ctx) {
-            int id = self.getProxyID();
-            Entry gate = ctx.entry(GATE);
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 16)) return; continue;
-                    case 1: if (!arrive(ctx, SETUP, true, 2, 3)) return; continue;
-                    case 2: gate.lock(); if (!leave(ctx, SETUP, 3)) return; continue;
-                    case 3: if (!endOf(ctx, SETUP.sequence(), 4)) return; continue;
-                    case 4: if (!busyWait(ctx, Objects.equals(gate.getLockPolicy(), "free"), 5)) return; continue;
-                    case 5: if (!arrive(ctx, KEEP, id == 0, 6, 11)) return; continue;
-                    case 6: if (!busyWait(ctx, gate.getWaitingInCount() < waiting(), 7)) return; continue;
-                    case 7:
-                        if (oneWaveEach) {
-                            gate.release(1);
-                            pc = 8;
-                            continue;
-                        }
-                        gate.release(2);
-                        waitingAfterRelease.set(gate.getWaitingInCount());
-                        gate.release();
-                        pc = 10;
-                        continue;
-                    case 8:
-                        // Until the first member's wave is over: only the second agent is left, waiting.
-                        if (!busyWait(ctx, gate.count() > 1, 9)) return;
-                        continue;
-                    case 9: gate.release(1); pc = 10; continue;
-                    case 10: if (!leave(ctx, KEEP, 11)) return; continue;
-                    case 11: if (!arrive(ctx, GATE, id != 0, 12, 14)) return; continue;
-                    case 12:
-                        ctx.shared(GATE_S).initialise(() -> 0);
-                        seen.add(ctx.shared(GATE_S).update(s -> s + 1));
-                        if (!step(ctx, 13)) return;
-                        continue;
-                    case 13: if (!leave(ctx, GATE, 14)) return; continue;
-                    case 14: if (!endOf(ctx, KEEP_GATE, 15)) return; continue;
-                    case 15: if (!leave(ctx, MAIN, 16)) return; continue;
-                    case 16: if (!endOf(ctx, MAIN.sequence(), 17)) return; continue;
-                    case 17: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
+    private static String gate(int agents, int waiting, String releases) {
+        return MaslProgram.header(agents) + """
+                Entry gate;
+                asynchronous entry main (true) {
+                  scalar entry setup (true) { gate.lock(); }
+                  while (gate.getLockPolicy() == "free") {}
+                  asynchronous entry keep (.getProxyID() == 0) {
+                    while (gate.getWaitingInCount() < %d) {}
+                    %s
+                  }
+                  synchronous entry gate (.getProxyID() != 0) {
+                    shared int s = 0;
+                    .logged("s=", ++s);
+                  }
                 }
-            }
-        }
-
-        private int waiting() {
-            return oneWaveEach ? 2 : 6;
-        }
+                """.formatted(waiting, releases);
     }
+
+    /** {@code release(n)} first, then all. */
+    private static final MaslProgram RELEASE_TWO_THEN_ALL = MaslProgram.of("gate-two.masl", gate(7, 6, """
+            gate.release(2);
+                .logged("waiting after release ", gate.getWaitingInCount());
+                gate.release();"""));
+
+    /** One, and the next one only once the first member's wave is over: only the second agent is left, waiting. */
+    private static final MaslProgram RELEASE_ONE_WAVE_EACH = MaslProgram.of("gate-one.masl", gate(3, 2, """
+            gate.release(1);
+                while (gate.count > 1) {}
+                gate.release(1);"""));
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void releaseOfNAdmitsExactlyTheNEarliestArrivals(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             MemoryTrace trace = new MemoryTrace();
-            AtomicInteger waitingAfterRelease = new AtomicInteger(-1);
-            ConcurrentLinkedQueue<Integer> seen = new ConcurrentLinkedQueue<>();
-            Missions.run(driver, Gate.MAIN, 7, self -> new Gate(self, false, waitingAfterRelease, seen), trace);
-            assertEquals(4, waitingAfterRelease.get());
+            String journal = RELEASE_TWO_THEN_ALL.run(driver.newScheduler(), trace).journal();
+            assertEquals(List.of("waiting after release 4"),
+                    journal.lines().filter(line -> line.startsWith("waiting")).toList(), journal);
             List<Integer> arrivals = trace.events(TraceEvent.WaitingIn.class).stream()
                     .filter(w -> w.block().equals("gate")).map(TraceEvent.WaitingIn::agent).toList();
             List<Integer> released = trace.events(TraceEvent.Released.class).stream()
@@ -483,9 +269,7 @@ class SynchronousBlockTest {
     void releaseJustAfterAWaveEndsStartsANewWaveWithFreshSharedVariables(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             MemoryTrace trace = new MemoryTrace();
-            ConcurrentLinkedQueue<Integer> seen = new ConcurrentLinkedQueue<>();
-            Missions.run(driver, Gate.MAIN, 3, self -> new Gate(self, true, new AtomicInteger(), seen), trace);
-            assertEquals(List.of(1, 1), new ArrayList<>(seen));
+            assertEquals("s=1\ns=1\n", RELEASE_ONE_WAVE_EACH.run(driver.newScheduler(), trace).journal());
             List<String> waves = new ArrayList<>();
             for (TraceEvent event : trace.events()) {
                 if (event instanceof TraceEvent.WaveStarted w && w.block().equals("gate")) {
@@ -500,39 +284,12 @@ class SynchronousBlockTest {
         }
     }
 
-    /** {@code synchronous entry main (true) { for (i = 0; i < 1000; i++) .nop(); }} */
-    static final class ThousandSteps extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
-        static final int STEPS = 1000;
+    private static final int STEPS = 1000;
 
-        private int i;
-
-        ThousandSteps(TestAgent self) {
-            super(self);
-        }
-
-        @Override
-        protected void resume(AgentContext ctx) {
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 5)) return; continue;
-                    case 1: i = 0; pc = 2; continue;
-                    case 2:
-                        if (!(i < STEPS)) {
-                            pc = 4;
-                            continue;
-                        }
-                        self.nop();
-                        if (!step(ctx, 3)) return;
-                        continue;
-                    case 3: i++; pc = 2; if (!ctx.loopIteration()) return; continue;
-                    case 4: if (!leave(ctx, MAIN, 5)) return; continue;
-                    case 5: if (!endOf(ctx, MAIN.sequence(), 6)) return; continue;
-                    case 6: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
-            }
-        }
+    private static String thousandSteps(int agents) {
+        return MaslProgram.header(agents) + """
+                synchronous entry main (true) { local int i; for (i = 0; i < %d; i++) .nop(); }
+                """.formatted(STEPS);
     }
 
     /** The scalable model's reason to be: one thread per agent would take about 20 s here. */
@@ -541,13 +298,13 @@ class SynchronousBlockTest {
     void aThousandAgentsRunAThousandLockStepSteps(Driver driver) {
         AtomicInteger trips = new AtomicInteger();
         AtomicInteger largestTrip = new AtomicInteger();
-        Missions.run(driver, ThousandSteps.MAIN, 1000, ThousandSteps::new, event -> {
+        MaslProgram.of("steps.masl", thousandSteps(1000)).run(driver.newScheduler(), event -> {
             if (event instanceof TraceEvent.BarrierTripped trip) {
                 trips.incrementAndGet();
                 largestTrip.accumulateAndGet(trip.agents(), Math::max);
             }
         });
-        assertEquals(ThousandSteps.STEPS, trips.get());
+        assertEquals(STEPS, trips.get());
         assertEquals(1000, largestTrip.get());
     }
 
@@ -556,12 +313,12 @@ class SynchronousBlockTest {
     void lockStepStepsAtAScaleThreadsCanRun(Driver driver) {
         for (int run = 0; run < 5; run++) {
             AtomicInteger trips = new AtomicInteger();
-            Missions.run(driver, ThousandSteps.MAIN, 50, ThousandSteps::new, event -> {
+            MaslProgram.of("steps.masl", thousandSteps(50)).run(driver.newScheduler(), event -> {
                 if (event instanceof TraceEvent.BarrierTripped trip && trip.agents() == 50) {
                     trips.incrementAndGet();
                 }
             });
-            assertEquals(ThousandSteps.STEPS, trips.get());
+            assertEquals(STEPS, trips.get());
         }
     }
 

@@ -8,6 +8,17 @@ public class TestAgent extends AgentImplementation {
     /** An attribute for the permeability tests (descriptor agents/Default.xml). */
     public volatile int battery;
 
+    private final PhaseLog phases;
+
+    public TestAgent() {
+        this(null);
+    }
+
+    /** An agent whose {@link #instruction}s go to {@code phases}. */
+    public TestAgent(PhaseLog phases) {
+        this.phases = phases;
+    }
+
     public int getProxyID() {
         return services().proxyId();
     }
@@ -22,6 +33,11 @@ public class TestAgent extends AgentImplementation {
 
     public void logln(String message) {
         services().log(message + "\n");
+    }
+
+    /** One instruction, recorded with this agent's proxy id in the test's {@link PhaseLog}. */
+    public void instruction(String label) {
+        phases.instruction(getProxyID(), label);
     }
 
     /** Logs {@code label} and {@code value} on a line and returns {@code value}: an expression a test sees evaluated. */
