@@ -2,9 +2,13 @@ package masl.cli;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import masl.runtime.trace.JsonLinesTrace;
 import masl.translator.diagnostics.Suggestions;
 
 /**
@@ -17,11 +21,14 @@ final class CommandLine {
     private static final Map<String, Set<String>> OPTIONS = Map.of(
             "check", Set.of("--agent-path", "--quiet"),
             "compile", Set.of("--agent-path", "-d", "--quiet"),
-            "run", Set.of("--agent-path", "--threads", "--quiet", "--seed", "--timeout", "--call-timeout", "--trace", "--platform", "--main-host",
-                    "--main-port", "--sim", "--out", "--place", "--port", "--secret-file", "--no-cache"),
+            "run", Set.of("--agent-path", "--threads", "--quiet", "--seed", "--timeout", "--call-timeout", "--trace",
+                    "--trace-limit", "--platform", "--main-host", "--main-port", "--sim", "--out", "--place", "--port",
+                    "--secret-file", "--no-cache"),
             "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout", "--secret-file"),
             "timeline", Set.of("-o"),
             "lsp", Set.of("--agent-path"));
+    /** A size: digits, then a unit K, M or G, with or without {@code iB} or {@code B}. */
+    private static final Pattern SIZE = Pattern.compile("([0-9]+)(?i:([KMG])(?:i?B)?)?");
     private static final Set<String> FLAGS = Set.of("--threads", "--quiet", "--no-cache");
     /**
      * The longest {@code --timeout}: ten years, within the nanosecond arithmetic of deadlines
@@ -42,6 +49,8 @@ final class CommandLine {
     Long timeoutSeconds;
     Long callTimeoutMillis;
     String traceFile;
+    /** The size, in bytes, at which the trace is cut ({@code --trace-limit}). */
+    long traceLimit = TraceOutput.DEFAULT_LIMIT;
     String platform = "inproc";
     String mainHost;
     Integer mainPort;
@@ -120,6 +129,7 @@ final class CommandLine {
             case "--sim" -> scenarioFile = value;
             case "-o" -> outputFile = value;
             case "--trace" -> traceFile = value;
+            case "--trace-limit" -> traceLimit = size(option, value, JsonLinesTrace.MIN_LIMIT);
             case "--seed" -> seed = number(option, value, Long.MIN_VALUE, Long.MAX_VALUE);
             case "--timeout" -> timeoutSeconds = number(option, value, 1, MAX_TIMEOUT_SECONDS);
             case "--call-timeout" -> callTimeoutMillis = number(option, value, 1, MAX_TIMEOUT_SECONDS * 1000);
@@ -145,6 +155,29 @@ final class CommandLine {
 
     private static int port(String option, String value) throws UsageException {
         return (int) number(option, value, 1, 65535);
+    }
+
+    /**
+     * A size in bytes: a whole number, or one followed by K, M or G (KiB, MiB, GiB: 1024, 1024², 1024³
+     * bytes), as in {@code 512M}; at least {@code minimum}.
+     */
+    private static long size(String option, String value, long minimum) throws UsageException {
+        Matcher size = SIZE.matcher(value);
+        if (!size.matches()) {
+            throw new UsageException(option + " needs a size in bytes, such as 1048576, 64K, 512M or 1G, got '" + value + "'");
+        }
+        int shift = switch (size.group(2) == null ? "" : size.group(2).substring(0, 1).toUpperCase(Locale.ROOT)) {
+            case "K" -> 10;
+            case "M" -> 20;
+            case "G" -> 30;
+            default -> 0;
+        };
+        long units = number(option, size.group(1), 0, Long.MAX_VALUE >> shift);
+        long bytes = units << shift;
+        if (bytes < minimum) {
+            throw new UsageException(option + " must be at least " + minimum + " bytes, got " + value);
+        }
+        return bytes;
     }
 
     private static long number(String option, String value, long minimum, long maximum) throws UsageException {

@@ -25,7 +25,7 @@ final class Help {
     static {
         COMMANDS.put("run", new Command("""
                 masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE] [--quiet]
-                        [--call-timeout MS] [--platform inproc|jade] [--no-cache]
+                        [--trace-limit SIZE] [--call-timeout MS] [--platform inproc|jade] [--no-cache]
                         [--main-host HOST --main-port PORT | --port PORT]
                         [--place AGENT=CONTAINER,... | --place FILE] [--secret-file FILE]
                 masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH] [--quiet]
@@ -34,8 +34,8 @@ final class Help {
                 the journal (and only the journal) goes to standard output
                 with --sim, the mission the scenario names runs on its simulated robots; trajectories,
                 events, trace, journal and a picture go to --out (default: NAME.out beside NAME.scenario.xml)
-                """, List.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--no-cache",
-                "--quiet", "--platform", "--main-host", "--port", "--place", "--secret-file", "--sim", "--out")));
+                """, List.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--trace-limit",
+                "--no-cache", "--quiet", "--platform", "--main-host", "--port", "--place", "--secret-file", "--sim", "--out")));
         COMMANDS.put("container", new Command("""
                 masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
                         [--timeout SECONDS] [--secret-file FILE]
@@ -92,6 +92,11 @@ final class Help {
         OPTIONS.put("--trace", """
                 --trace FILE        write the trace (one JSON object per line) to FILE
                 """);
+        OPTIONS.put("--trace-limit", """
+                --trace-limit SIZE  cut the trace at SIZE bytes (K, M, G: KiB, MiB, GiB; default 1G): its last
+                                    record is then {"event":"trace-cut","limit":BYTES}, the run goes on; a trace
+                                    that cannot be written fails the run
+                """);
         OPTIONS.put("--no-cache", """
                 --no-cache          translate and compile the program even if an earlier run of the same program,
                                     descriptors, agent path, masl and JDK left it compiled in the cache
@@ -144,7 +149,7 @@ final class Help {
 
     private static final String EXIT_STATUS = """
             exit status: 0 success, 1 errors in the program or its descriptors, 2 the mission failed,
-                         deadlocked or timed out, or its journal could not be written, 64 bad usage,
+                         deadlocked or timed out, or its journal or trace could not be written, 64 bad usage,
                          70 internal error, 130 or 143 stopped by Ctrl-C or SIGTERM
             """;
 

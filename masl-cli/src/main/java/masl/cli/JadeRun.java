@@ -19,7 +19,6 @@ import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.descriptor.DescriptorLoader;
-import masl.runtime.trace.Trace;
 import masl.translator.MissionLoader;
 import masl.translator.source.SourceFile;
 
@@ -96,18 +95,19 @@ final class JadeRun {
 
     /**
      * Runs the mission; a signal stops it once its agents exist ({@link StopOnSignal}), and so does a
-     * journal that cannot be written.
+     * journal or a trace that cannot be written.
      */
-    MissionOutcome run(Trace trace, Duration timeout, StopOnSignal signals) {
+    MissionOutcome run(TraceOutput trace, Duration timeout, StopOnSignal signals) {
         JadeLauncher launcher = JadeLauncher.of(loaded.program())
                 .types(spec -> descriptors.loadByClassName(spec.typeClassName()))
                 .implementations(loaded::newImplementation)
                 .place(placement)
                 .journal(journal)
                 .problems(problem -> err.println("masl: " + problem))
-                .trace(trace == null ? Trace.NONE : trace)
+                .trace(trace.trace())
                 .whenReady(mission -> {
                     journal.whenFailed(() -> mission.stop(RunCommand.JOURNAL_LOST));
+                    trace.whenFailed(() -> mission.stop(TraceOutput.TRACE_LOST));
                     if (!signals.stops(mission::stop)) {
                         mission.stop(StopOnSignal.REASON);
                     }

@@ -1,23 +1,16 @@
 package masl.cli;
 
-import java.io.BufferedWriter;
-import java.io.IOException;
 import java.io.PrintStream;
-import java.io.Writer;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
-import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.scheduling.ReplayCommand;
 import masl.runtime.scheduling.SeededScheduler;
 import masl.runtime.scheduling.ThreadPerAgentScheduler;
-import masl.runtime.trace.JsonLinesTrace;
 import masl.translator.MissionLoader;
 import masl.translator.cache.CompiledMissionCache;
 import masl.translator.source.SourceFile;
@@ -76,14 +69,15 @@ final class RunCommand {
         JournalOutput journal = new JournalOutput(out);
         if (line.platform.equals("jade")) {
             JadeRun jade = new JadeRun(line, source, agentPath, loaded, journal, err);
-            Writer trace = openTrace(line.traceFile);
+            TraceOutput trace = TraceOutput.open(line.traceFile, line.traceLimit);
+            MissionOutcome outcome;
             try {
-                return report(jade.run(trace == null ? null : new JsonLinesTrace(trace), timeout, signals), null,
-                        signals, journal);
+                outcome = jade.run(trace, timeout, signals);
             } finally {
                 out.flush();
-                closeTrace(trace, line.traceFile);
+                trace.close();
             }
+            return report(outcome, null, signals, journal, trace);
         }
         Mission.Builder builder;
         try {
@@ -101,21 +95,22 @@ final class RunCommand {
             builder.callTimeout(Duration.ofMillis(line.callTimeoutMillis));
         }
         builder.journal(journal);
-        Writer trace = openTrace(line.traceFile);
-        if (trace != null) {
-            builder.trace(new JsonLinesTrace(trace));
-        }
+        TraceOutput trace = TraceOutput.open(line.traceFile, line.traceLimit);
+        builder.trace(trace.trace());
         Mission mission = builder.build();
         journal.whenFailed(() -> mission.stop(JOURNAL_LOST));
+        trace.whenFailed(() -> mission.stop(TraceOutput.TRACE_LOST));
+        MissionOutcome outcome;
         try {
             if (!signals.stops(mission::stop)) {
                 return Masl.MISSION_FAILED;
             }
-            return report(run(mission, timeout), line.seed == null ? null : replay(line, source), signals, journal);
+            outcome = run(mission, timeout);
         } finally {
             out.flush();
-            closeTrace(trace, line.traceFile);
+            trace.close();
         }
+        return report(outcome, line.seed == null ? null : replay(line, source), signals, journal, trace);
     }
 
     /** The compiled program, from the cache unless --no-cache; null when it has errors. */
@@ -135,20 +130,27 @@ final class RunCommand {
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
             mission.stop();
-            return new MissionOutcome(MissionOutcome.Status.STOPPED, mission.journal().text(),
-                    java.util.Optional.empty(), "");
+            return new MissionOutcome(MissionOutcome.Status.STOPPED, mission.journal().text(), Optional.empty(), "");
         }
     }
 
     /**
-     * The exit status of a run and its one report on standard error. A journal that could not be
-     * written fails the run whatever the mission did; a signal's stop is said in one line.
+     * The exit status of a run and its one report on standard error. A journal or a trace that could
+     * not be written fails the run whatever the mission did; a signal's stop is said in one line; a
+     * trace cut at its limit is said, and is no failure.
      */
-    private int report(MissionOutcome outcome, String replay, StopOnSignal signals, JournalOutput journal) {
+    private int report(MissionOutcome outcome, String replay, StopOnSignal signals, JournalOutput journal,
+            TraceOutput trace) {
         if (journal.failed()) {
             err.println("masl: cannot write the journal to standard output");
             return Masl.MISSION_FAILED;
         }
+        Optional<String> traceLost = trace.lost();
+        if (traceLost.isPresent()) {
+            err.println("masl: " + traceLost.get());
+            return Masl.MISSION_FAILED;
+        }
+        trace.cut().ifPresent(cut -> err.println("masl: " + cut));
         if (outcome.status() == MissionOutcome.Status.STOPPED && signals.signalled()) {
             err.println("masl: the mission was stopped by " + StopOnSignal.REASON);
             return Masl.MISSION_FAILED;
@@ -203,25 +205,4 @@ final class RunCommand {
         return command.forSeed(line.seed);
     }
 
-    private static Writer openTrace(String file) throws UsageException {
-        if (file == null) {
-            return null;
-        }
-        try {
-            return new BufferedWriter(Files.newBufferedWriter(Path.of(file), StandardCharsets.UTF_8));
-        } catch (IOException | InvalidPathException cannotWrite) {
-            throw new UsageException("cannot write the trace to " + file + ": " + cannotWrite.getMessage());
-        }
-    }
-
-    private void closeTrace(Writer trace, String file) {
-        if (trace == null) {
-            return;
-        }
-        try {
-            trace.close();
-        } catch (IOException cannotWrite) {
-            err.println("masl: the trace " + file + " is incomplete: " + cannotWrite.getMessage());
-        }
-    }
 }

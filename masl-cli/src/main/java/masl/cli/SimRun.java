@@ -58,6 +58,9 @@ final class SimRun {
         if (line.threads) {
             throw new UsageException("--threads and --sim: the scenario chooses how agents and physics share time");
         }
+        if (line.traceLimit != TraceOutput.DEFAULT_LIMIT) {
+            throw new UsageException("--trace-limit and --sim: the simulation's trace.jsonl has no limit yet");
+        }
         Path scenarioFile = existingFile(line.scenarioFile);
         Scenario scenario;
         try {

@@ -148,7 +148,10 @@ public final class Timeline {
         return markers;
     }
 
-    /** How the mission ended ({@code mission-ended}), or null if the trace does not say. */
+    /**
+     * How the mission ended ({@code mission-ended}), that the trace was cut at its limit before it
+     * ended ({@code trace-cut}), or null if the trace does not say.
+     */
     public String status() {
         return status;
     }
@@ -234,6 +237,7 @@ public final class Timeline {
                         EventKind.DROPPED, null, -1, source));
                 case "agent-failed" -> failures.add(new Failure(record.nanos(), record.agent(), record.field("cause"), source));
                 case "mission-ended" -> status = record.field("status");
+                case "trace-cut" -> status = "trace cut at its limit of " + record.field("limit") + " bytes";
                 default -> {
                     if (record.hasAgent()) {
                         markers.add(new Marker(record.nanos(), record.agent(), record.event(), describe(record), source));

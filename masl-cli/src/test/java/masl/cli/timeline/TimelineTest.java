@@ -107,6 +107,18 @@ class TimelineTest {
     }
 
     @Test
+    void aTraceCutAtItsLimitIsReadAndSaysSo() throws Exception {
+        Timeline timeline = Timeline.of(read("""
+                {"nanos":0,"event":"mission-started","agents":["a"]}
+                {"nanos":10,"event":"entered","agent":0,"block":"main"}
+                {"nanos":20,"event":"trace-cut","limit":1024}
+                """));
+
+        assertEquals("trace cut at its limit of 1024 bytes", timeline.status());
+        assertTrue(new TimelineHtml(timeline, "cut").render().contains("trace cut at its limit of 1024 bytes"));
+    }
+
+    @Test
     void aMalformedLineIsReportedWithFileLineAndColumn() {
         TraceFormatException broken = assertThrows(TraceFormatException.class,
                 () -> TraceReader.read("run.jsonl", new StringReader("{\"nanos\":1,\"event\":\"left\"}\n{\"nanos\":2,\"event\" \"x\"}\n")));

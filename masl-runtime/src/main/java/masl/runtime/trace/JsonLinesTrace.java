@@ -2,7 +2,8 @@ package masl.runtime.trace;
 
 import java.io.Flushable;
 import java.io.IOException;
-import java.io.UncheckedIOException;
+import java.util.Optional;
+import java.util.function.Consumer;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -14,25 +15,90 @@ import java.util.regex.Pattern;
  * {@code {"nanos":124,"event":"event-reacted","agent":1,"name":"go","block":"main","reaction":"go"}}.
  * A record made where an agent's program stands at a statement ends with that statement's MASL line
  * and source, when the program knows them: {@code ,"line":14,"source":"e6.masl:14: synchronous entry turn (…)"}.
+ *
+ * <p>A trace has a limit in bytes (UTF-8): the record that would take it past its limit is not
+ * written, a last record {@code {"nanos":N,"event":"trace-cut","limit":BYTES}} is, within the limit,
+ * and nothing after it. A write that fails loses the trace: nothing more is written, and the
+ * action of {@link #whenFailed} runs once (the mission is stopped, never an agent's thread failed).
  */
 public final class JsonLinesTrace implements Trace, Flushable {
 
     /** The line in a source {@code "file.masl:14: …"}: the number after the file's name. */
     private static final Pattern POSITION = Pattern.compile("[^:]*:(\\d+):");
 
-    private final Appendable out;
-    /** {@code mission-ended} was written: it stays the last line, whatever agents still finishing record. */
-    private boolean ended;
+    /** The event of the last record of a trace cut at its limit. */
+    public static final String CUT = "trace-cut";
+    /** Room kept for the record saying the trace was cut: the longest, a 19-digit time and limit, fits. */
+    private static final int CUT_RECORD_ROOM = 96;
+    /** The smallest limit: the first records of a mission and the cut record fit. */
+    public static final long MIN_LIMIT = 1024;
 
+    private final Appendable out;
+    private final long limit;
+    private long written;
+    /** {@code mission-ended} or the cut record was written: it stays the last line, whatever agents still finishing record. */
+    private boolean ended;
+    private boolean cut;
+    private IOException failure;
+    private Consumer<IOException> onFailure = failed -> { };
+
+    /** A trace without limit. */
     public JsonLinesTrace(Appendable out) {
+        this(out, Long.MAX_VALUE);
+    }
+
+    /** A trace cut at {@code limit} bytes, at least {@link #MIN_LIMIT}. */
+    public JsonLinesTrace(Appendable out, long limit) {
+        if (limit < MIN_LIMIT) {
+            throw new IllegalArgumentException("a trace's limit is at least " + MIN_LIMIT + " bytes: " + limit);
+        }
         this.out = out;
+        this.limit = limit;
+    }
+
+    /** What to do on the first write that fails (at once if one has): the trace is lost. */
+    public void whenFailed(Consumer<IOException> action) {
+        IOException failed;
+        synchronized (this) {
+            onFailure = action;
+            failed = failure;
+        }
+        if (failed != null) {
+            action.accept(failed);
+        }
+    }
+
+    /** The write that failed, if one has. */
+    public synchronized Optional<IOException> failure() {
+        return Optional.ofNullable(failure);
+    }
+
+    /** Whether the trace reached its limit and ends with the record saying so. */
+    public synchronized boolean wasCut() {
+        return cut;
     }
 
     @Override
-    public synchronized void record(TraceEvent event) {
-        if (ended) {
-            return;
+    public void record(TraceEvent event) {
+        IOException failed;
+        Consumer<IOException> action;
+        synchronized (this) {
+            if (ended || failure != null) {
+                return;
+            }
+            try {
+                write(event);
+                return;
+            } catch (IOException e) {
+                failure = e;
+                failed = e;
+                action = onFailure;
+            }
         }
+        action.accept(failed);
+    }
+
+    private void write(TraceEvent event) throws IOException {
         String line;
         if (event instanceof TraceEvent.MissionStarted e) {
             line = head(e.nanos(), "mission-started") + ",\"agents\":["
@@ -63,11 +129,35 @@ public final class JsonLinesTrace implements Trace, Flushable {
         } else {
             line = eventLine(event);
         }
-        try {
-            out.append(line).append(source(event.source())).append("}\n");
-        } catch (IOException e) {
-            throw new UncheckedIOException("trace output failed", e);
+        String record = line + source(event.source()) + "}\n";
+        long bytes = utf8Length(record);
+        if (written + bytes > limit - CUT_RECORD_ROOM && !(event instanceof TraceEvent.MissionEnded && written + bytes <= limit)) {
+            ended = true;
+            cut = true;
+            out.append(head(event.nanos(), CUT) + ",\"limit\":" + limit + "}\n");
+            return;
         }
+        written += bytes;
+        out.append(record);
+    }
+
+    /** The length of {@code text} in UTF-8, without encoding it. */
+    private static long utf8Length(String text) {
+        long bytes = 0;
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (c < 0x80) {
+                bytes++;
+            } else if (c < 0x800) {
+                bytes += 2;
+            } else if (Character.isHighSurrogate(c) && i + 1 < text.length() && Character.isLowSurrogate(text.charAt(i + 1))) {
+                bytes += 4;
+                i++;
+            } else {
+                bytes += 3;
+            }
+        }
+        return bytes;
     }
 
     @Override

@@ -1,8 +1,14 @@
 package masl.runtime.trace;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
 import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 class JsonLinesTraceTest {
@@ -91,5 +97,67 @@ class JsonLinesTraceTest {
                         + "\"line\":7,\"source\":\"e.masl:7: x = 1 / y;\"}",
                 "{\"nanos\":3,\"event\":\"event-dropped\",\"agent\":0,\"name\":\"go\",\"source\":\"no position\"}") + "\n",
                 out.toString());
+    }
+
+    @Test
+    void aTraceAtItsLimitEndsWithTheRecordSayingItWasCutAndStaysWithinIt() {
+        StringWriter out = new StringWriter();
+        JsonLinesTrace trace = new JsonLinesTrace(out, 1024);
+        for (int i = 0; i < 100; i++) {
+            trace.record(new TraceEvent.Entered(i, 0, "tick", "t.masl:5: asynchronous entry tick (true)"));
+        }
+        trace.record(new TraceEvent.MissionEnded(100, "completed", null));
+
+        String text = out.toString();
+        List<String> lines = text.lines().toList();
+        assertTrue(text.getBytes(StandardCharsets.UTF_8).length <= 1024, text);
+        assertTrue(lines.size() > 2, text);
+        assertTrue(lines.get(lines.size() - 1).matches("\\{\"nanos\":\\d+,\"event\":\"trace-cut\",\"limit\":1024}"), text);
+        assertTrue(lines.subList(0, lines.size() - 1).stream().allMatch(line -> line.contains("\"entered\"")), text);
+        assertTrue(trace.wasCut());
+    }
+
+    @Test
+    void aMissionEndedThatFitsTheLimitIsNoCut() {
+        StringWriter out = new StringWriter();
+        JsonLinesTrace trace = new JsonLinesTrace(out, 1024);
+        String many = "x".repeat(1024 - 100 - "{\"nanos\":1,\"event\":\"wave-started\",\"block\":\"\",\"wave\":1}\n".length());
+        trace.record(new TraceEvent.WaveStarted(1, many, 1));
+        trace.record(new TraceEvent.MissionEnded(2, "completed", null));
+
+        assertFalse(trace.wasCut(), out.toString());
+        assertTrue(out.toString().endsWith("{\"nanos\":2,\"event\":\"mission-ended\",\"status\":\"completed\"}\n"));
+    }
+
+    @Test
+    void aWriteThatFailsLosesTheTraceOnceWithoutFailingTheCaller() {
+        IOException full = new IOException("No space left on device");
+        List<IOException> told = new ArrayList<>();
+        JsonLinesTrace trace = new JsonLinesTrace(new Appendable() {
+            @Override
+            public Appendable append(CharSequence text) throws IOException {
+                throw full;
+            }
+
+            @Override
+            public Appendable append(CharSequence text, int start, int end) throws IOException {
+                throw full;
+            }
+
+            @Override
+            public Appendable append(char c) throws IOException {
+                throw full;
+            }
+        });
+        trace.whenFailed(told::add);
+
+        trace.record(new TraceEvent.Entered(1, 0, "main", null));
+        trace.record(new TraceEvent.Entered(2, 1, "main", null));
+
+        assertEquals(List.of(full), told, "told once");
+        assertEquals(full, trace.failure().orElseThrow());
+        List<IOException> late = new ArrayList<>();
+        trace.whenFailed(late::add);
+        assertEquals(List.of(full), late, "an action given after the failure runs at once");
     }
 }
