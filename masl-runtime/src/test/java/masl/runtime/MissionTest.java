@@ -8,8 +8,9 @@ import java.io.StringWriter;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
-import masl.runtime.testing.CompactProgram;
+import java.util.regex.Pattern;
 import masl.runtime.testing.Driver;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
 import masl.runtime.trace.LeaveCause;
@@ -24,52 +25,20 @@ import org.junit.jupiter.params.provider.EnumSource;
 @Timeout(60)
 class MissionTest {
 
-    /** {@code asynchronous entry main (true) { local int k = 0; asynchronous entry b (true) { k++; if (k < 3) restart; } .logln(k); }} */
-    static final class Restart extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-        static final EntryDefinition B = MAIN.child("b", Mode.ASYNCHRONOUS);
-
-        private int k;
-
-        Restart(TestAgent self) {
-            super(self);
-        }
-
-        @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 9)) return; continue;
-                    case 1: k = 0; pc = 2; continue;
-                    case 2: if (!arrive(ctx, B, true, 3, 6)) return; continue;
-                    case 3: k++; if (!step(ctx, 4)) return; continue;
-                    case 4:
-                        if (k < 3) {
-                            ctx.restart(B);
-                            pc = 3;
-                            continue;
-                        }
-                        pc = 5;
-                        continue;
-                    case 5: if (!leave(ctx, B, 6)) return; continue;
-                    case 6: if (!endOf(ctx, B.sequence(), 7)) return; continue;
-                    case 7: self.logln(String.valueOf(k)); if (!step(ctx, 8)) return; continue;
-                    case 8: if (!leave(ctx, MAIN, 9)) return; continue;
-                    case 9: if (!endOf(ctx, MAIN.sequence(), 10)) return; continue;
-                    case 10: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
+    private static final MaslProgram RESTART = MaslProgram.of("restart.masl", MaslProgram.header(2) + """
+            asynchronous entry main (true) {
+              local int k = 0;
+              asynchronous entry b (true) { k++; if (k < 3) restart; }
+              .logln(k);
             }
-        }
-    }
+            """);
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void restartKeepsMembershipAndLocals(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             MemoryTrace trace = new MemoryTrace();
-            assertEquals("3\n3\n", Missions.run(driver, Restart.MAIN, 2, Restart::new, trace).journal());
+            assertEquals("3\n3\n", RESTART.run(driver.newScheduler(), trace).journal());
             assertEquals(2, trace.events(TraceEvent.Entered.class).stream().filter(e -> e.block().equals("b")).count());
             assertEquals(List.of(LeaveCause.END, LeaveCause.END), trace.events(TraceEvent.Left.class).stream()
                     .filter(e -> e.block().equals("b")).map(TraceEvent.Left::cause).toList());
@@ -77,92 +46,59 @@ class MissionTest {
     }
 
     /** A synchronous main whose agents log, then wait at a locked child nobody releases. */
-    static final class Stuck extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
-        static final EntryDefinition CHILD = MAIN.child("child", Mode.SYNCHRONOUS);
-
-        Stuck(TestAgent self) {
-            super(self);
-        }
-
-        @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            switch (pc) {
-                case 0:
-                    if (!arrive(ctx, MAIN, true, 1, 1)) return;
-                case 1:
-                    self.log("x");
-                    ctx.entry(CHILD).lock();
-                    arrive(ctx, CHILD, true, 2, 2);
-                    return;
-                default:
-                    throw new IllegalStateException("pc " + pc);
+    static final MaslProgram STUCK = MaslProgram.of("stuck.masl", MaslProgram.header(2) + """
+            Entry child;
+            synchronous entry main (true) {
+              .log("x");
+              child.lock();
+              synchronous entry child (true) { .nop(); }
             }
-        }
-    }
+            """);
 
     @Test
     void aMissionWhoseAgentsCanNoLongerProgressIsReportedAsDeadlocked() throws InterruptedException {
         StringWriter sink = new StringWriter();
-        Mission.Builder builder = Mission.builder().main(Stuck.MAIN).journal(sink);
-        builder.agent("a", new TestAgent(), Stuck::new).agent("b", new TestAgent(), Stuck::new);
-        MissionOutcome outcome = builder.build().run(Duration.ofSeconds(30));
+        MissionOutcome outcome = STUCK.newMission(TestAgent::new).journal(sink).build().run(Duration.ofSeconds(30));
         assertEquals(MissionOutcome.Status.DEADLOCKED, outcome.status());
         assertEquals("xx", outcome.journal());
         assertEquals("xx", sink.toString());
-        assertTrue(outcome.report().contains("agent a (0) at pc 2: [main, child(waiting-in)]"), outcome.report());
-        assertTrue(outcome.report().contains("agent b (1) at pc 2: [main, child(waiting-in)]"), outcome.report());
+        for (int agent = 0; agent < 2; agent++) {
+            String line = "agent a%d \\(%d\\) at pc \\d+ \\(stuck.masl:7: synchronous entry child \\(true\\)\\): "
+                    + "\\[main, child\\(waiting-in\\)\\]";
+            assertTrue(Pattern.compile(line.formatted(agent, agent)).matcher(outcome.report()).find(), outcome.report());
+        }
         MissionOutcome.MissionFailedException failure =
                 assertThrows(MissionOutcome.MissionFailedException.class, outcome::requireCompleted);
         assertTrue(failure.getMessage().startsWith("mission DEADLOCKED"), failure.getMessage());
     }
 
-    /** {@code asynchronous entry main (true) { while (true) {} }}: busy, never idle, never done. */
-    static final class Endless extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-
-        Endless(TestAgent self) {
-            super(self);
-        }
-
-        @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 1)) return; continue;
-                    case 1: if (!ctx.loopIteration()) return; continue;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
+    /** Busy, never idle, never done: a loop of instructions ({@code while (true) {}} would be a busy wait, parked). */
+    private static final MaslProgram ENDLESS = MaslProgram.of("endless.masl", MaslProgram.header(1) + """
+            asynchronous entry main (true) {
+              while (true) .nop();
             }
-        }
-    }
+            """);
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void aMissionThatDoesNotEndInTimeTimesOut(Driver driver) throws InterruptedException {
-        Mission mission = Mission.builder().main(Endless.MAIN).scheduler(driver.newScheduler())
-                .agent("a", new TestAgent(), Endless::new).build();
+        Mission mission = ENDLESS.newMission(TestAgent::new).scheduler(driver.newScheduler()).build();
         MissionOutcome outcome = mission.run(Duration.ofMillis(300));
         assertEquals(MissionOutcome.Status.TIMED_OUT, outcome.status());
-        assertTrue(outcome.report().contains("agent a (0) at pc 1: [main]"), outcome.report());
+        assertTrue(Pattern.compile("agent a0 \\(0\\) at pc \\d+ \\(endless.masl:4: .*\\): \\[main\\]").matcher(outcome.report()).find(),
+                outcome.report());
     }
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void aMissionStoppedFromOutsideEndsAsStopped(Driver driver) throws InterruptedException {
         CountDownLatch running = new CountDownLatch(1);
-        Mission mission = Mission.builder().scheduler(driver.newScheduler())
-                .agent("a", new TestAgent(), self -> new AgentProgram() {
-                    @Override
-                    protected void resume(AgentContext ctx) {
-                        while (true) {
-                            running.countDown();
-                            if (!ctx.loopIteration()) return;
-                        }
-                    }
-                }).build();
+        Mission mission = ENDLESS.newMission(() -> new TestAgent() {
+            @Override
+            public void nop() {
+                running.countDown();
+            }
+        }).scheduler(driver.newScheduler()).build();
         Thread stopper = new Thread(() -> {
             try {
                 running.await();
@@ -175,6 +111,8 @@ class MissionTest {
         assertEquals(MissionOutcome.Status.STOPPED, mission.run(Duration.ofSeconds(30)).status());
         stopper.join();
     }
+
+    // The programs below break the generated-code contract, or have no main: no MASL program does.
 
     @Test
     void aProgramThatReturnsWithoutSuspendingFailsTheMission() throws InterruptedException {
@@ -225,9 +163,7 @@ class MissionTest {
     @Test
     void anImplementationIsBoundToOneAgentOnly() {
         TestAgent shared = new TestAgent();
-        EntryDefinition main = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-        Mission.Builder builder = Mission.builder().main(main)
-                .agent("a", shared, Stuck::new).agent("b", shared, Stuck::new);
+        Mission.Builder builder = STUCK.newMission(() -> shared);
         assertThrows(IllegalStateException.class, builder::build);
     }
 

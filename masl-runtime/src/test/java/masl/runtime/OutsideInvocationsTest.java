@@ -54,8 +54,7 @@ class OutsideInvocationsTest {
 
     @Test
     void agentsStuckAtBarriersAreADeadlockEvenOpenToOutsideInvocations() throws InterruptedException {
-        Mission.Builder stuck = Mission.builder().main(MissionTest.Stuck.MAIN).openToOutsideInvocations();
-        stuck.agent("a", new TestAgent(), MissionTest.Stuck::new).agent("b", new TestAgent(), MissionTest.Stuck::new);
+        Mission.Builder stuck = MissionTest.STUCK.newMission(TestAgent::new).openToOutsideInvocations();
 
         assertEquals(MissionOutcome.Status.DEADLOCKED, stuck.build().run(Duration.ofSeconds(30)).status());
     }

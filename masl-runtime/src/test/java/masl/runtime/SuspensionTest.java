@@ -11,8 +11,10 @@ import java.util.concurrent.atomic.AtomicLong;
 import masl.runtime.scheduling.Blocking;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
+import masl.runtime.trace.Trace;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -30,6 +32,9 @@ class SuspensionTest {
      *   else { in = 1; while (flag == 0) {} .logln("woke"); }
      * }
      * </pre>
+     *
+     * Written by hand: the test counts how often the busy-wait's test is evaluated, which MASL
+     * cannot observe: a primitive call in the test would make the loop a spinning one, not parked.
      *
      * Agent 0 waits for agent 1 to be in the block before it sleeps: without that, an agent 1
      * whose first slice came late (a starved thread) entered a new wave of {@code main} after agent
@@ -115,46 +120,38 @@ class SuspensionTest {
     }
 
     /**
-     * Agent 0's primitive blocks its thread until agent 1's instruction opens a latch: with one
-     * worker, only a pool that adds a worker while a primitive blocks gets there. (The seeded
-     * scheduler runs everything on one thread by design, so it cannot run this program.)
+     * Agent 0's primitive ({@code nop}) blocks its thread until agent 1's ({@code log}) opens a
+     * latch: with one worker, only a pool that adds a worker while a primitive blocks gets there.
+     * (The seeded scheduler runs everything on one thread by design, so it cannot run this program.)
      */
-    static final class BlockingPrimitive extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
+    private static final MaslProgram BLOCKING_PRIMITIVE = MaslProgram.of("blocking.masl", MaslProgram.header(2) + """
+            asynchronous entry main (true) {
+              if (.getProxyID() == 0) .nop(); else .log("open");
+            }
+            """);
 
+    /** Blocks in {@code nop} until {@code log} opens the latch. */
+    private static final class Latched extends TestAgent {
         private final CountDownLatch latch;
         private final AtomicBoolean opened;
 
-        BlockingPrimitive(TestAgent self, CountDownLatch latch, AtomicBoolean opened) {
-            super(self);
+        Latched(CountDownLatch latch, AtomicBoolean opened) {
             this.latch = latch;
             this.opened = opened;
         }
 
         @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 3)) return; continue;
-                    case 1:
-                        if (self.getProxyID() == 0) {
-                            try {
-                                opened.set(Blocking.call(() -> latch.await(30, TimeUnit.SECONDS)));
-                            } catch (Exception e) {
-                                throw new IllegalStateException(e);
-                            }
-                        } else {
-                            latch.countDown();
-                        }
-                        if (!step(ctx, 2)) return;
-                        continue;
-                    case 2: if (!leave(ctx, MAIN, 3)) return; continue;
-                    case 3: if (!endOf(ctx, MAIN.sequence(), 4)) return; continue;
-                    case 4: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
+        public void nop() {
+            try {
+                opened.set(Blocking.call(() -> latch.await(30, TimeUnit.SECONDS)));
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
             }
+        }
+
+        @Override
+        public void log(String message) {
+            latch.countDown();
         }
     }
 
@@ -164,7 +161,7 @@ class SuspensionTest {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
             CountDownLatch latch = new CountDownLatch(1);
             AtomicBoolean opened = new AtomicBoolean();
-            Missions.run(driver, BlockingPrimitive.MAIN, 2, self -> new BlockingPrimitive(self, latch, opened));
+            BLOCKING_PRIMITIVE.run(driver.newScheduler(), Trace.NONE, () -> new Latched(latch, opened));
             assertTrue(opened.get());
         }
     }
