@@ -64,6 +64,15 @@ public final class MaslProgram {
         return new MaslProgram(MissionLoader.load(translation, path));
     }
 
+    /** Agents made by {@code make}, each also added to {@code made}, in proxy id order: the test keeps them. */
+    public static <T extends TestAgent> Supplier<T> recording(Supplier<T> make, List<? super T> made) {
+        return () -> {
+            T agent = make.get();
+            made.add(agent);
+            return agent;
+        };
+    }
+
     /** A run on {@code driver}'s scheduler, which must complete. */
     public MissionOutcome run(Driver driver) {
         return run(driver.newScheduler(), Trace.NONE);
