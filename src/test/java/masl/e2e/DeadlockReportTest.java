@@ -41,11 +41,11 @@ class DeadlockReportTest {
     }
 
     @Test
-    void aBusyWaitInLockStepIsReportedAtTheLoopAndTheOtherAgentAtItsBarrier() throws IOException {
+    void aBusyWaitInLockStepIsReportedAtTheLoopAndAMemberOfAnAsynchronousChildAtItsOwn() throws IOException {
         MaslCommand run = deadlocked("busy_wait_in_lock_step.masl");
         assertEquals("working\n", run.out());
-        assertReports(run, "agent a \\(0\\) at pc \\d+ \\(busy_wait_in_lock_step.masl:8: while \\(!done\\)\\): \\[main\\]");
-        assertReports(run, "agent b \\(1\\) at pc \\d+ \\(busy_wait_in_lock_step.masl:10: \\.logln\\(\"working\"\\);\\): \\[main\\]");
+        assertReports(run, "agent a \\(0\\) at pc \\d+ \\(busy_wait_in_lock_step.masl:11: while \\(!done\\)\\): \\[main\\]");
+        assertReports(run, "agent b \\(1\\) at pc \\d+ \\(busy_wait_in_lock_step.masl:16: while \\(!started\\)\\): \\[main, work\\]");
     }
 
     @Test

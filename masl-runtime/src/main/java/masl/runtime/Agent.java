@@ -108,6 +108,7 @@ public final class Agent implements AgentContext, AgentTask {
     private long progress;
     private long busyWaitEpoch = -1;
     private long busyWaitProgress = -1;
+    private final IdleIterations iterations = new IdleIterations();
     /** The program's pc was set to other code: resume it at once, in this slice. */
     private boolean redirected;
     /**
@@ -419,6 +420,7 @@ public final class Agent implements AgentContext, AgentTask {
         atCallBefore();
         requireOutsideReaction("a step boundary");
         progress++;
+        iterations.stepped(program.pc());
         SynchronisationBarrier barrier = barrierDue();
         if (startReactions(barrier != null)) {
             return false;
@@ -441,6 +443,7 @@ public final class Agent implements AgentContext, AgentTask {
         requireAtLevelOf(block.parent(), block);
         requireOutsideReaction("the end of " + block.name());
         progress++;
+        iterations.stepped(program.pc());
         SynchronisationBarrier barrier = barrierDue();
         if (startReactions(barrier != null)) {
             return false;
@@ -475,16 +478,21 @@ public final class Agent implements AgentContext, AgentTask {
         if (reactionsUnderway && events.isReacting()) {
             return yieldIfSliceUsed();
         }
-        if (startReactions(false)) {
+        SynchronisationBarrier barrier = idleStepDue();
+        if (startReactions(barrier != null)) {
             return false;
         }
-        return completeBoundary(null);
+        return completeBoundary(barrier);
     }
 
     @Override
     public boolean busyWaitIteration() {
         atLoopHead();
         if (!events.isReacting()) {
+            SynchronisationBarrier barrier = idleStepDue();
+            if (barrier != null) {
+                return idleBusyWaitStep(barrier);
+            }
             // Reactions assign locals: running them is progress, so the next iteration does not park.
             if (startReactions(false)) {
                 return false;
@@ -493,18 +501,58 @@ public final class Agent implements AgentContext, AgentTask {
         }
         long epoch = mission.changes().current();
         if (epoch == busyWaitEpoch && progress == busyWaitProgress) {
-            long ticket = mission.changes().parkUntilChanged(this, epoch);
-            busyWaitPark = true;
-            busyWaitTicket = ticket;
-            // An emitter that pushed before the ticket was published has not woken us: wake ourselves.
-            if (!events.isReacting() && !events.nothingPerceived()) {
-                unpark(ticket);
-            }
+            parkInBusyWait(epoch);
             return false;
         }
         busyWaitEpoch = epoch;
         busyWaitProgress = progress;
         return yieldIfSliceUsed();
+    }
+
+    /**
+     * The barrier the iteration ending here meets as an instruction of its own (§5): that of the
+     * innermost block, if it is synchronous and the iteration ran no instruction; else null.
+     */
+    private SynchronisationBarrier idleStepDue() {
+        return iterations.endIteration(program.pc()) ? barrierDue() : null;
+    }
+
+    /**
+     * An iteration of a busy-wait that ran no instruction, in a synchronous block: one instruction
+     * (§5), so events, invocations, then the barrier. Unless the step would change nothing: if
+     * nothing the agent can observe has changed since its previous busy-wait iteration, it ran no
+     * instruction or reaction since, and no other participant has arrived at the barrier in this
+     * phase, the agent parks until a change or an arrival, and iterates again then. A lone member
+     * would otherwise trip its own barrier again and again on a core of its own, and members that
+     * all wait so would trip it for each other; parked, they are idle for the deadlock watchdog. Its
+     * arrival only comes later in the phase: the others wait for it as for a member still running
+     * its instruction, and their first arrival wakes it.
+     */
+    private boolean idleBusyWaitStep(SynchronisationBarrier barrier) {
+        if (startReactions(true)) {
+            return false;
+        }
+        serveQueuedInvocations();
+        long epoch = mission.changes().current();
+        if (epoch == busyWaitEpoch && progress == busyWaitProgress && !barrier.hasArrivals()) {
+            barrier.wakeOnArrival(this, parkInBusyWait(epoch));
+            return false;
+        }
+        busyWaitEpoch = epoch;
+        busyWaitProgress = progress;
+        return completeBoundary(barrier);
+    }
+
+    /** Parks the agent until something it can observe changes (§5); returns the park's ticket. */
+    private long parkInBusyWait(long epoch) {
+        long ticket = mission.changes().parkUntilChanged(this, epoch);
+        busyWaitPark = true;
+        busyWaitTicket = ticket;
+        // An emitter that pushed before the ticket was published has not woken us: wake ourselves.
+        if (!events.isReacting() && !events.nothingPerceived()) {
+            unpark(ticket);
+        }
+        return ticket;
     }
 
     @Override
@@ -538,6 +586,7 @@ public final class Agent implements AgentContext, AgentTask {
         abandonEnding();
         fireCountermeasures(depthOf(block));
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.REELECT);
+        iterations.jumpedBack();
     }
 
     @Override
@@ -547,6 +596,7 @@ public final class Agent implements AgentContext, AgentTask {
         abandonEnding();
         fireCountermeasures(depthOf(block) + 1);
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.RESTART);
+        iterations.jumpedBack();
     }
 
     @Override

@@ -43,12 +43,14 @@ class SharedVariableAndScalarTest {
 
     /**
      * Two groups of four agents run block {@code p} one after the other, so it has two waves;
-     * each group stays in {@code p} until all four are in. (A synchronous main keeps everyone in
-     * one wave of main: an asynchronous one could end before the second group entered it.)
+     * each group stays in {@code p} until all four are in. (The top-level block has one wave, §4,
+     * so everyone stays in one wave of main. Main is asynchronous: in a synchronous one the second
+     * group's busy-wait would be steps of main, §5, waiting at its barrier for the members of
+     * {@code p}, whose one instruction of main {@code p} is, §6.4, while they wait for the second group.)
      */
     private static final MaslProgram SCALAR_PER_PARENT_WAVE = MaslProgram.of("waves.masl", MaslProgram.header(8) + """
             Entry p;
-            synchronous entry main (true) {
+            asynchronous entry main (true) {
               shared int inP = 0;
               while (.getProxyID() >= 4 && (inP < 4 || p.count > inP - 4)) {}   // until the first group left p
               asynchronous entry p (true) {

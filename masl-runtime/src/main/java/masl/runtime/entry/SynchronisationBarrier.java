@@ -35,6 +35,10 @@ import masl.runtime.Agent;
  *     under the coordinator's lock): participants and unarrived change together, by one, since a
  *     joining or leaving participant has not arrived. The one exception is an agent whose program
  *     died after it arrived: only participants drop, its arrival stays counted.</li>
+ * <li><b>Spin</b> ({@link #wakeOnArrival}, no lock): a participant in an idle iteration of a busy-wait
+ *     that would change nothing (MASL §5) parks without arriving, on a third stack, while nobody has
+ *     arrived in the phase; every arrival then takes that stack and wakes them, so they arrive late
+ *     in the phase, never miss it, and a phase never trips without them.</li>
  * <li><b>Trip</b> ({@link #trip}, under the coordinator's lock, only when unarrived is zero and
  *     participants are not): advance the phase, set unarrived to participants, take both stacks
  *     and let the agents go in arrival order, then the chunks, whole, in publication order.</li>
@@ -92,6 +96,12 @@ public final class SynchronisationBarrier {
     private final AtomicReference<Agent> arrivals = new AtomicReference<>();
     /** The chunks of arrivals published together in the current phase, last first, linked by {@link ArrivalChunk#below}. */
     private final AtomicReference<ArrivalChunk> chunks = new AtomicReference<>();
+    /** Participants parked in an idle busy-wait iteration instead of arriving, last first: the next arrival wakes them. */
+    private final AtomicReference<Spinner> spinners = new AtomicReference<>();
+
+    /** A park ({@code ticket}) of a participant in an idle busy-wait iteration (MASL §5), on a stack. */
+    private record Spinner(Agent agent, long ticket, Spinner below) {
+    }
 
     SynchronisationBarrier(Entry domain) {
         this.domain = domain;
@@ -157,7 +167,42 @@ public final class SynchronisationBarrier {
             }
             next = current - count * ONE_UNARRIVED;
         } while (!state.compareAndSet(current, next));
+        wakeSpinners();
         return next;
+    }
+
+    /** Whether a participant has arrived in the current phase; no lock. */
+    public boolean hasArrivals() {
+        long current = state.get();
+        return unarrived(current) < participants(current);
+    }
+
+    /**
+     * Ends the park {@code ticket} of {@code agent}, a participant that has not arrived, at the next
+     * arrival, or at once if a participant has arrived in the current phase already; no lock. No
+     * wake-up is lost: the spinner is pushed before the count is read again, and an arrival counts
+     * before it takes the spinners. A stale ticket, whose park something else ended, is ignored.
+     */
+    public void wakeOnArrival(Agent agent, long ticket) {
+        Spinner top;
+        Spinner pushed;
+        do {
+            top = spinners.get();
+            pushed = new Spinner(agent, ticket, top);
+        } while (!spinners.compareAndSet(top, pushed));
+        if (hasArrivals()) {
+            wakeSpinners();
+        }
+    }
+
+    private void wakeSpinners() {
+        // A plain read first: arrivals in lock-step, the hot path, mostly find no spinner.
+        if (spinners.get() == null) {
+            return;
+        }
+        for (Spinner spinner = spinners.getAndSet(null); spinner != null; spinner = spinner.below) {
+            spinner.agent.unpark(spinner.ticket);
+        }
     }
 
     /** The phase that a state after arrivals shows complete, or -1 if participants remain unarrived. */
