@@ -54,10 +54,21 @@ final class MaslProcess implements AutoCloseable {
         return start(Map.of(), folder, out, arguments);
     }
 
+    /** Starts {@code masl ARGUMENTS} in a JVM given {@code jvmOptions} ({@code -Xmx64m}), standard output written to {@code out}. */
+    static MaslProcess startWith(List<String> jvmOptions, File out, String... arguments) throws IOException {
+        return start(Map.of(), Path.of(""), jvmOptions, out, arguments);
+    }
+
     private static MaslProcess start(Map<String, String> environment, Path folder, File out, String... arguments)
             throws IOException {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), Main.class.getName()));
+        return start(environment, folder, List.of(), out, arguments);
+    }
+
+    private static MaslProcess start(Map<String, String> environment, Path folder, List<String> jvmOptions, File out,
+            String... arguments) throws IOException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
+        command.addAll(jvmOptions);
+        command.addAll(List.of("-cp", System.getProperty("java.class.path"), Main.class.getName()));
         command.addAll(List.of(arguments));
         ProcessBuilder builder = new ProcessBuilder(command).redirectOutput(out).directory(folder.toAbsolutePath().toFile());
         builder.environment().putAll(environment);

@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import masl.runtime.Mission;
+import masl.runtime.MissionOutOfMemory;
 import masl.runtime.MissionOutcome;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.scheduling.ReplayCommand;
@@ -160,6 +161,12 @@ final class RunCommand {
         }
         if (outcome.failure().orElse(null) instanceof PlatformFailure platform) {
             err.println("masl: " + platform.getMessage());
+            return Masl.MISSION_FAILED;
+        }
+        if (outcome.failure().orElse(null) instanceof MissionOutOfMemory) {
+            err.println("masl: the mission ran out of memory: its data outgrew the heap's "
+                    + MissionOutOfMemory.heapLimitMiB() + " MiB (java -Xmx, in JAVA_OPTS or MASL_OPTS, sets it)");
+            err.println(outcome.report().stripTrailing());
             return Masl.MISSION_FAILED;
         }
         String what = switch (outcome.status()) {

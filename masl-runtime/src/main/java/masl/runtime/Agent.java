@@ -197,6 +197,10 @@ public final class Agent implements AgentContext, AgentTask {
                 program.resume(this);
             } while (redirected && !finished);
         } catch (Throwable failure) {
+            if (failure instanceof OutOfMemoryError) {
+                // Before die() allocates: the reserve released, the mission failed.
+                MemoryReserve.exhausted();
+            }
             die(failure);
             return;
         }
@@ -1109,10 +1113,14 @@ public final class Agent implements AgentContext, AgentTask {
     }
 
     private boolean yieldIfSliceUsed() {
-        if (++stepsThisSlice < mission.scheduler().stepsPerSlice()) {
+        if (++stepsThisSlice < mission.scheduler().stepsPerSlice() && !mission.memoryExhausted()) {
             return true;
         }
-        unpark(prepareToPark());
+        long ticket = prepareToPark();
+        if (!mission.memoryExhausted()) {
+            unpark(ticket);
+        }
+        // else parked for good: the mission failed for want of memory, which this agent would take
         return false;
     }
 

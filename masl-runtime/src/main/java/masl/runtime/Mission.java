@@ -153,6 +153,7 @@ public final class Mission {
         agentNames = builder.agents.stream().map(Builder.AgentDeclaration::name).toList();
         running = new AtomicInteger(agents.size());
         coordinator.addAgents(agents);
+        MemoryReserve.hold();
     }
 
     private void addEntries(EntryDefinition definition, Entry parent, Map<EntryDefinition, Entry> blocks) {
@@ -181,8 +182,17 @@ public final class Mission {
             ended.countDown();
         }
         trace.record(new TraceEvent.MissionStarted(scheduler.nanoTime(), agentNames));
-        scheduler.start(agents);
-        MissionOutcome.Status status = awaitEnd(timeout);
+        MemoryReserve.watch(outOfMemory);
+        MissionOutcome.Status status;
+        try {
+            scheduler.start(agents);
+            status = awaitEnd(timeout);
+        } catch (OutOfMemoryError exhausted) {
+            MemoryReserve.exhausted();
+            status = MissionOutcome.Status.FAILED;
+        } finally {
+            MemoryReserve.forget(outOfMemory);
+        }
         over = true;
         trace.record(new TraceEvent.MissionEnded(scheduler.nanoTime(), status.name().toLowerCase(Locale.ROOT),
                 status == MissionOutcome.Status.STOPPED ? stopReason : null));
@@ -240,6 +250,23 @@ public final class Mission {
     private boolean noAgentEnding() {
         long notDone = agents.stream().filter(agent -> !agent.isDone()).count();
         return running.get() == notDone;
+    }
+
+    /** Made before it is needed: when it is, the heap has no room. */
+    private final MissionOutOfMemory heapExhausted = new MissionOutOfMemory();
+    /** The heap was exhausted: agents stop at their next yield, allocating no more. */
+    private volatile boolean memoryExhausted;
+    /** The heap is exhausted ({@link MemoryReserve}): the mission fails at once. */
+    private final Runnable outOfMemory = () -> {
+        memoryExhausted = true;
+        if (failure.compareAndSet(null, heapExhausted)) {
+            ended.countDown();
+        }
+    };
+
+    /** Whether the heap was exhausted while the mission ran: its agents run no more. */
+    boolean memoryExhausted() {
+        return memoryExhausted;
     }
 
     /** Stops the mission from outside: {@link #run} returns {@link MissionOutcome.Status#STOPPED}. */
@@ -553,6 +580,9 @@ public final class Mission {
     }
 
     void agentFailed(Agent agent, Throwable cause) {
+        if (cause instanceof OutOfMemoryError) {
+            MemoryReserve.exhausted();
+        }
         if (failure.compareAndSet(null, new IllegalStateException(agent.describe() + " failed", cause))) {
             ended.countDown();
         }
