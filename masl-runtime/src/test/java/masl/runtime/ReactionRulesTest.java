@@ -23,11 +23,8 @@ import org.junit.jupiter.params.provider.EnumSource;
 @Timeout(120)
 class ReactionRulesTest {
 
-    private static MaslProgram program(String name, int agents, String text) {
-        return MaslProgram.of(name, MaslProgram.header(agents) + text);
-    }
 
-    private static final MaslProgram PRIORITY = program("priority.masl", 1, """
+    private static final MaslProgram PRIORITY = MaslProgram.of("priority.masl", 1, """
             asynchronous entry main (true) {
               local event x, y, z, go;
               asynchronous entry inner (true) {
@@ -52,7 +49,7 @@ class ReactionRulesTest {
         }
     }
 
-    private static final MaslProgram NEXT_BOUNDARY = program("next.masl", 1, """
+    private static final MaslProgram NEXT_BOUNDARY = MaslProgram.of("next.masl", 1, """
             asynchronous entry main (true) {
               local event ping;
               local int n = 0;
@@ -74,7 +71,7 @@ class ReactionRulesTest {
 
     /** Two reactions of {@code work} to occurrences queued together, {@code first} written first. */
     private static MaslProgram lastDecides(String name, String first, String second) {
-        return program(name, 1, """
+        return MaslProgram.of(name, 1, """
                 asynchronous entry main (true) {
                   local event go, leave, stay;
                   asynchronous entry work (true) {
@@ -104,7 +101,7 @@ class ReactionRulesTest {
         }
     }
 
-    private static final MaslProgram GRAND_PARENT = program("grandparent.masl", 2, """
+    private static final MaslProgram GRAND_PARENT = MaslProgram.of("grandparent.masl", 2, """
             asynchronous entry main (true) {
               local event alarm;
               asynchronous entry top (true) {
@@ -139,7 +136,7 @@ class ReactionRulesTest {
         }
     }
 
-    private static final MaslProgram DEFAULT = program("default.masl", 1, """
+    private static final MaslProgram DEFAULT = MaslProgram.of("default.masl", 1, """
             asynchronous entry main (true) {
               local event a, b;
               asynchronous entry work (true) {
@@ -164,7 +161,7 @@ class ReactionRulesTest {
 
     /** {@code reactToA} ends with {@code clearEvents; resume;} or {@code resume;}. */
     private static MaslProgram clear(String name, String reactToA) {
-        return program(name, 1, """
+        return MaslProgram.of(name, 1, """
                 asynchronous entry main (true) {
                   local event go, a, b, c;
                   emit(go);
@@ -194,7 +191,7 @@ class ReactionRulesTest {
         }
     }
 
-    private static final MaslProgram DROP_AND_LEAVE = program("drop.masl", 1, """
+    private static final MaslProgram DROP_AND_LEAVE = MaslProgram.of("drop.masl", 1, """
             asynchronous entry main (true) {
               local event lost, e;
               asynchronous entry work (true) {
@@ -220,7 +217,7 @@ class ReactionRulesTest {
         }
     }
 
-    private static final MaslProgram RESTART_FROM_REACTION = program("restart.masl", 1, """
+    private static final MaslProgram RESTART_FROM_REACTION = MaslProgram.of("restart.masl", 1, """
             asynchronous entry main (true) {
               local event again;
               local int k = 0;
@@ -249,7 +246,7 @@ class ReactionRulesTest {
         }
     }
 
-    private static final MaslProgram REELECT_FROM_REACTION = program("reelect.masl", 2, """
+    private static final MaslProgram REELECT_FROM_REACTION = MaslProgram.of("reelect.masl", 2, """
             asynchronous entry main (true) {
               local event again;
               local int rounds = 0;

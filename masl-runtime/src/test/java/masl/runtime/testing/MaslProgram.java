@@ -53,6 +53,11 @@ public final class MaslProgram {
         return TRANSLATED.computeIfAbsent(name + "\n" + text, key -> translate(name, text));
     }
 
+    /** {@code body} after {@link #header(int) header(agents)}, translated and compiled (once). */
+    public static MaslProgram of(String name, int agents, String body) {
+        return of(name, header(agents) + body);
+    }
+
     private static MaslProgram translate(String name, String text) {
         Path agents = TestTypes.folder();
         Path testClasses = Path.of(MaslClassPath.locationOf(TestAgent.class).orElseThrow());

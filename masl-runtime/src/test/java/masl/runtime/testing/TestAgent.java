@@ -35,9 +35,14 @@ public class TestAgent extends AgentImplementation {
         services().log(message + "\n");
     }
 
-    /** One instruction, recorded with this agent's proxy id in the test's {@link PhaseLog}. */
-    public void instruction(String label) {
+    /**
+     * One instruction, recorded with this agent's proxy id in the test's {@link PhaseLog}; returns
+     * {@code label}, so that an instruction that does something else records it too
+     * ({@code emitWithMessage(e, .instruction("i2"))}).
+     */
+    public String instruction(String label) {
         phases.instruction(getProxyID(), label);
+        return label;
     }
 
     /** Logs {@code label} and {@code value} on a line and returns {@code value}: an expression a test sees evaluated. */
