@@ -4,14 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.File;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
 import masl.e2e.agents.HomeOnly;
@@ -62,14 +60,7 @@ class CommandLineTest {
             assertEquals(143, masl.awaitExit(), masl::toString);
             assertEquals("masl: the mission was stopped by a signal: Ctrl-C (SIGINT) or SIGTERM\n", masl.err());
         }
-        String text = Files.readString(trace);
-        assertTrue(text.endsWith("}\n"), () -> "cut mid-record: " + text.substring(Math.max(0, text.length() - 200)));
-        List<String> lines = text.lines().toList();
-        ObjectMapper json = new ObjectMapper();
-        for (String line : lines) {
-            json.readTree(line);
-        }
-        JsonNode last = json.readTree(lines.get(lines.size() - 1));
+        JsonNode last = CompleteTrace.lastRecord(trace);
         assertEquals("mission-ended", last.get("event").asText(), last::toString);
         assertEquals("stopped", last.get("status").asText(), last::toString);
         assertEquals("a signal: Ctrl-C (SIGINT) or SIGTERM", last.get("reason").asText(), last::toString);
