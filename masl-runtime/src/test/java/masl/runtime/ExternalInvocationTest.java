@@ -4,11 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.StringWriter;
+import java.util.List;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.atomic.AtomicIntegerArray;
 import java.util.concurrent.atomic.AtomicReferenceArray;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
 import masl.runtime.trace.JsonLinesTrace;
@@ -29,66 +30,24 @@ class ExternalInvocationTest {
     /**
      * Two agents in one synchronous block call each other {@link #ROUNDS} times, each call an
      * instruction: every call finds the callee awaiting its own call, or at the barrier, and is served.
-     * <pre>
-     * synchronous entry main (true) {
-     *   for (r = 0; r &lt; 3; r++) seen[r] = other.getProxyID();
-     * }
-     * </pre>
      */
-    static final class Mutual extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
-
-        private final AtomicReferenceArray<TestAgent> population;
-        private final AtomicIntegerArray seen;
-        private CompletableFuture<Integer> call;
-        private int round;
-
-        Mutual(TestAgent self, AtomicReferenceArray<TestAgent> population, AtomicIntegerArray seen) {
-            super(self);
-            this.population = population;
-            this.seen = seen;
-            population.set(self.getProxyID(), self);
-        }
-
-        @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            int me = self.getProxyID();
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 4)) return; continue;
-                    case 1:
-                        if (round == ROUNDS) {
-                            pc = 3;
-                            continue;
-                        }
-                        TestAgent other = population.get(1 - me);
-                        call = ctx.invoke(other, "getProxyID", -1, other::getProxyID);
-                        pc = 2;
-                        if (!ctx.await(call)) return;
-                    case 2:
-                        seen.set(me * ROUNDS + round++, call.join());
-                        if (!step(ctx, 1)) return;
-                        continue;
-                    case 3: if (!leave(ctx, MAIN, 4)) return; continue;
-                    case 4: if (!endOf(ctx, MAIN.sequence(), 5)) return; continue;
-                    case 5: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
+    private static final MaslProgram MUTUAL = MaslProgram.of("mutual.masl", 2, """
+            synchronous entry main (true) {
+              local int r;
+              for (r = 0; r < %d; r++) {
+                if (.getProxyID() == 0) .logln("0 saw " + a1.getProxyID()); else .logln("1 saw " + a0.getProxyID());
+              }
             }
-        }
-    }
+            """.formatted(ROUNDS));
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void twoAgentsCallingEachOtherInASynchronousBlockNeverDeadlock(Driver driver) {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
-            AtomicIntegerArray seen = new AtomicIntegerArray(2 * ROUNDS);
-            AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(2);
             StringWriter trace = new StringWriter();
-            Missions.run(driver.newScheduler(), Mutual.MAIN, 2, null, self -> new Mutual(self, population, seen),
-                    new JsonLinesTrace(trace));
-            assertEquals("[1, 1, 1, 0, 0, 0]", seen.toString());
+            String journal = MUTUAL.run(driver.newScheduler(), new JsonLinesTrace(trace)).journal();
+            assertEquals(List.of("0 saw 1", "0 saw 1", "0 saw 1", "1 saw 0", "1 saw 0", "1 saw 0"),
+                    journal.lines().sorted().toList(), journal);
             assertTrue(trace.toString().contains(
                     "\"event\":\"invocation-made\",\"requester\":0,\"callee\":1,\"member\":\"getProxyID\""),
                     trace::toString);
