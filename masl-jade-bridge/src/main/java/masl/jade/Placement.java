@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.regex.Pattern;
+import masl.runtime.diagnostic.Diagnostic;
 
 /**
  * Where each MASL agent's body lives ({@code masl run --place}): {@code w1=c2,w3=c2} on the command
@@ -79,6 +80,6 @@ public final class Placement {
     }
 
     private static IllegalArgumentException error(String where, int line, int column, String message) {
-        return new IllegalArgumentException(where + ":" + line + ":" + column + ": error: " + message);
+        return new IllegalArgumentException(Diagnostic.error(where, line, column, message).headline());
     }
 }

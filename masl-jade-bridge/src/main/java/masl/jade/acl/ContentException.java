@@ -1,5 +1,7 @@
 package masl.jade.acl;
 
+import masl.runtime.diagnostic.Diagnostic;
+
 /**
  * A message a MASL agent cannot understand: content that is not JSON, not an invocation, names an
  * unknown primitive, or has arguments the primitive cannot take; or a message with the wrong
@@ -39,6 +41,6 @@ public final class ContentException extends Exception {
 
     /** {@code content:LINE:COLUMN: error: MESSAGE}, or {@code message: error: MESSAGE} without a position. */
     public String describe() {
-        return (line > 0 ? SOURCE + ":" + line + ":" + column : "message") + ": error: " + getMessage();
+        return Diagnostic.error(line > 0 ? SOURCE : "message", line, column, getMessage()).headline();
     }
 }
