@@ -8,9 +8,12 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import masl.runtime.MissionOutcome;
 import masl.runtime.descriptor.AgentPath;
+import masl.runtime.diagnostic.Diagnostic;
+import masl.runtime.diagnostic.DiagnosticPrinter;
 import masl.sim.scenario.RunOptions;
 import masl.sim.scenario.Scenario;
 import masl.sim.scenario.ScenarioException;
@@ -66,11 +69,12 @@ final class SimRun {
         try {
             scenario = new ScenarioLoader().load(scenarioFile);
         } catch (ScenarioException invalid) {
-            invalid.errors().forEach(err::println);
+            printErrors(invalid.diagnostics());
             return Masl.PROGRAM_ERRORS;
         }
         if (scenario.mission().isEmpty()) {
-            err.println(scenarioFile + ":1:1: error: the scenario names no mission (<mission file=\"NAME.masl\"/>)");
+            printErrors(List.of(Diagnostic.error(scenarioFile.toString(), 1, 1,
+                    "the scenario names no mission (<mission file=\"NAME.masl\"/>)")));
             return Masl.PROGRAM_ERRORS;
         }
         SourceFile source = readMission(scenario.mission().get());
@@ -114,7 +118,7 @@ final class SimRun {
             }
             return report(result, scenario, output, signals, journal);
         } catch (ScenarioException doesNotFit) {
-            doesNotFit.errors().forEach(err::println);
+            printErrors(doesNotFit.diagnostics());
             return Masl.PROGRAM_ERRORS;
         } catch (IOException cannotWrite) {
             err.println("masl: cannot write the simulation's output to " + output + ": "
@@ -135,6 +139,11 @@ final class SimRun {
      * the scenario and building its worlds, so the first line has no factor (it would be near zero
      * and mean nothing).
      */
+    /** A scenario's errors as a program's are printed: each with its source line and a caret, then their count. */
+    private void printErrors(List<Diagnostic> errors) {
+        new DiagnosticPrinter(Map.of()).print(errors, err);
+    }
+
     private String status(Scenario scenario, long elapsedNanos) {
         double now = simulated;
         String of = scenario.duration() > 0 ? String.format(java.util.Locale.ROOT, " of %.0f s", scenario.duration()) : "";

@@ -164,7 +164,7 @@ class SimRunTest {
                   <world"""));
         Run run = Run.of("run", "--sim", scenario.toString(), "--timeout", "5");
         assertEquals(new Run(1, "", scenario + ":2:3: error: iterations: '2000000000' is not a whole number from 1"
-                + " to 10000\n"), run);
+                + " to 10000\n  <physics iterations=\"2000000000\"/>\n  ^\n1 error\n"), run);
     }
 
     @Test

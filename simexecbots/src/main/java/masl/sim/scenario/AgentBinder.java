@@ -7,6 +7,7 @@ import masl.agents.MaamAtom;
 import masl.agents.WheeledRobot;
 import masl.runtime.AgentImplementation;
 import masl.runtime.MissionProgram;
+import masl.runtime.diagnostic.Diagnostic;
 import masl.sim.physics.PhysicsWorld;
 import masl.sim.robots.SimulatedAtom;
 import masl.sim.robots.SimulatedWheeledRobot;
@@ -85,9 +86,9 @@ final class AgentBinder {
                 default -> throw new IllegalStateException(model.name());
             }
         } catch (XodeException e) {
-            List<String> errors = new ArrayList<>();
-            errors.add(placed.location() + ": error: the body of agent '" + placed.name() + "' cannot be loaded:");
-            e.problems().stream().map(XodeProblem::format).forEach(errors::add);
+            List<Diagnostic> errors = new ArrayList<>();
+            errors.add(placed.location().error("the body of agent '" + placed.name() + "' cannot be loaded:"));
+            e.problems().stream().map(XodeProblem::diagnostic).forEach(errors::add);
             throw new ScenarioException(errors);
         }
     }
@@ -120,7 +121,7 @@ final class AgentBinder {
     }
 
     private static ScenarioException located(SourceLocation where, String message) {
-        return new ScenarioException(List.of(where + ": error: " + message));
+        return new ScenarioException(List.of(where.error(message)));
     }
 
     private static String describe(Throwable e) {

@@ -11,6 +11,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import javax.lang.model.SourceVersion;
+import masl.runtime.diagnostic.Diagnostic;
 import masl.sim.physics.PhysicsSettings;
 import masl.sim.xode.SecureXmlReader;
 import masl.sim.xode.XodeElement;
@@ -77,7 +78,7 @@ public final class ScenarioLoader {
         try {
             text = Files.readString(file, StandardCharsets.UTF_8);
         } catch (IOException e) {
-            throw new ScenarioException(List.of(file + ":1:1: error: cannot read the scenario: " + e.getMessage()));
+            throw new ScenarioException(List.of(Diagnostic.error(file.toString(), 1, 1, "cannot read the scenario: " + e.getMessage())));
         }
         Path folder = file.toAbsolutePath().getParent();
         return load(file.toString(), text, folder);
@@ -94,7 +95,7 @@ public final class ScenarioLoader {
         try {
             root = new SecureXmlReader(name, text).read();
         } catch (XodeException e) {
-            throw new ScenarioException(e.problems().stream().map(XodeProblem::format).toList());
+            throw new ScenarioException(e.problems().stream().map(XodeProblem::diagnostic).toList());
         }
         return new Reading(name, folder).read(root);
     }
@@ -103,7 +104,7 @@ public final class ScenarioLoader {
     private static final class Reading {
         private final String fileName;
         private final Path folder;
-        private final List<String> errors = new ArrayList<>();
+        private final List<Diagnostic> errors = new ArrayList<>();
 
         Reading(String fileName, Path folder) {
             this.fileName = fileName;
@@ -159,7 +160,7 @@ public final class ScenarioLoader {
                 fault(element, agents).ifPresent(faults::add);
             }
             if (!errors.isEmpty()) {
-                throw new ScenarioException(errors);
+                throw new ScenarioException(errors.stream().sorted().toList());
             }
             String name = root.attribute("name").orElse(Path.of(fileName).getFileName().toString());
             return new Scenario(name, fileName, physics, mode, slicesPerStep, duration, worlds, agents, faults,
@@ -383,7 +384,7 @@ public final class ScenarioLoader {
         }
 
         private void error(XodeElement element, String message) {
-            errors.add(element.location() + ": error: " + message);
+            errors.add(element.location().error(message));
         }
 
         private static String formatBound(double bound) {

@@ -14,6 +14,7 @@ import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
+import masl.runtime.diagnostic.Diagnostic;
 import masl.runtime.scheduling.Scheduler;
 import masl.runtime.trace.JsonLinesTrace;
 import masl.runtime.trace.Trace;
@@ -179,12 +180,12 @@ public final class ScenarioRunner {
     }
 
     private void checkPlacedAgentsAreDeclared(MissionProgram program) throws ScenarioException {
-        List<String> errors = new ArrayList<>();
+        List<Diagnostic> errors = new ArrayList<>();
         for (Scenario.Agent agent : scenario.agents()) {
             if (program.agents().stream().noneMatch(spec -> spec.name().equals(agent.name()))) {
-                errors.add(agent.location() + ": error: agent '" + agent.name()
+                errors.add(agent.location().error("agent '" + agent.name()
                         + "' is not declared by the mission (it declares "
-                        + program.agents().stream().map(MissionProgram.AgentSpec::name).toList() + ")");
+                        + program.agents().stream().map(MissionProgram.AgentSpec::name).toList() + ")"));
             }
         }
         if (!errors.isEmpty()) {
@@ -197,7 +198,7 @@ public final class ScenarioRunner {
             try {
                 world.load(source, "");
             } catch (XodeException e) {
-                throw new ScenarioException(e.problems().stream().map(XodeProblem::format).toList());
+                throw new ScenarioException(e.problems().stream().map(XodeProblem::diagnostic).toList());
             }
         }
     }

@@ -1,7 +1,9 @@
 package masl.sim.xode;
 
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
+import masl.runtime.diagnostic.Severity;
 
 /**
  * Collects the problems of one load so that every error of a file is reported at once rather
@@ -18,7 +20,7 @@ final class Problems {
     }
 
     void error(XodeElement element, String message) {
-        errors.add(new XodeProblem(XodeProblem.Severity.ERROR, element.location(), element.name(), message));
+        errors.add(new XodeProblem(Severity.ERROR, element.location(), element.name(), message));
     }
 
     /** Something the loader can work around (xode.md §10); an error in strict mode. */
@@ -26,22 +28,20 @@ final class Problems {
         if (strict) {
             error(element, message);
         } else {
-            warnings.add(new XodeProblem(XodeProblem.Severity.WARNING, element.location(), element.name(), message));
+            warnings.add(new XodeProblem(Severity.WARNING, element.location(), element.name(), message));
         }
     }
 
     /** A warning that stays a warning in strict mode (e.g. another 1.0rNN revision, xode.md §10.17). */
     void notice(XodeElement element, String message) {
-        warnings.add(new XodeProblem(XodeProblem.Severity.WARNING, element.location(), element.name(), message));
+        warnings.add(new XodeProblem(Severity.WARNING, element.location(), element.name(), message));
     }
 
     /** @throws XodeException listing every error, in document order, if there is any */
     void throwIfErrors() throws XodeException {
         if (!errors.isEmpty()) {
             List<XodeProblem> sorted = new ArrayList<>(errors);
-            sorted.sort((a, b) -> a.location().line() != b.location().line()
-                    ? Integer.compare(a.location().line(), b.location().line())
-                    : Integer.compare(a.location().column(), b.location().column()));
+            sorted.sort(Comparator.comparing(XodeProblem::diagnostic));
             throw new XodeException(sorted);
         }
     }

@@ -8,6 +8,7 @@ import javax.xml.stream.Location;
 import javax.xml.stream.XMLStreamConstants;
 import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamReader;
+import masl.runtime.diagnostic.Severity;
 import masl.runtime.xml.SecureXml;
 
 /**
@@ -58,7 +59,7 @@ public final class SecureXmlReader {
             if (event == XMLStreamConstants.START_ELEMENT) {
                 XodeElement element = new XodeElement(qualifiedName(reader), locationOf(reader.getLocation()));
                 if (open.size() == DEEPEST) {
-                    throw new XodeException(List.of(new XodeProblem(XodeProblem.Severity.ERROR, element.location(),
+                    throw new XodeException(List.of(new XodeProblem(Severity.ERROR, element.location(),
                             element.name(), String.format("elements nested more than %,d deep: masl loads at most %,d"
                                     + " levels", DEEPEST, DEEPEST))));
                 }
@@ -79,7 +80,7 @@ public final class SecureXmlReader {
             }
         }
         if (root == null) {
-            throw new XodeException(List.of(new XodeProblem(XodeProblem.Severity.ERROR,
+            throw new XodeException(List.of(new XodeProblem(Severity.ERROR,
                     new SourceLocation(fileName, 1, 1), "", "the file holds no XML element")));
         }
         return root;
@@ -96,7 +97,7 @@ public final class SecureXmlReader {
 
     private XodeException malformed(XMLStreamException e) {
         SourceLocation where = new SourceLocation(fileName, Math.max(1, SecureXml.lineOf(e)), Math.max(1, SecureXml.columnOf(e)));
-        return new XodeException(List.of(new XodeProblem(XodeProblem.Severity.ERROR, where, "",
+        return new XodeException(List.of(new XodeProblem(Severity.ERROR, where, "",
                 "malformed XML: " + SecureXml.messageOf(e))));
     }
 }

@@ -2,6 +2,7 @@ package masl.sim.xode;
 
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
+import masl.runtime.diagnostic.Severity;
 
 /**
  * Loads XODE 1.0r23 documents (xode.md) into ode4j.
@@ -97,14 +98,14 @@ public final class XodeLoader {
             scene = new SceneReader(problems, options, safePrefix, target.placement(), target.takenNames()).read(root);
         } catch (RuntimeException e) {
             // A reader bug must still reach the user as a located message, never as a stack trace.
-            throw new XodeException(List.of(new XodeProblem(XodeProblem.Severity.ERROR, root.location(), root.name(),
+            throw new XodeException(List.of(new XodeProblem(Severity.ERROR, root.location(), root.name(),
                     "internal error while reading this file: " + e)));
         }
         problems.throwIfErrors();
         try {
             return new SceneBuilder().build(scene, target, source.name(), safePrefix, problems.warnings());
         } catch (RuntimeException e) {
-            throw new XodeException(List.of(new XodeProblem(XodeProblem.Severity.ERROR, root.location(), root.name(),
+            throw new XodeException(List.of(new XodeProblem(Severity.ERROR, root.location(), root.name(),
                     "ode4j refused the scene: " + e.getMessage())));
         }
     }

@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
+import masl.runtime.diagnostic.Severity;
 
 /**
  * Where an XODE document comes from, and the name its messages use. Documents are read as UTF-8
@@ -77,7 +78,7 @@ public final class XodeSource {
             String text = new String(bytes.get(), StandardCharsets.UTF_8);
             return text.startsWith("\uFEFF") ? text.substring(1) : text;
         } catch (IOException e) {
-            throw new XodeException(List.of(new XodeProblem(XodeProblem.Severity.ERROR, new SourceLocation(name, 1, 1), "",
+            throw new XodeException(List.of(new XodeProblem(Severity.ERROR, new SourceLocation(name, 1, 1), "",
                     "cannot read the file: " + e.getMessage())));
         }
     }

@@ -9,6 +9,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import masl.runtime.diagnostic.Diagnostic;
 import masl.sim.physics.PhysicsSettings;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -24,7 +25,7 @@ class ScenarioLoaderTest {
     }
 
     private List<String> errors(String text) {
-        return assertThrows(ScenarioException.class, () -> load(text)).errors();
+        return assertThrows(ScenarioException.class, () -> load(text)).diagnostics().stream().map(Diagnostic::headline).toList();
     }
 
     @Test
@@ -81,7 +82,7 @@ class ScenarioLoaderTest {
     }
 
     @Test
-    void everyErrorOfAFileIsReportedWithItsPosition() {
+    void everyErrorOfAFileIsReportedWithItsPositionInFileOrder() {
         List<String> errors = errors("""
                 <scenario>
                   <physics step="-0.01" seed="x" gravity="0 -9.81" mode="fast"/>
@@ -105,12 +106,12 @@ class ScenarioLoaderTest {
                 "s.xml:4:3: error: model: unknown robot model 'tank' (known: wheeled, maam-atom)",
                 "s.xml:5:3: error: agent 'k0' placed twice",
                 "s.xml:6:22: error: <pose>: only a robot agent (with a model) has a pose",
-                "s.xml:9:3: error: unknown element <robot> in <scenario>",
-                "s.xml:10:3: error: <mission> needs the attribute 'file'",
-                "s.xml:11:3: error: <mission> given twice",
                 "s.xml:7:3: error: agent: no agent 'nobody' in this scenario",
                 "s.xml:8:3: error: time: -1 must be at least 0",
-                "s.xml:8:3: error: agent: 'soft' is not a wheeled robot; only they can fail"), errors);
+                "s.xml:8:3: error: agent: 'soft' is not a wheeled robot; only they can fail",
+                "s.xml:9:3: error: unknown element <robot> in <scenario>",
+                "s.xml:10:3: error: <mission> needs the attribute 'file'",
+                "s.xml:11:3: error: <mission> given twice"), errors);
     }
 
     @Test

@@ -21,6 +21,7 @@ import masl.agents.WheeledRobot;
 import masl.runtime.AgentContext;
 import masl.runtime.AgentProgram;
 import masl.runtime.MissionOutcome;
+import masl.runtime.diagnostic.Diagnostic;
 import masl.sim.output.RunRecorder;
 import masl.sim.output.TrajectoryPicture;
 import masl.sim.robots.SimulatedWheeledRobot;
@@ -183,7 +184,7 @@ class ScenarioRunnerTest {
         TestMission mission = new TestMission().agent("k0", WheeledRobot.class, RobotPrograms::hello);
         ScenarioException e = assertThrows(ScenarioException.class, () -> new ScenarioRunner(scenario).run(mission, quick()));
         assertEquals(List.of("test.scenario.xml:3:1: error: agent 'ghost' is not declared by the mission (it declares [k0])"),
-                e.errors());
+                headlines(e));
     }
 
     @Test
@@ -192,7 +193,7 @@ class ScenarioRunnerTest {
         TestMission mission = new TestMission().agent("a0", MaamAtom.class, RobotPrograms::hello);
         ScenarioException e = assertThrows(ScenarioException.class, () -> new ScenarioRunner(scenario).run(mission, quick()));
         assertEquals(List.of("test.scenario.xml:3:1: error: agent 'a0' is declared a masl.agents.MaamAtom by the mission, "
-                + "but masl.agents.WheeledRobot is not one"), e.errors());
+                + "but masl.agents.WheeledRobot is not one"), headlines(e));
     }
 
     @Test
@@ -201,7 +202,7 @@ class ScenarioRunnerTest {
         TestMission mission = new TestMission().agent("k0", Default.class, RobotPrograms::hello);
         ScenarioException e = assertThrows(ScenarioException.class, () -> new ScenarioRunner(scenario).run(mission, quick()));
         assertEquals(List.of("test.scenario.xml:3:1: error: class masl.agents.Default of agent 'k0' does not extend "
-                + "masl.agents.WheeledRobot, the class of model 'wheeled'"), e.errors());
+                + "masl.agents.WheeledRobot, the class of model 'wheeled'"), headlines(e));
     }
 
     @Test
@@ -219,6 +220,10 @@ class ScenarioRunnerTest {
         assertEquals(1.0, battery.get(), 1e-3, "a full battery read through the subclass");
     }
 
+    private static List<String> headlines(ScenarioException e) {
+        return e.diagnostics().stream().map(Diagnostic::headline).toList();
+    }
+
     /** A user's robot class: the model's class with more of its own. */
     public static final class CarefulRobot extends WheeledRobot {
     }
@@ -228,7 +233,7 @@ class ScenarioRunnerTest {
         Scenario scenario = scenario("<initialisation class=\"no.such.Setup\"/>");
         ScenarioException e = assertThrows(ScenarioException.class,
                 () -> new ScenarioRunner(scenario).run(new TestMission(), quick()));
-        assertEquals(List.of("test.scenario.xml:3:1: error: initialisation class: class no.such.Setup not found"), e.errors());
+        assertEquals(List.of("test.scenario.xml:3:1: error: initialisation class: class no.such.Setup not found"), headlines(e));
     }
 
     @Test
