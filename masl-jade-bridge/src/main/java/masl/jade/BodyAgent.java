@@ -19,10 +19,10 @@ import masl.runtime.AgentImplementation;
  * object whose primitives run here. The agent's program runs in the coordinator's JVM.
  *
  * <ul>
- * <li>A request from the coordinator, signed with the mission's secret ({@link MissionSecret}), runs
+ * <li>A request from the coordinator, signed with the mission's secret ({@link MissionChannel}), runs
  * its primitive on a thread of the container's pool (so a primitive that blocks holds no JADE
  * thread) and is answered with the result, or the exception, and the journal text it wrote
- * ({@link BodyJournal}).
+ * ({@link BodyJournal}), signed: the coordinator takes no answer that is not.
  * <li>A request from any other FIPA agent (or one merely claiming to be the coordinator) is read
  * here ({@code NOT_UNDERSTOOD} at once if malformed), then relayed to the coordinator ({@value CoordinatorAgent#RELAY}), which filters it
  * by the agent's permeability state as an <em>other</em> when the agent serves it, as in-process,
@@ -36,18 +36,17 @@ final class BodyAgent extends RegisteredMaslAgent {
     private final transient AgentImplementation implementation;
     private final transient BodyJournal journal;
     private final transient AID coordinator;
-    private final transient MissionSecret secret;
-    private final transient ReplayWindow taken = new ReplayWindow();
+    private final transient MissionChannel channel;
     private final transient ExecutorService primitiveThreads;
     private final transient Map<String, ACLMessage> relayed = new ConcurrentHashMap<>();
 
     BodyAgent(AgentImplementation implementation, BodyJournal journal, PrimitiveTable primitives, AID coordinator,
-            MissionSecret secret, ExecutorService primitiveThreads, CountDownLatch ready) {
+            MissionChannel channel, ExecutorService primitiveThreads, CountDownLatch ready) {
         super(primitives, ready);
         this.implementation = implementation;
         this.journal = journal;
         this.coordinator = coordinator;
-        this.secret = secret;
+        this.channel = channel;
         this.primitiveThreads = primitiveThreads;
     }
 
@@ -57,31 +56,32 @@ final class BodyAgent extends RegisteredMaslAgent {
     }
 
     private void take(ACLMessage message) {
-        ACLMessage requester = message.getInReplyTo() == null || !coordinator.equals(message.getSender()) ? null
-                : relayed.remove(message.getInReplyTo());
-        if (requester != null) {
-            answer(forwarded(requester, message));
+        boolean fromCoordinator = coordinator.equals(message.getSender());
+        if (fromCoordinator && message.getInReplyTo() != null && relayed.containsKey(message.getInReplyTo())) {
+            if (channel.refusal(message) == null) {
+                answer(forwarded(relayed.remove(message.getInReplyTo()), message));
+            }
             return;
         }
         PrimitiveTable.Call call = requestedCall(message);
         if (call == null) {
             return;
         }
-        if (coordinator.equals(message.getSender()) && secret.signed(message, getLocalName())
-                && taken.take(message.getUserDefinedParameter(MissionSecret.SEQUENCE))) {
+        if (fromCoordinator && channel.refusal(message) == null) {
             serve(message, call);
         } else {
             relay(message);
         }
     }
 
+    /** Runs the coordinator's request on a pool thread; the answer, signed, carries the journal text written. */
     private void serve(ACLMessage request, PrimitiveTable.Call call) {
         try {
-            primitiveThreads.execute(() -> answer(journal.collecting(
-                    written -> Answers.run(request, call, implementation, written))));
+            primitiveThreads.execute(() -> answer(channel.sign(journal.collecting(
+                    written -> Answers.run(request, call, implementation, written)), getAID())));
         } catch (RejectedExecutionException missionEnded) {
-            send(AclInvocations.reply(request, Reply.Kind.REFUSED,
-                    JsonContent.refusal(getLocalName() + " no longer serves: its mission has ended")));
+            send(channel.sign(AclInvocations.reply(request, Reply.Kind.REFUSED,
+                    JsonContent.refusal(getLocalName() + " no longer serves: its mission has ended")), getAID()));
         }
     }
 
@@ -95,7 +95,7 @@ final class BodyAgent extends RegisteredMaslAgent {
         String replyWith = UnguessableIds.next(getLocalName() + "-relay");
         relay.setReplyWith(replyWith);
         relayed.put(replyWith, request);
-        send(relay);
+        send(channel.sign(relay, getAID()));
     }
 
     /** The coordinator's answer to a relayed request, as the answer of this agent to its requester. */

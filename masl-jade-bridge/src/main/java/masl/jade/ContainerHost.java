@@ -8,7 +8,6 @@ import jade.domain.FIPAException;
 import jade.lang.acl.ACLMessage;
 import jade.wrapper.AgentController;
 import jade.wrapper.StaleProxyException;
-import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -46,14 +45,18 @@ final class ContainerHost extends Agent {
     private static final long BODIES_TIMEOUT_SECONDS = 30;
     /** How often the container checks that its coordinator (or the AMS) can still be reached. */
     private static final long ALIVE_PERIOD_MILLIS = 500;
-    /** The conversation of those checks: {@code INFORM}s nobody answers, but the MTS when undeliverable. */
+    /**
+     * The conversation of those checks: {@code INFORM}s nobody answers, but the MTS when undeliverable;
+     * and of the coordinator's {@code REQUEST}s asking whether this container is still there, which it
+     * answers {@code INFORM}.
+     */
     static final String ALIVE = "masl-alive";
 
     private final transient String containerName;
     private final transient Function<String, AgentType> types;
     private final transient ClassLoader classes;
     private final transient Consumer<ACLMessage> events;
-    private final transient MissionSecret.Source secretSource;
+    private final transient MissionChannel channel;
     private final transient Consumer<String> refusals;
     private final transient CountDownLatch ready = new CountDownLatch(1);
     private final transient CountDownLatch ended = new CountDownLatch(1);
@@ -65,9 +68,6 @@ final class ContainerHost extends Agent {
     private final transient List<String> hosted = new CopyOnWriteArrayList<>();
     /** The one agent whose control messages this container obeys: the platform's {@value CoordinatorAgent#NAME}. */
     private transient AID coordinator;
-    /** The mission's secret, once a control message bore its signature; read from the source until then. */
-    private transient MissionSecret secret;
-    private final transient ReplayWindow taken = new ReplayWindow();
     private transient volatile boolean placed;
     /** Whether the bodies placed here exist and are registered. */
     private transient volatile boolean bodiesReady;
@@ -85,7 +85,7 @@ final class ContainerHost extends Agent {
         this.types = types;
         this.classes = classes;
         this.events = events;
-        this.secretSource = secretSource;
+        this.channel = MissionChannel.reading(agentName(containerName), secretSource);
         this.refusals = refusals;
     }
 
@@ -181,7 +181,7 @@ final class ContainerHost extends Agent {
         } else if (isControl(message)) {
             String refusal = refusal(message);
             if (refusal != null) {
-                refuse(message, refusal);
+                refuse(message, refusal, false);
             } else {
                 obey(message);
             }
@@ -193,20 +193,20 @@ final class ContainerHost extends Agent {
 
     private static boolean isControl(ACLMessage message) {
         String conversation = message.getConversationId();
-        return message.getPerformative() == ACLMessage.REQUEST
-                && (CoordinatorAgent.PLACE.equals(conversation) || CoordinatorAgent.END.equals(conversation))
+        return message.getPerformative() == ACLMessage.REQUEST && (CoordinatorAgent.PLACE.equals(conversation)
+                || CoordinatorAgent.END.equals(conversation) || ALIVE.equals(conversation))
                 || message.getPerformative() == ACLMessage.INFORM && CoordinatorAgent.EVENT.equals(conversation);
     }
 
-    /** A control message that passed {@link #refusal}: placement (once), end, or an event. */
+    /** A control message that passed {@link #refusal}: placement (once), end, a check, or an event. */
     private void obey(ACLMessage message) {
         switch (message.getConversationId()) {
             case CoordinatorAgent.PLACE -> {
                 if (placed) {
-                    refuse(message, "this container already hosts its mission's bodies");
+                    refuse(message, "this container already hosts its mission's bodies", true);
                 } else {
                     placed = true;
-                    send(place(message));
+                    send(channel.sign(place(message), getAID()));
                     if (unhosted != null) {
                         endMission();
                     }
@@ -214,9 +214,11 @@ final class ContainerHost extends Agent {
             }
             case CoordinatorAgent.END -> {
                 deleteBodies();
-                send(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)));
+                send(channel.sign(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)), getAID()));
                 endMission();
             }
+            case ALIVE -> send(channel.sign(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)),
+                    getAID()));
             default -> events.accept(message);
         }
     }
@@ -231,31 +233,21 @@ final class ContainerHost extends Agent {
         if (!coordinator.equals(message.getSender())) {
             return "only " + CoordinatorAgent.NAME + " controls a MASL container";
         }
-        MissionSecret candidate = secret;
-        if (candidate == null) {
-            try {
-                candidate = secretSource.get();
-            } catch (IOException unreadable) {
-                return "cannot read the mission's secret: " + unreadable.getMessage();
-            }
-        }
-        if (!candidate.signed(message, getLocalName())) {
-            return "not signed with the mission's secret";
-        }
-        secret = candidate;
-        return taken.take(message.getUserDefinedParameter(MissionSecret.SEQUENCE)) ? null
-                : "a copy of a control message already taken";
+        return channel.refusal(message);
     }
 
-    /** Answers a control message that is not obeyed ({@code REFUSE}, or {@code NOT_UNDERSTOOD} for an event), said in one line. */
-    private void refuse(ACLMessage message, String reason) {
+    /**
+     * Answers a control message that is not obeyed ({@code REFUSE}, or {@code NOT_UNDERSTOOD} for an
+     * event), said in one line; signed if the message proved to come from the coordinator
+     * ({@code proven}), which acts on no unsigned answer, so that it learns why.
+     */
+    private void refuse(ACLMessage message, String reason, boolean proven) {
         refusals.accept("refused " + message.getConversationId() + " from "
                 + (message.getSender() == null ? "no sender" : message.getSender().getName()) + ": " + reason);
-        if (message.getPerformative() == ACLMessage.REQUEST) {
-            send(AclInvocations.reply(message, Reply.Kind.REFUSED, JsonContent.refusal(reason)));
-        } else {
-            send(AclInvocations.notUnderstood(message, new ContentException(reason)));
-        }
+        ACLMessage answer = message.getPerformative() == ACLMessage.REQUEST
+                ? AclInvocations.reply(message, Reply.Kind.REFUSED, JsonContent.refusal(reason))
+                : AclInvocations.notUnderstood(message, new ContentException(reason));
+        send(proven ? channel.sign(answer, getAID()) : answer);
     }
 
     /**
@@ -315,7 +307,7 @@ final class ContainerHost extends Agent {
         BodyJournal journal = new BodyJournal(body.proxyId());
         implementation.bind(journal);
         return new BodyAgent(implementation, journal, new PrimitiveTable(type, implementation.getClass()),
-                coordinator, secret, primitiveThreads, registered);
+                coordinator, MissionChannel.of(body.name(), channel.secret()), primitiveThreads, registered);
     }
 
     /** Deletes the bodies and waits, bounded, until their threads have ended; stops their primitives' threads. */

@@ -10,9 +10,9 @@ import jade.domain.introspection.RemovedContainer;
 import jade.lang.acl.ACLMessage;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CancellationException;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
@@ -24,7 +24,8 @@ import masl.jade.acl.ContentException;
  * agents placed elsewhere run in threaded behaviours of this agent, and their primitives are
  * {@code REQUEST}s it sends ({@link RemoteBody}). It takes an answer only from the agent it asked,
  * with the request's unguessable {@code in-reply-to} ({@link PendingAnswers}), and hands over the
- * requests that bodies relay from FIPA agents ({@value #RELAY}). Registered with the DF as {@value DfEntries#COORDINATOR_SERVICE}.
+ * requests that bodies relay from FIPA agents ({@value #RELAY}). Every message it sends a party of the
+ * mission is signed, and it acts on no answer or relay that is not ({@link MissionChannel}). Registered with the DF as {@value DfEntries#COORDINATOR_SERVICE}.
  */
 final class CoordinatorAgent extends Agent {
     private static final long serialVersionUID = 1L;
@@ -42,9 +43,8 @@ final class CoordinatorAgent extends Agent {
     static final String EVENT = "masl-event";
 
     private final transient PendingAnswers answers = new PendingAnswers(NAME);
-    private final transient MissionSecret secret;
-    /** The number of the last control message to each receiver, by local name. */
-    private final transient Map<String, AtomicLong> sequences = new ConcurrentHashMap<>();
+    private final transient MissionChannel channel;
+    private final transient Consumer<String> refusals;
     /** Why each agent that can no longer answer (its container is gone) cannot, by local name. */
     private final transient Map<String, String> gone = new ConcurrentHashMap<>();
     private final transient CountDownLatch ready;
@@ -55,16 +55,20 @@ final class CoordinatorAgent extends Agent {
     private transient ContainerRemovals removals;
 
     /**
-     * @param secret           signs the requests and events this agent sends ({@link MissionSecret})
+     * @param secret           signs the messages this agent sends to the mission's parties and checks
+     *                         those it takes from them ({@link MissionChannel})
+     * @param refusals         told one line for each message claiming to come from a party of the
+     *                         mission that is refused (not signed, or a copy), on this agent's thread
      * @param relays           serves a request a body relays (conversation {@value #RELAY}), on this agent's thread
      * @param containerRemoved told the name of each container the AMS reports removed (its JVM ended or
      *                         died), on this agent's thread
      * @param unreachable      told the local name of an agent a request could not be delivered to (the
      *                         AMS answered {@code FAILURE}), on this agent's thread; it may {@link #abandon} it
      */
-    CoordinatorAgent(MissionSecret secret, CountDownLatch ready, Consumer<ACLMessage> relays,
-            Consumer<String> containerRemoved, Consumer<String> unreachable) {
-        this.secret = secret;
+    CoordinatorAgent(MissionSecret secret, Consumer<String> refusals, CountDownLatch ready,
+            Consumer<ACLMessage> relays, Consumer<String> containerRemoved, Consumer<String> unreachable) {
+        this.channel = MissionChannel.of(NAME, secret);
+        this.refusals = refusals;
         this.ready = ready;
         this.relays = relays;
         this.containerRemoved = containerRemoved;
@@ -108,7 +112,7 @@ final class CoordinatorAgent extends Agent {
     CompletableFuture<ACLMessage> ask(ACLMessage request) {
         CompletableFuture<ACLMessage> answer = answers.register(request);
         String receiver = ((AID) request.getAllReceiver().next()).getLocalName();
-        sign(request, receiver);
+        channel.sign(request, getAID());
         String reason = gone.get(receiver);
         if (reason != null) {
             // Checked after registering so that a removal reported meanwhile cannot miss this call.
@@ -128,24 +132,26 @@ final class CoordinatorAgent extends Agent {
         answers.failAll(reasonByReceiver, ContainerGoneException::new);
     }
 
-    /** Sends a message from any thread. */
-    void post(ACLMessage message) {
-        send(message);
+    /** Stops waiting for the answer to {@code request}: one that comes later answers nothing. Any thread. */
+    void forget(ACLMessage request) {
+        answers.fail(request.getReplyWith(), new CancellationException("no longer waited for"));
     }
 
-    /** Sends {@code message} to its one receiver, signed with the mission's secret, from any thread. */
+    /** Sends {@code message} to its one receiver, a party of the mission, signed, from any thread. */
     void postSigned(ACLMessage message) {
-        sign(message, ((AID) message.getAllReceiver().next()).getLocalName());
-        send(message);
-    }
-
-    private void sign(ACLMessage message, String receiver) {
-        secret.sign(message, receiver, sequences.computeIfAbsent(receiver, r -> new AtomicLong()).incrementAndGet());
+        send(channel.sign(message, getAID()));
     }
 
     private void take(ACLMessage message) {
         switch (answers.classify(message, getAMS())) {
-            case ANSWER -> answers.complete(message);
+            case ANSWER -> {
+                String refusal = channel.refusal(message);
+                if (refusal == null) {
+                    answers.complete(message);
+                } else {
+                    refuse(message, refusal);
+                }
+            }
             case UNDELIVERABLE -> {
                 // Its container is gone, which the AMS's removal event may not have said yet.
                 unreachable.accept(answers.receiverOf(message).getLocalName());
@@ -158,11 +164,30 @@ final class CoordinatorAgent extends Agent {
     /** A message that answers none of this agent's requests: a relayed request, or not understood. */
     private void takeOther(ACLMessage message) {
         if (message.getPerformative() == ACLMessage.REQUEST && RELAY.equals(message.getConversationId())) {
-            relays.accept(message);
+            String refusal = channel.refusal(message);
+            if (refusal == null) {
+                relays.accept(message);
+            } else {
+                refuse(message, refusal);
+            }
         } else if (message.getPerformative() != ACLMessage.NOT_UNDERSTOOD
                 && !ContainerHost.ALIVE.equals(message.getConversationId())) {
             send(AclInvocations.notUnderstood(message, new ContentException(
                     "the mission's coordinator answers its bodies and containers only")));
+        }
+    }
+
+    /**
+     * A message claiming to come from a party of the mission (an answer to one of this agent's
+     * requests, a relay) that does not prove it: it changes nothing, is said in one line, and its
+     * sender is told it was not understood.
+     */
+    private void refuse(ACLMessage message, String reason) {
+        refusals.accept("refused " + ACLMessage.getPerformative(message.getPerformative()) + " "
+                + message.getConversationId() + " from "
+                + (message.getSender() == null ? "no sender" : message.getSender().getName()) + ": " + reason);
+        if (message.getPerformative() != ACLMessage.NOT_UNDERSTOOD) {
+            send(AclInvocations.notUnderstood(message, new ContentException(reason)));
         }
     }
 

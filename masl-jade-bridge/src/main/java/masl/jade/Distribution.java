@@ -1,9 +1,6 @@
 package masl.jade;
 
 import jade.core.AID;
-import jade.domain.DFService;
-import jade.domain.FIPAAgentManagement.DFAgentDescription;
-import jade.domain.FIPAException;
 import jade.lang.acl.ACLMessage;
 import jade.wrapper.AgentController;
 import jade.wrapper.StaleProxyException;
@@ -20,6 +17,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.function.Consumer;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
 import masl.jade.acl.JsonContent;
@@ -47,6 +45,8 @@ final class Distribution {
 
     private final Map<String, String> containerOfAgent;
     private final Duration agentsTimeout;
+    /** Told one line for each message refused and each claimant of a container that did not prove itself. */
+    private final Consumer<String> problems;
     private final CoordinatorAgent coordinator;
     private final AgentController controller;
     /** Remote agents by proxy id, in proxy id order. */
@@ -73,14 +73,18 @@ final class Distribution {
     /**
      * Starts the coordinator agent in {@code platform}'s container (the main container).
      *
+     * @param problems told one line for each message refused as not coming from a party of the mission
+     *
      * @throws JadeException if it cannot start (another mission spanning containers runs on the platform)
      */
     Distribution(JadePlatform platform, Map<String, String> containerOfAgent, MissionSecret secret,
-            Duration agentsTimeout) throws InterruptedException {
+            Duration agentsTimeout, Consumer<String> problems) throws InterruptedException {
         this.containerOfAgent = Map.copyOf(containerOfAgent);
         this.agentsTimeout = agentsTimeout;
         CountDownLatch ready = new CountDownLatch(1);
-        coordinator = new CoordinatorAgent(secret, ready, this::serveRelayed, this::containerRemoved, this::unreachable);
+        this.problems = problems;
+        coordinator = new CoordinatorAgent(secret, problems, ready, this::serveRelayed, this::containerRemoved,
+                this::unreachable);
         try {
             controller = platform.container().acceptNewAgent(CoordinatorAgent.NAME, coordinator);
             controller.start();
@@ -129,10 +133,10 @@ final class Distribution {
         remotes.forEach((id, remote) -> byContainer.computeIfAbsent(remote.container(), c -> new ArrayList<>())
                 .add(new PlacementContent.Body(remote.name(), id, remote.className())));
         for (Map.Entry<String, List<PlacementContent.Body>> placed : byContainer.entrySet()) {
-            AID host = find(placed.getKey());
-            containers.put(placed.getKey(), host);
-            ACLMessage request = request(host, CoordinatorAgent.PLACE, PlacementContent.write(placed.getValue()));
-            ACLMessage answer = await(request, "container " + placed.getKey() + " to create its bodies");
+            ContainerClaims.Proven proven = new ContainerClaims(coordinator, placed.getKey(), agentsTimeout, problems)
+                    .place(PlacementContent.write(placed.getValue()));
+            containers.put(placed.getKey(), proven.container());
+            ACLMessage answer = proven.answer();
             if (answer.getPerformative() != ACLMessage.INFORM) {
                 throw new JadeException(cannotHost(placed.getKey(),
                         placed.getValue().stream().map(PlacementContent.Body::name).toList(),
@@ -211,28 +215,7 @@ final class Distribution {
         }
     }
 
-    private AID find(String container) throws InterruptedException {
-        DFAgentDescription template = DfEntries.service(null, DfEntries.CONTAINER_SERVICE, container);
-        long deadline = System.nanoTime() + agentsTimeout.toNanos();
-        try {
-            while (true) {
-                DFAgentDescription[] found = DFService.search(coordinator, template);
-                if (found.length > 0) {
-                    return found[0].getName();
-                }
-                if (System.nanoTime() - deadline > 0) {
-                    throw new JadeException("container " + container + " did not join the platform within "
-                            + agentsTimeout + " (start it with: masl container --main-host HOST --main-port PORT"
-                            + " --name " + container + ")");
-                }
-                Thread.sleep(50);
-            }
-        } catch (FIPAException e) {
-            throw new JadeException("the DF did not answer a search for container " + container, e);
-        }
-    }
-
-    private static ACLMessage request(AID receiver, String conversation, String content) {
+    static ACLMessage request(AID receiver, String conversation, String content) {
         ACLMessage request = new ACLMessage(ACLMessage.REQUEST);
         request.addReceiver(receiver);
         request.setConversationId(conversation);
@@ -323,7 +306,7 @@ final class Distribution {
         Served mission = served;
         int id = mission == null ? -1 : mission.names().indexOf(relay.getSender().getLocalName());
         if (id < 0 || !remotes.containsKey(id)) {
-            coordinator.post(AclInvocations.notUnderstood(relay, new ContentException(
+            coordinator.postSigned(AclInvocations.notUnderstood(relay, new ContentException(
                     relay.getSender().getLocalName() + " is no body of this mission")));
             return;
         }
@@ -331,14 +314,14 @@ final class Distribution {
         try {
             call = mission.tables().get(id).bind(AclInvocations.readRequest(relay));
         } catch (ContentException problem) {
-            coordinator.post(AclInvocations.notUnderstood(relay, problem));
+            coordinator.postSigned(AclInvocations.notUnderstood(relay, problem));
             return;
         }
         String name = mission.names().get(id);
         String primitive = call.primitive().name();
         // Queued, never served inline: the primitive is a request to the body, whose answer this thread takes.
         mission.mission().submitInvocation(id, primitive,
-                () -> coordinator.post(mission.outside().answer(relay, call, mission.implementations().get(id), name)),
-                () -> coordinator.post(Answers.refusal(relay, name, primitive)));
+                () -> coordinator.postSigned(mission.outside().answer(relay, call, mission.implementations().get(id), name)),
+                () -> coordinator.postSigned(Answers.refusal(relay, name, primitive)));
     }
 }

@@ -178,7 +178,7 @@ public final class JadeLauncher {
                     + " call secret(…) first");
         }
         Distribution distribution = placement.isEmpty() ? null
-                : new Distribution(platform, placement, secret, AGENTS_TIMEOUT);
+                : new Distribution(platform, placement, secret, AGENTS_TIMEOUT, problems);
         List<AgentController> controllers = new ArrayList<>();
         List<MaslJadeAgent> locals = new ArrayList<>();
         Duration limit = callTimeout == null ? OutsideCalls.DEFAULT_LIMIT : callTimeout;

@@ -14,19 +14,19 @@ import javax.crypto.spec.SecretKeySpec;
 
 /**
  * The secret a mission spanning containers shares between its coordinator and its containers, out
- * of band (a file only they can read): 256 random bits. The coordinator signs every control message
- * ({@code masl-place}, {@code masl-end}, {@code masl-event}, {@code masl-body}) with an HMAC-SHA256 of
- * what it says, whom it is for and its sequence number ({@value #PARAMETER}); a container and its
- * bodies obey a control message only if the signature is right (compared in constant time) and its
- * number new ({@link ReplayWindow}). The secret itself never travels on the platform, so an agent
- * that sees the messages can neither sign one of its own nor have one obeyed twice.
+ * of band (a file only they can read): 256 random bits. Every message between the mission's parties
+ * (coordinator, containers, bodies: {@link MissionChannel}) carries an HMAC-SHA256 of what it says,
+ * who sends it, whom it is for and its sequence number ({@value #PARAMETER}); a party acts on one only
+ * if the signature is right (compared in constant time) and its number new ({@link ReplayWindow}).
+ * The secret itself never travels on the platform, so an agent that sees the messages can neither
+ * sign one of its own nor have one taken twice.
  * Immutable.
  */
 public final class MissionSecret {
 
-    /** The user-defined ACL parameter holding a control message's signature. */
+    /** The user-defined ACL parameter holding a message's signature. */
     static final String PARAMETER = "masl-signature";
-    /** The user-defined ACL parameter numbering the control messages to one receiver, 1, 2, …: see {@link ReplayWindow}. */
+    /** The user-defined ACL parameter numbering the messages of one sender to one receiver, 1, 2, …: see {@link ReplayWindow}. */
     static final String SEQUENCE = "masl-sequence";
     private static final String ALGORITHM = "HmacSHA256";
     private static final int BYTES = 32;
@@ -88,33 +88,33 @@ public final class MissionSecret {
     }
 
     /**
-     * Signs {@code message}, the {@code sequence}th control message to {@code receiver} (a local
-     * name): sets {@value #SEQUENCE} and {@value #PARAMETER}.
+     * Signs {@code message}, the {@code sequence}th message {@code sender} sends {@code receiver}
+     * (local names): sets {@value #SEQUENCE} and {@value #PARAMETER}.
      */
-    void sign(ACLMessage message, String receiver, long sequence) {
+    void sign(ACLMessage message, String sender, String receiver, long sequence) {
         message.addUserDefinedParameter(SEQUENCE, Long.toString(sequence));
-        message.addUserDefinedParameter(PARAMETER, signature(message, receiver));
+        message.addUserDefinedParameter(PARAMETER, signature(message, sender, receiver));
     }
 
-    /** Whether {@code message} bears this secret's signature of what it says, for {@code receiver}. */
-    boolean signed(ACLMessage message, String receiver) {
+    /** Whether {@code message} bears this secret's signature of what it says, from {@code sender} to {@code receiver}. */
+    boolean signed(ACLMessage message, String sender, String receiver) {
         String given = message.getUserDefinedParameter(PARAMETER);
         return given != null && MessageDigest.isEqual(given.getBytes(StandardCharsets.US_ASCII),
-                signature(message, receiver).getBytes(StandardCharsets.US_ASCII));
+                signature(message, sender, receiver).getBytes(StandardCharsets.US_ASCII));
     }
 
     /**
-     * The HMAC of the fields that decide what a control message does: performative, receiver, sequence
-     * number, conversation, {@code reply-with} and content, each with its length so that no two
-     * messages have the same input.
+     * The HMAC of the fields that decide what a message does and whom it binds: performative, sender,
+     * receiver, sequence number, conversation, {@code reply-with}, {@code in-reply-to} and content,
+     * each with its length so that no two messages have the same input.
      */
-    private String signature(ACLMessage message, String receiver) {
+    private String signature(ACLMessage message, String sender, String receiver) {
         try {
             Mac mac = Mac.getInstance(ALGORITHM);
             mac.init(key);
-            for (String field : new String[] {ACLMessage.getPerformative(message.getPerformative()), receiver,
+            for (String field : new String[] {ACLMessage.getPerformative(message.getPerformative()), sender, receiver,
                     message.getUserDefinedParameter(SEQUENCE), message.getConversationId(), message.getReplyWith(),
-                    message.getContent()}) {
+                    message.getInReplyTo(), message.getContent()}) {
                 byte[] bytes = field == null ? new byte[0] : field.getBytes(StandardCharsets.UTF_8);
                 mac.update((field == null ? "-1:" : bytes.length + ":").getBytes(StandardCharsets.US_ASCII));
                 mac.update(bytes);

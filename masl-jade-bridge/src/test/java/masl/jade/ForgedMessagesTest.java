@@ -29,6 +29,7 @@ import masl.runtime.Mode;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.TestAgent;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.RegisterExtension;
@@ -147,23 +148,39 @@ class ForgedMessagesTest {
         }
     }
 
-    /** A container given another secret than its coordinator's obeys not even the coordinator. */
+    /**
+     * A container given another secret than its coordinator's obeys not even the coordinator, and its
+     * refusal, which it cannot sign, is no proof that it is the container: the mission does not start
+     * (after waiting for a container that can prove it, 30 s), each side saying why.
+     */
     @Test
+    @Tag("slow")
     void aContainerWithoutTheMissionsSecretHostsNothing() throws Exception {
         BlockingQueue<String> refusals = new LinkedBlockingQueue<>();
+        List<String> problems = new CopyOnWriteArrayList<>();
         try (MaslContainer container = container("c4", MissionSecret.generate(), refusals, new CopyOnWriteArrayList<>())) {
             JadeException refused = assertThrows(JadeException.class, () -> JadeLauncher.of(callsGated(new ArrayList<>()))
-                    .types(TestPrograms::type).place(Map.of("b", "c4")).secret(SECRET).run(JADE.platform(), TIMEOUT));
-            assertTrue(refused.getMessage().startsWith("container c4 cannot host b: ")
-                    && refused.getMessage().contains("not signed with the mission's secret"), refused.getMessage());
+                    .types(TestPrograms::type).place(Map.of("b", "c4")).secret(SECRET).problems(problems::add)
+                    .run(JADE.platform(), TIMEOUT));
+            assertTrue(refused.getMessage().startsWith("no agent claiming to be container c4 proved it holds the"
+                    + " mission's secret within "), refused.getMessage());
             assertEquals(List.of(), container.hostedAgents());
             String line = refusals.poll(20, TimeUnit.SECONDS);
             assertTrue(line != null && line.startsWith("refused masl-place from masl-coordinator@"), line);
+            assertTrue(problems.get(0).startsWith("refused REFUSE masl-place from masl-container-c4@")
+                    && problems.get(0).endsWith(": not signed with the mission's secret"), problems.toString());
         }
     }
 
     private static MaslContainer container(String name) {
         return container(name, SECRET, refusal -> { }, new CopyOnWriteArrayList<>());
+    }
+
+    /** Container {@code name} of {@code platform}, in this JVM, knowing {@code secret}. */
+    static MaslContainer container(JadePlatform platform, String name, MissionSecret secret) {
+        return MaslContainer.start(JadeOptions.join(platform.host(), platform.port()), name,
+                className -> TestPrograms.type(new MissionProgram.AgentSpec("", className)),
+                ForgedMessagesTest.class.getClassLoader(), event -> { }, MissionSecret.Source.of(secret), refusal -> { });
     }
 
     private static MaslContainer container(String name, MissionSecret secret, Collection<String> refusals,
@@ -190,7 +207,7 @@ class ForgedMessagesTest {
         return message;
     }
 
-    private static MissionProgram callsGated(List<Integer> results) {
+    static MissionProgram callsGated(List<Integer> results) {
         return TestPrograms.of(CallsGated.MAIN, List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
                 self -> new CallsGated(self, results));
     }

@@ -20,24 +20,32 @@ class MissionSecretTest {
     private final MissionSecret secret = MissionSecret.generate();
 
     @Test
-    void aSignatureHoldsForItsReceiverAndContentOnly() {
+    void aSignatureHoldsForItsSenderReceiverAndContentOnly() {
         ACLMessage end = end("{}");
-        secret.sign(end, "masl-container-c2", 1);
-        assertTrue(secret.signed(end, "masl-container-c2"));
-        assertFalse(secret.signed(end, "masl-container-c3"), "replayed to another container");
-        assertFalse(MissionSecret.generate().signed(end, "masl-container-c2"), "another mission's secret");
+        secret.sign(end, "masl-coordinator", "masl-container-c2", 1);
+        assertTrue(secret.signed(end, "masl-coordinator", "masl-container-c2"));
+        assertFalse(secret.signed(end, "masl-coordinator", "masl-container-c3"), "replayed to another container");
+        assertFalse(secret.signed(end, "b", "masl-container-c2"), "claimed by another sender");
+        assertFalse(MissionSecret.generate().signed(end, "masl-coordinator", "masl-container-c2"),
+                "another mission's secret");
         end.setContent("{\"agents\":[]}");
-        assertFalse(secret.signed(end, "masl-container-c2"), "content changed");
+        assertFalse(secret.signed(end, "masl-coordinator", "masl-container-c2"), "content changed");
         ACLMessage unsigned = end("{}");
-        assertFalse(secret.signed(unsigned, "masl-container-c2"));
+        assertFalse(secret.signed(unsigned, "masl-coordinator", "masl-container-c2"));
         ACLMessage place = end("{}");
         place.setConversationId(CoordinatorAgent.PLACE);
         place.addUserDefinedParameter(MissionSecret.PARAMETER, end.getUserDefinedParameter(MissionSecret.PARAMETER));
-        assertFalse(secret.signed(place, "masl-container-c2"), "another conversation with the same signature");
+        assertFalse(secret.signed(place, "masl-coordinator", "masl-container-c2"),
+                "another conversation with the same signature");
         ACLMessage renumbered = end("{}");
-        secret.sign(renumbered, "masl-container-c2", 1);
+        secret.sign(renumbered, "masl-coordinator", "masl-container-c2", 1);
         renumbered.addUserDefinedParameter(MissionSecret.SEQUENCE, "2");
-        assertFalse(secret.signed(renumbered, "masl-container-c2"), "a copy given another number");
+        assertFalse(secret.signed(renumbered, "masl-coordinator", "masl-container-c2"), "a copy given another number");
+        ACLMessage answer = end("{\"result\":5}");
+        answer.setInReplyTo("masl-coordinator-1");
+        secret.sign(answer, "b", "masl-coordinator", 1);
+        answer.setInReplyTo("masl-coordinator-2");
+        assertFalse(secret.signed(answer, "b", "masl-coordinator"), "an answer moved to another request");
     }
 
     @Test
@@ -47,8 +55,8 @@ class MissionSecretTest {
             assertEquals("rw-------", PosixFilePermissions.toString(Files.getPosixFilePermissions(file)));
             assertEquals(1, Files.list(folder).count(), "no file left beside it");
             ACLMessage end = end("{}");
-            secret.sign(end, "b", 7);
-            assertTrue(MissionSecret.readFrom(file).signed(end, "b"));
+            secret.sign(end, "masl-coordinator", "b", 7);
+            assertTrue(MissionSecret.readFrom(file).signed(end, "masl-coordinator", "b"));
         }
         assertFalse(Files.exists(file), "the secret outlived its mission");
         Files.writeString(file, "not a secret\n");
