@@ -18,7 +18,8 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * The generated start script ({@code bin/masl}) chooses the JIT of each command: the commands that run
  * no mission get C1 alone, those that run one keep the JVM's default, and the user's own options come
- * last, so they decide; and a command starts one JVM, its own. Run with a stand-in {@code java} that
+ * last, so they decide; a command starts one JVM, its own (MASL_JAVA_HOME's, else JAVA_HOME's), and is
+ * given the ahead-of-time cache on a JDK 25, the class-data archive on others. Run with a stand-in {@code java} that
  * prints the arguments it was given.
  */
 class StartScriptTest {
@@ -68,6 +69,52 @@ class StartScriptTest {
         assertEquals("java.base/java.lang=ALL-UNNAMED", jvm.get(jvm.indexOf("--add-opens") + 1), jvm::toString);
     }
 
+    /**
+     * On a JDK 25 or later the script hands the JVM the ahead-of-time cache installing made, on others
+     * (JDK 17) the class-data archive: each JDK gets what it can map, the major version read from its
+     * release file.
+     */
+    @Test
+    void aJdk25GetsTheAheadOfTimeCacheAndAJdk17TheClassDataArchive() throws Exception {
+        Files.writeString(home.resolve("masl/lib/masl.aot"), "");
+        Files.writeString(home.resolve("masl/lib/masl.jsa"), "");
+        Path lib = home.resolve("masl/lib").toRealPath();
+        releaseOf(home.resolve("jdk"), "25.0.3");
+        List<String> jdk25 = javaArguments(Map.of(), "run", "a.masl");
+        assertTrue(jdk25.contains("-XX:AOTCache=" + lib.resolve("masl.aot")), jdk25::toString);
+        assertFalse(jdk25.stream().anyMatch(argument -> argument.startsWith("-XX:SharedArchiveFile")), jdk25::toString);
+        releaseOf(home.resolve("jdk"), "17.0.15");
+        List<String> jdk17 = javaArguments(Map.of(), "check", "a.masl");
+        assertTrue(jdk17.contains("-XX:SharedArchiveFile=" + lib.resolve("masl.jsa")), jdk17::toString);
+        assertFalse(jdk17.stream().anyMatch(argument -> argument.startsWith("-XX:AOTCache")), jdk17::toString);
+    }
+
+    /** A JDK 25 without the cache (installed where none was found) falls back to the archive, which it ignores if it must. */
+    @Test
+    void aJdk25WithoutTheCacheIsGivenTheArchiveAlone() throws Exception {
+        Files.writeString(home.resolve("masl/lib/masl.jsa"), "");
+        releaseOf(home.resolve("jdk"), "25.0.3");
+        List<String> jvm = javaArguments(Map.of(), "run", "a.masl");
+        assertFalse(jvm.stream().anyMatch(argument -> argument.startsWith("-XX:AOTCache")), jvm::toString);
+        assertTrue(jvm.stream().anyMatch(argument -> argument.startsWith("-XX:SharedArchiveFile")), jvm::toString);
+    }
+
+    /** MASL_JAVA_HOME picks masl's JDK (a JDK 25, say) while JAVA_HOME stays the JDK of everything else. */
+    @Test
+    void maslJavaHomeComesBeforeJavaHome() throws Exception {
+        Path jdk25 = standInJdk(home.resolve("jdk25"));
+        releaseOf(jdk25, "25.0.3");
+        Files.writeString(home.resolve("masl/lib/masl.aot"), "");
+        List<String> jvm = javaArguments(Map.of("MASL_JAVA_HOME", jdk25.toString()), "run", "a.masl");
+        assertEquals(List.of("started"), Files.readAllLines(jdk25.resolve("bin/starts")));
+        assertFalse(Files.exists(home.resolve("jdk/bin/starts")));
+        assertTrue(jvm.stream().anyMatch(argument -> argument.startsWith("-XX:AOTCache=")), jvm::toString);
+    }
+
+    private static void releaseOf(Path jdk, String version) throws IOException {
+        Files.writeString(jdk.resolve("release"), "IMPLEMENTOR=\"Stand-in\"\nJAVA_VERSION=\"" + version + "\"\n");
+    }
+
     /** The arguments the script gives java for {@code masl arguments...}, one per line from the stand-in. */
     private List<String> javaArguments(Map<String, String> environment, String... arguments) throws Exception {
         ProcessBuilder builder = new ProcessBuilder(script.toString());
@@ -75,6 +122,7 @@ class StartScriptTest {
         builder.environment().put("JAVA_HOME", home.resolve("jdk").toString());
         builder.environment().remove("JAVA_OPTS");
         builder.environment().remove("MASL_OPTS");
+        builder.environment().remove("MASL_JAVA_HOME");
         builder.environment().putAll(environment);
         builder.redirectErrorStream(true);
         Process process = builder.start();
@@ -90,7 +138,16 @@ class StartScriptTest {
      */
     @BeforeEach
     void install() throws IOException {
-        Path java = home.resolve("jdk/bin/java");
+        standInJdk(home.resolve("jdk"));
+        script = home.resolve("masl/bin/masl");
+        Files.createDirectories(script.getParent());
+        Files.createDirectories(home.resolve("masl/lib"));
+        Files.copy(Path.of(System.getProperty("masl.startScript")), script);
+        Files.setPosixFilePermissions(script, PosixFilePermissions.fromString("rwxr-xr-x"));
+    }
+
+    private static Path standInJdk(Path jdk) throws IOException {
+        Path java = jdk.resolve("bin/java");
         Files.createDirectories(java.getParent());
         Files.writeString(java, """
                 #!/bin/sh
@@ -98,10 +155,6 @@ class StartScriptTest {
                 for argument in "$@"; do printf '%s\\n' "$argument"; done
                 """);
         Files.setPosixFilePermissions(java, PosixFilePermissions.fromString("rwxr-xr-x"));
-        script = home.resolve("masl/bin/masl");
-        Files.createDirectories(script.getParent());
-        Files.createDirectories(home.resolve("masl/lib"));
-        Files.copy(Path.of(System.getProperty("masl.startScript")), script);
-        Files.setPosixFilePermissions(script, PosixFilePermissions.fromString("rwxr-xr-x"));
+        return jdk;
     }
 }
