@@ -50,7 +50,7 @@ final class CommandLine {
     Long callTimeoutMillis;
     String traceFile;
     /** The size, in bytes, at which the trace is cut ({@code --trace-limit}). */
-    long traceLimit = TraceOutput.DEFAULT_LIMIT;
+    long traceLimit = JsonLinesTrace.DEFAULT_LIMIT;
     String platform = "inproc";
     String mainHost;
     Integer mainPort;

@@ -29,6 +29,7 @@ final class Help {
                         [--main-host HOST --main-port PORT | --port PORT]
                         [--place AGENT=CONTAINER,... | --place FILE] [--secret-file FILE]
                 masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH] [--quiet]
+                        [--trace-limit SIZE]
                 """, "masl run FILE [OPTION]... | masl run --sim SCENARIO [OPTION]...", """
                 translate a MASL program, compile it in memory and run its mission in this process;
                 the journal (and only the journal) goes to standard output
@@ -93,9 +94,9 @@ final class Help {
                 --trace FILE        write the trace (one JSON object per line) to FILE
                 """);
         OPTIONS.put("--trace-limit", """
-                --trace-limit SIZE  cut the trace at SIZE bytes (K, M, G: KiB, MiB, GiB; default 1G): its last
-                                    record is then {"event":"trace-cut","limit":BYTES}, the run goes on; a trace
-                                    that cannot be written fails the run
+                --trace-limit SIZE  cut the trace (with --sim, its trace.jsonl) at SIZE bytes (K, M, G: KiB, MiB,
+                                    GiB; default 1G): its last record is then {"event":"trace-cut","limit":BYTES},
+                                    the run goes on; a trace that cannot be written fails the run
                 """);
         OPTIONS.put("--no-cache", """
                 --no-cache          translate and compile the program even if an earlier run of the same program,

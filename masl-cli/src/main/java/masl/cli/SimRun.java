@@ -61,9 +61,6 @@ final class SimRun {
         if (line.threads) {
             throw new UsageException("--threads and --sim: the scenario chooses how agents and physics share time");
         }
-        if (line.traceLimit != TraceOutput.DEFAULT_LIMIT) {
-            throw new UsageException("--trace-limit and --sim: the simulation's trace.jsonl has no limit yet");
-        }
         Path scenarioFile = existingFile(line.scenarioFile);
         Scenario scenario;
         try {
@@ -98,6 +95,7 @@ final class SimRun {
             RunOptions options = RunOptions.defaults()
                     .withJournal(progress.journal(journal))
                     .withOutput(output)
+                    .withTraceLimit(line.traceLimit)
                     .withTimeout(line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds))
                     .whenReady(mission -> {
                         journal.whenFailed(() -> mission.stop(RunCommand.JOURNAL_LOST));

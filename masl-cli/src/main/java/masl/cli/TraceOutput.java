@@ -20,8 +20,6 @@ final class TraceOutput {
 
     /** Why a mission whose trace cannot be written was stopped, as standard error says. */
     static final String TRACE_LOST = "the trace cannot be written";
-    /** The limit of a trace without {@code --trace-limit}: 1 GiB. */
-    static final long DEFAULT_LIMIT = 1L << 30;
 
     private final String file;
     private final Writer writer;

@@ -101,6 +101,32 @@ class SimRunTest {
     }
 
     @Test
+    void theSimulationsTraceIsCutAtItsLimit() throws IOException {
+        Path scenario = scenario("""
+                import WheeledRobot.xml as WheeledRobot;
+                WheeledRobot k = newAgent(WheeledRobot);
+                asynchronous entry main (true) {
+                  local int i = 0;
+                  asynchronous entry tick (i < 300) {
+                    i++;
+                    reelect;
+                  }
+                  .logln("ticked");
+                }
+                """);
+
+        Run run = Run.of("run", "--sim", scenario.toString(), "--trace-limit", "4K");
+
+        assertEquals(0, run.status(), run.err());
+        assertEquals("ticked\n", run.out());
+        Path trace = folder.resolve("drive.out").resolve("trace.jsonl");
+        assertTrue(Files.size(trace) <= 4096, Files.size(trace) + " bytes");
+        List<String> lines = Files.readAllLines(trace);
+        assertTrue(lines.get(lines.size() - 1).matches("\\{\"nanos\":\\d+,\"event\":\"trace-cut\",\"limit\":4096}"),
+                lines.get(lines.size() - 1));
+    }
+
+    @Test
     void theJournalGoesToStandardOutputAndTheFilesNextToTheScenario() throws IOException {
         Run run = Run.of("run", "--sim", scenario(DRIVE).toString());
         assertEquals(0, run.status(), run.err());

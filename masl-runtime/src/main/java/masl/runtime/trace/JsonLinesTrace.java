@@ -30,6 +30,8 @@ public final class JsonLinesTrace implements Trace, Flushable {
     public static final String CUT = "trace-cut";
     /** Room kept for the record saying the trace was cut: the longest, a 19-digit time and limit, fits. */
     private static final int CUT_RECORD_ROOM = 96;
+    /** The limit of a trace unless one is given: 1 GiB, more than one means to read or draw. */
+    public static final long DEFAULT_LIMIT = 1L << 30;
     /** The smallest limit: the first records of a mission and the cut record fit. */
     public static final long MIN_LIMIT = 1024;
 

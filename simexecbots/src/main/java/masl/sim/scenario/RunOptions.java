@@ -7,6 +7,7 @@ import java.util.Optional;
 import java.util.function.Consumer;
 import java.util.function.DoubleConsumer;
 import masl.runtime.Mission;
+import masl.runtime.trace.JsonLinesTrace;
 import masl.runtime.trace.Trace;
 
 /**
@@ -24,9 +25,10 @@ import masl.runtime.trace.Trace;
  *                  (on a signal, say) keeps it
  * @param progress  told the simulated time, in seconds, after every physics step (on the stepping
  *                  thread: it must be quick), for a progress report
+ * @param traceLimit the size in bytes at which {@code trace.jsonl} is cut ({@link JsonLinesTrace})
  */
 public record RunOptions(Duration timeout, Appendable journal, Trace trace, Optional<Path> output, ClassLoader classes,
-        Consumer<Mission> ready, DoubleConsumer progress) {
+        Consumer<Mission> ready, DoubleConsumer progress, long traceLimit) {
 
     public RunOptions {
         Objects.requireNonNull(timeout, "timeout");
@@ -36,36 +38,42 @@ public record RunOptions(Duration timeout, Appendable journal, Trace trace, Opti
         Objects.requireNonNull(progress, "progress");
     }
 
-    /** Ten minutes, no journal sink, no trace, no output files, the program's class loader, no progress. */
+    /** Ten minutes, no journal sink, no trace, no output files, the program's class loader, no progress, a trace of at most 1 GiB. */
     public static RunOptions defaults() {
-        return new RunOptions(Duration.ofMinutes(10), null, Trace.NONE, Optional.empty(), null, mission -> { }, seconds -> { });
+        return new RunOptions(Duration.ofMinutes(10), null, Trace.NONE, Optional.empty(), null, mission -> { }, seconds -> { },
+                JsonLinesTrace.DEFAULT_LIMIT);
     }
 
     public RunOptions whenReady(Consumer<Mission> action) {
-        return new RunOptions(timeout, journal, trace, output, classes, action, progress);
+        return new RunOptions(timeout, journal, trace, output, classes, action, progress, traceLimit);
     }
 
     public RunOptions withTimeout(Duration newTimeout) {
-        return new RunOptions(newTimeout, journal, trace, output, classes, ready, progress);
+        return new RunOptions(newTimeout, journal, trace, output, classes, ready, progress, traceLimit);
     }
 
     public RunOptions withJournal(Appendable sink) {
-        return new RunOptions(timeout, sink, trace, output, classes, ready, progress);
+        return new RunOptions(timeout, sink, trace, output, classes, ready, progress, traceLimit);
     }
 
     public RunOptions withTrace(Trace newTrace) {
-        return new RunOptions(timeout, journal, newTrace, output, classes, ready, progress);
+        return new RunOptions(timeout, journal, newTrace, output, classes, ready, progress, traceLimit);
     }
 
     public RunOptions withOutput(Path folder) {
-        return new RunOptions(timeout, journal, trace, Optional.of(folder), classes, ready, progress);
+        return new RunOptions(timeout, journal, trace, Optional.of(folder), classes, ready, progress, traceLimit);
     }
 
     public RunOptions withClasses(ClassLoader loader) {
-        return new RunOptions(timeout, journal, trace, output, loader, ready, progress);
+        return new RunOptions(timeout, journal, trace, output, loader, ready, progress, traceLimit);
     }
 
     public RunOptions withProgress(DoubleConsumer simulatedSeconds) {
-        return new RunOptions(timeout, journal, trace, output, classes, ready, simulatedSeconds);
+        return new RunOptions(timeout, journal, trace, output, classes, ready, simulatedSeconds, traceLimit);
+    }
+
+    /** Cuts {@code trace.jsonl} at {@code bytes}, at least {@link JsonLinesTrace#MIN_LIMIT}. */
+    public RunOptions withTraceLimit(long bytes) {
+        return new RunOptions(timeout, journal, trace, output, classes, ready, progress, bytes);
     }
 }

@@ -112,7 +112,7 @@ public final class ScenarioRunner {
         PhysicsWorld world = simulation.world();
         RunRecorder recorder = simulation.recorder();
         StringBuilder traceText = new StringBuilder();
-        JsonLinesTrace jsonTrace = new JsonLinesTrace(traceText);
+        JsonLinesTrace jsonTrace = new JsonLinesTrace(traceText, options.traceLimit());
         // The file gets simulated time stamps, so that lock-step runs repeat byte for byte.
         long stepNanos = Math.round(scenario.physics().stepSize() * 1e9);
         Trace fileTrace = new SimulatedTimeTrace(() -> world.stepCount() * stepNanos, jsonTrace);
