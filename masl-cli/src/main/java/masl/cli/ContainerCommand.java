@@ -20,7 +20,8 @@ import masl.runtime.descriptor.DescriptorLoader;
  * sends ({@code masl-event {"event": …}}) and, at the end, the bodies hosted
  * ({@code masl-ended hosted b,d}); standard error, once the bodies are placed, the line
  * {@code masl: container ready: name=C host=H port=P platform=… agents=b,d} ({@link masl.jade.Readiness}); exit 0 once the mission ended, 2 if {@code --timeout} elapsed first, the
- * platform cannot be joined, or the coordinator or the main container disappeared (noticed within a second).
+ * platform cannot be joined, or the coordinator or the main container disappeared (noticed within a second), or the platform shut
+ * down, whether or not bodies were placed here.
  * It obeys only the platform's coordinator, and only messages signed with the secret {@code masl run}
  * wrote to {@code --secret-file} (read when the coordinator first writes); each message refused is one
  * line on standard error.
@@ -65,7 +66,7 @@ final class ContainerCommand {
             }
             if (container.lostPlatform().isPresent()) {
                 err.println("masl: container " + line.containerName + ": " + container.lostPlatform().get()
-                        + "; its bodies were deleted");
+                        + (container.hostedAgents().isEmpty() ? "" : "; its bodies were deleted"));
                 return Masl.MISSION_FAILED;
             }
             out.println("masl-ended hosted " + String.join(",", container.hostedAgents()));

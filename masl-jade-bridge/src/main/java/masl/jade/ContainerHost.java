@@ -122,8 +122,18 @@ final class ContainerHost extends Agent {
         return check;
     }
 
+    /**
+     * JADE deletes this agent when its container closes: {@link MaslContainer#close}, or the platform
+     * shutting down (its main container ends and takes every container with it). In the latter case
+     * the mission has not ended for this container: it ends now, lost with its platform, so that
+     * whoever waits for its end (a container never placed, too) is let go.
+     */
     @Override
     protected void takeDown() {
+        if (ended.getCount() > 0) {
+            lost = "the platform is gone (its main container shut down)";
+            endMission();
+        }
         deleteBodies();
         try {
             DFService.deregister(this);
