@@ -31,10 +31,6 @@ public record Diagnostic(String file, int line, int column, Severity severity, S
         return new Diagnostic(file, line, column, Severity.ERROR, message);
     }
 
-    public static Diagnostic warning(String file, int line, int column, String message) {
-        return new Diagnostic(file, line, column, Severity.WARNING, message);
-    }
-
     /** {@code file:line:column: error: message}, leaving out a line or column that is 0. */
     public String headline() {
         StringBuilder text = new StringBuilder(file);

@@ -54,7 +54,7 @@ class DiagnosticPrinterTest {
     @Test
     void theSummaryCountsErrorsAndWarningsApart() {
         String report = new DiagnosticPrinter(Map.of()).report(List.of(Diagnostic.error("<none>", 0, 0, "one"),
-                Diagnostic.warning("<none>", 0, 0, "two"), Diagnostic.error("<none>", 0, 0, "three")));
+                new Diagnostic("<none>", 0, 0, Severity.WARNING, "two"), Diagnostic.error("<none>", 0, 0, "three")));
 
         assertEquals("<none>: error: one\n<none>: warning: two\n<none>: error: three\n2 errors, 1 warning\n", report);
     }

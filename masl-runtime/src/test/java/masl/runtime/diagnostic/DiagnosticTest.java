@@ -15,13 +15,13 @@ class DiagnosticTest {
         assertEquals("a.masl:3:7: error: no", Diagnostic.error("a.masl", 3, 7, "no").headline());
         assertEquals("a.xml:3: error: no", Diagnostic.error("a.xml", 3, 0, "no").headline());
         assertEquals("a.xml: error: no", Diagnostic.error("a.xml", 0, 5, "no").headline());
-        assertEquals("w.xode:1:2: warning: odd", Diagnostic.warning("w.xode", 1, 2, "odd").toString());
+        assertEquals("w.xode:1:2: warning: odd", new Diagnostic("w.xode", 1, 2, Severity.WARNING, "odd").toString());
     }
 
     @Test
     void diagnosticsSortByFileThenLineThenColumn() {
         Diagnostic b = Diagnostic.error("b.masl", 1, 1, "b");
-        Diagnostic a2 = Diagnostic.warning("a.masl", 2, 1, "a2");
+        Diagnostic a2 = new Diagnostic("a.masl", 2, 1, Severity.WARNING, "a2");
         Diagnostic a10 = Diagnostic.error("a.masl", 10, 1, "a10");
         Diagnostic a2x9 = Diagnostic.error("a.masl", 2, 9, "a2x9");
         List<Diagnostic> listed = new ArrayList<>(List.of(b, a10, a2x9, a2));
