@@ -37,6 +37,18 @@ class JavaLimitsCommandTest {
         assertTrue(run.out().startsWith("s0\ns1\n") && run.out().endsWith("s2999\n"), run.out());
     }
 
+    /** More constants than one class file holds, in one block: the parts of the program class hold them. */
+    @Test
+    @Timeout(600)
+    void seventyThousandDistinctConstantsInOneBlockRun() throws IOException {
+        String statements = IntStream.range(0, 70_000).mapToObj(i -> "  x = x + " + (100_000 + i) + ";\n")
+                .collect(Collectors.joining());
+        CheckCommandTest.Run run = CheckCommandTest.Run.of("run",
+                write("constants.masl", HEADER + "scalar entry main (true) {\n  local int x = 0;\n" + statements + "  .logln(x);\n}\n"));
+        int sum = IntStream.range(0, 70_000).map(i -> 100_000 + i).sum();
+        assertEquals(new CheckCommandTest.Run(0, sum + "\n", ""), run);
+    }
+
     @Test
     void twoThousandNestedBracketsRun() throws IOException {
         CheckCommandTest.Run run = CheckCommandTest.Run.of("run", write("deep.masl", HEADER

@@ -79,7 +79,10 @@ final class CaseWriter {
         }
     }
 
-    /** A line whose text names a resumption point, resolved when the cases are numbered. */
+    /**
+     * A line that sets {@code pc} to a resumption point, resolved when the cases are numbered:
+     * {@code before}, the assignment, {@code after}.
+     */
     private record Jump(String indent, String before, Point point, String after) {
     }
 
@@ -222,7 +225,7 @@ final class CaseWriter {
 
     /** {@code pc = point;} */
     void setPc(Point point) {
-        add(new Jump(indentation(), "pc = ", point, ";"));
+        add(new Jump(indentation(), "", point, ""));
         if (indent == 0) {
             pcSetTo = point;
         }
@@ -245,7 +248,7 @@ final class CaseWriter {
 
     /** The text of a jump to {@code point} inside a line: {@code prefix + "pc = N; continue;" + suffix}. */
     void jumpLine(String prefix, Point point, String suffix) {
-        add(new Jump(indentation() + prefix, "pc = ", point, "; continue;" + suffix));
+        add(new Jump(indentation() + prefix, "", point, " continue;" + suffix));
     }
 
     /**
@@ -298,8 +301,9 @@ final class CaseWriter {
     }
 
     /**
-     * Appends {@code c} to {@code text}, each line indented by {@code margin}; a return is
-     * {@code return false;} when the case is in a part of a split state machine.
+     * Appends {@code c} to {@code text}, each line indented by {@code margin}. In a part of a split
+     * state machine a return is {@code return false;}, and {@code pc} is set through the program's
+     * {@code setPc} ({@link StateMachineWriter}).
      */
     static void render(StringBuilder text, Case c, String margin, boolean inPart) {
         text.append(margin).append("case ").append(c.number).append(':');
@@ -310,7 +314,8 @@ final class CaseWriter {
         for (Object line : c.lines) {
             text.append(margin).append("    ");
             if (line instanceof Jump jump) {
-                text.append(jump.indent()).append(jump.before()).append(jump.point().number()).append(jump.after());
+                text.append(jump.indent()).append(jump.before()).append(inPart ? "setPc(" : "pc = ")
+                        .append(jump.point().number()).append(inPart ? ");" : ";").append(jump.after());
             } else if (line instanceof Return exit) {
                 text.append(exit.indent()).append(exit.before()).append(inPart ? "return false;" : "return;")
                         .append(exit.after());
@@ -328,7 +333,7 @@ final class CaseWriter {
      */
     private static int size(Object line) {
         if (line instanceof Jump jump) {
-            return jump.indent().length() + size(jump.before()) + size(jump.after()) + 5;
+            return jump.indent().length() + size(jump.before()) + size(jump.after()) + "pc = ;".length() + 5;
         }
         if (line instanceof Return exit) {
             return exit.indent().length() + size(exit.before()) + size(exit.after()) + 13;

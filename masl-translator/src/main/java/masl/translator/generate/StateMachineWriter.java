@@ -127,6 +127,14 @@ final class StateMachineWriter {
         dispatch(out, "String sourceAt(int pc)", "sourceAt", "null");
         out.add("");
         dispatch(out, "String sourceOfCallIn(int pc)", "sourceOfCallIn", "sourceAt(pc)");
+        out.add("");
+        out.add("    /**");
+        out.add("     * How the parts set pc: javac gives an inner class each access of a field inherited from another");
+        out.add("     * package a synthetic method of its own in this class, and a class holds 65,535 constants.");
+        out.add("     */");
+        out.add("    private void setPc(int next) {");
+        out.add("        pc = next;");
+        out.add("    }");
         for (int i = 0; i < parts.size(); i++) {
             out.add("");
             writePart(out, parts.get(i), i + 1 < parts.size());
@@ -142,12 +150,12 @@ final class StateMachineWriter {
         out.add("        @SuppressWarnings(\"fallthrough\") // resumption points fall through into the next one");
         out.add("        boolean resume(AgentContext ctx) {");
         out.add("            while (true) {");
-        out.add("                switch (pc) {");
+        out.add("                switch (pc()) {");
         for (CaseWriter.Case c : cases) {
             CaseWriter.render(out.buffer(), c, PART_CASE_MARGIN, true);
         }
         if (followed && last.fallsThrough()) {
-            out.add(PART_CASE_MARGIN + "    pc = " + part.end() + "; // on in the next part");
+            out.add(PART_CASE_MARGIN + "    setPc(" + part.end() + "); // on in the next part");
             out.add(PART_CASE_MARGIN + "    return true;");
         }
         out.add("                    default:");

@@ -104,7 +104,7 @@ class CaseWriterTest {
     }
 
     @Test
-    void aReturnInAPartOfASplitMachineSaysTheAgentStopped() {
+    void aPartOfASplitMachineSetsPcThroughTheProgramAndReturnsFalseWhenTheAgentStopped() {
         CaseWriter cases = new CaseWriter();
         cases.place(cases.point(), "t.masl:1: .nop();");
         cases.suspending("ctx.stepBoundary()", cases.point());
@@ -112,7 +112,7 @@ class CaseWriterTest {
         cases.number();
         StringBuilder text = new StringBuilder();
         cases.cases().forEach(c -> CaseWriter.render(text, c, "", true));
-        assertEquals(List.of("case 0: // t.masl:1: .nop();", "    pc = 1;", "    if (!ctx.stepBoundary()) return false;",
+        assertEquals(List.of("case 0: // t.masl:1: .nop();", "    setPc(1);", "    if (!ctx.stepBoundary()) return false;",
                 "case 1:", "    return false;"), List.of(text.toString().split("\n")));
         assertFalse(cases.cases().get(1).fallsThrough());
     }
