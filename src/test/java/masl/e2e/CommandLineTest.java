@@ -77,6 +77,23 @@ class CommandLineTest {
         }
     }
 
+    /** {@code masl run p.masl >> p.masl}: the journal would be written into the program, which is kept. */
+    @Test
+    void aJournalAppendedToTheProgramIsRefused() throws Exception {
+        Path program = Files.writeString(folder.resolve("victim.masl"), """
+                import Default.xml as Default;
+                Default a = newAgent(Default);
+                scalar entry main (true) { .logln("hi"); }
+                """);
+        String text = Files.readString(program);
+        try (MaslProcess masl = MaslProcess.startAppendingTo(program.toFile(), "run", program.toString(), "--quiet")) {
+            assertEquals(64, masl.awaitExit(), masl::toString);
+            assertTrue(masl.err().startsWith("masl: the journal (standard output) /dev/stdout is the program " + program
+                    + " (the same file): masl does not write over a file it reads\n"), masl::toString);
+        }
+        assertEquals(text, Files.readString(program));
+    }
+
     /** JADE prints the stack traces of a failed join on standard error: the user sees one line instead. */
     @Test
     void joiningAPlatformWhoseMainContainerIsNotThereIsOneLine() throws Exception {

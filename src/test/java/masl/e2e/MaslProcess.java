@@ -54,6 +54,11 @@ final class MaslProcess implements AutoCloseable {
         return start(Map.of(), folder, out, arguments);
     }
 
+    /** Starts {@code masl ARGUMENTS} with standard output appended to {@code out}, as a shell's {@code >> out} does. */
+    static MaslProcess startAppendingTo(File out, String... arguments) throws IOException {
+        return start(Map.of(), Path.of(""), List.of(), ProcessBuilder.Redirect.appendTo(out), arguments);
+    }
+
     /** Starts {@code masl ARGUMENTS} in a JVM given {@code jvmOptions} ({@code -Xmx64m}), standard output written to {@code out}. */
     static MaslProcess startWith(List<String> jvmOptions, File out, String... arguments) throws IOException {
         return start(Map.of(), Path.of(""), jvmOptions, out, arguments);
@@ -66,6 +71,11 @@ final class MaslProcess implements AutoCloseable {
 
     private static MaslProcess start(Map<String, String> environment, Path folder, List<String> jvmOptions, File out,
             String... arguments) throws IOException {
+        return start(environment, folder, jvmOptions, ProcessBuilder.Redirect.to(out), arguments);
+    }
+
+    private static MaslProcess start(Map<String, String> environment, Path folder, List<String> jvmOptions,
+            ProcessBuilder.Redirect out, String... arguments) throws IOException {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
         command.addAll(jvmOptions);
         command.addAll(List.of("-cp", System.getProperty("java.class.path"), Main.class.getName()));

@@ -1,6 +1,7 @@
 package masl.cli;
 
 import java.io.IOException;
+import java.io.PrintStream;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
@@ -85,6 +86,17 @@ final class CommandInputs {
                         + (output.equals(input.file()) ? "" : " (the same file)")
                         + ": masl does not write over a file it reads");
             }
+        }
+    }
+
+    /**
+     * Refuses a journal written to {@code out} when {@code out} is this process's standard output and
+     * that is one of the inputs ({@code masl run p.masl >> p.masl}); Linux names it {@code /dev/stdout}.
+     */
+    void refuseJournalOverwriting(PrintStream out) throws UsageException {
+        Path standardOutput = Path.of("/dev/stdout");
+        if (out == System.out && Files.exists(standardOutput)) {
+            refuseOverwriting("the journal (standard output)", standardOutput);
         }
     }
 

@@ -60,8 +60,9 @@ final class RunCommand {
 
     private int translateAndRun(CommandLine line, SourceFile source, StopOnSignal signals) throws UsageException {
         AgentPath agentPath = AgentPath.parse(line.agentPath);
-        CommandInputs.ofProgram(source, agentPath).add("the placement file", line.place)
-                .refuseOverwriting("the trace", line.traceFile);
+        CommandInputs inputs = CommandInputs.ofProgram(source, agentPath).add("the placement file", line.place);
+        inputs.refuseOverwriting("the trace", line.traceFile);
+        inputs.refuseJournalOverwriting(out);
         MissionLoader loaded = load(line, source, agentPath);
         if (loaded == null) {
             return Masl.PROGRAM_ERRORS;

@@ -84,7 +84,7 @@ final class SimRun {
             return Masl.PROGRAM_ERRORS;
         }
         Path output = outputFolder(line.outputFolder, scenarioFile);
-        refuseOverwritingInputs(output, scenarioFile, scenario, source, agentPath);
+        refuseOverwritingInputs(output, scenarioFile, scenario, source, agentPath).refuseJournalOverwriting(out);
         String unwritable = OutputFolder.cannotWrite(output);
         if (unwritable != null) {
             err.println("masl: cannot write the simulation's output to " + output + ": " + unwritable);
@@ -201,8 +201,8 @@ final class SimRun {
         return Masl.MISSION_FAILED;
     }
 
-    /** None of the files written to {@code output} may be one the run reads. */
-    private static void refuseOverwritingInputs(Path output, Path scenarioFile, Scenario scenario, SourceFile source,
+    /** None of the files written to {@code output} may be one the run reads; the inputs, for the journal's check. */
+    private static CommandInputs refuseOverwritingInputs(Path output, Path scenarioFile, Scenario scenario, SourceFile source,
             AgentPath agentPath) throws UsageException {
         CommandInputs inputs = CommandInputs.ofProgram(source, agentPath).add("the scenario", scenarioFile);
         scenario.worlds().forEach(world -> world.file().ifPresent(file -> inputs.add("the world", file)));
@@ -214,6 +214,7 @@ final class SimRun {
                 ScenarioRunner.JOURNAL, ScenarioRunner.PICTURE)) {
             inputs.refuseOverwriting("the output", output.resolve(name));
         }
+        return inputs;
     }
 
     private static String agentPathWithDescriptors(Scenario scenario, String userPath) {
