@@ -29,6 +29,8 @@ import masl.runtime.event.EventOccurrence;
 import masl.runtime.invocation.PendingInvocation;
 import masl.runtime.scheduling.Blocking;
 import masl.runtime.scheduling.ChangeEpoch;
+import masl.runtime.scheduling.ClockedCall;
+import masl.runtime.scheduling.MissionClock;
 import masl.runtime.scheduling.PoolScheduler;
 import masl.runtime.scheduling.PrimitiveTurn;
 import masl.runtime.scheduling.Scheduler;
@@ -523,12 +525,20 @@ public final class Mission {
      * on a thread of its own, the caller's blocking wait letting the pool go on ({@link Blocking}).
      * The timeout counts from the moment the primitive starts on that thread: it bounds how long the
      * primitive runs, so a loaded machine that is slow to start the thread does not turn a quick
-     * primitive into a {@code timeout}.
+     * primitive into a {@code timeout}. On a scheduler that keeps the mission's time, sleeps and
+     * the timeout are counted on its clock instead ({@link ClockedCall}).
      *
      * @throws PrimitiveTimedOut if it ran past the timeout: its thread is interrupted, its result dropped
      * @throws Exception what the primitive threw
      */
     <T> T callPrimitive(Callable<T> call) throws Exception {
+        if (scheduler instanceof MissionClock clock) {
+            try {
+                return ClockedCall.run(clock, callTimeout, primitives, call);
+            } catch (ClockedCall.LimitPassed late) {
+                throw new PrimitiveTimedOut();
+            }
+        }
         if (callTimeout == null) {
             return call.call();
         }
@@ -718,10 +728,15 @@ public final class Mission {
             journal.append(text);
         }
 
-        /** Really blocks the calling thread (a primitive's Java code); the pool stays live meanwhile. */
+        /**
+         * On a mission clock, sleeps in mission time ({@link ClockedCall}); otherwise really blocks
+         * the calling thread (a primitive's Java code), the pool staying live meanwhile.
+         */
         @Override
         public void sleep(long ms) throws InterruptedException {
-            Blocking.sleep(ms);
+            if (!ClockedCall.sleep(ms)) {
+                Blocking.sleep(ms);
+            }
         }
     }
 }

@@ -2,6 +2,7 @@ package masl.runtime.scheduling;
 
 import java.util.concurrent.Executor;
 import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.Semaphore;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import masl.runtime.Mission;
@@ -22,11 +23,18 @@ import masl.runtime.Mission;
  * it is waited for, in real time, and takes no mission time (docs/decisions.md). A body that runs
  * its primitive on another thread under a call timeout is judged by that thread's state, so the
  * timeout's own wait does not end the turn early.
+ *
+ * <p>On a {@link MissionClock}, a body's sleep through its agent's services ends the turn too, but
+ * reproducibly: the body resumes as a new turn when the clock gets there ({@link #sleepUntil}). A
+ * body blocked without end under a call time limit is interrupted by a turn drawn when the clock
+ * reaches the limit ({@link ClockedCall}).
  */
 public final class PrimitiveTurn {
 
     /** How long the scheduler's thread parks between two looks at a body still running. */
     private static final long LOOK_PERIOD_NANOS = TimeUnit.MICROSECONDS.toNanos(50);
+    /** How long an interrupted body may take to notice before it is left to go on alone. */
+    private static final long INTERRUPTION_GRACE_NANOS = TimeUnit.SECONDS.toNanos(2);
 
     /** The turn whose body runs on the current thread, for a body that hands its work on. */
     private static final ThreadLocal<PrimitiveTurn> CURRENT = new ThreadLocal<>();
@@ -40,6 +48,13 @@ public final class PrimitiveTurn {
     private volatile boolean delegating;
     private volatile Thread delegate;
     private volatile boolean delegateDone;
+    /** The body sleeps on the mission clock: the turn is over until {@link #resume()}. */
+    private volatile boolean asleep;
+    /** {@link #resume()} has handed the body its turn and the body has yet to wake: it is not blocked. */
+    private volatile boolean waking;
+    private final Semaphore wake = new Semaphore(0);
+    /** The call the body is in on the mission clock, or null. */
+    private volatile ClockedCall call;
 
     /**
      * @param body    the primitive and the completion of its future
@@ -62,9 +77,65 @@ public final class PrimitiveTurn {
         } catch (RejectedExecutionException missionEnded) {
             return;
         }
-        while (!returned && !blockedWithoutEnd() && !Thread.currentThread().isInterrupted()) {
+        awaitBody();
+    }
+
+    /** Waits until the body has returned, sleeps on the mission clock, or blocks without end. */
+    private void awaitBody() {
+        while (!returned && !asleep && !Thread.currentThread().isInterrupted()) {
+            if (blockedWithoutEnd()) {
+                ClockedCall limited = call;
+                if (limited != null) {
+                    limited.giveUpAtDeadline(this);
+                }
+                return;
+            }
             LockSupport.parkNanos(this, LOOK_PERIOD_NANOS);
         }
+    }
+
+    /**
+     * Called on the body's thread: ends this turn and waits until the clock reaches {@code at}
+     * and the scheduler draws the body's next turn.
+     *
+     * @throws InterruptedException when the mission ends meanwhile
+     */
+    void sleepUntil(MissionClock clock, long at) throws InterruptedException {
+        clock.runAt(at, this::resume);
+        asleep = true;
+        LockSupport.unpark(waiter);
+        wake.acquire();
+        waking = false;
+    }
+
+    /** The body's next turn, on the scheduler's thread: wakes the body and waits for it as {@link #run()} does. */
+    void resume() {
+        waiter = Thread.currentThread();
+        waking = true;
+        asleep = false;
+        wake.release();
+        awaitBody();
+    }
+
+    /** The turn drawn when a blocked body's call time limit has passed: interrupts the body, then waits for it. */
+    void interruptBody() {
+        if (returned || asleep) {
+            return;
+        }
+        waiter = Thread.currentThread();
+        Thread body = runner;
+        body.interrupt();
+        // The body looks blocked until its thread has run again; one that ignores the interruption is left alone in the end.
+        long latest = System.nanoTime() + INTERRUPTION_GRACE_NANOS;
+        while (!returned && blockedWithoutEnd(body) && System.nanoTime() < latest
+                && !Thread.currentThread().isInterrupted()) {
+            LockSupport.parkNanos(this, LOOK_PERIOD_NANOS);
+        }
+        awaitBody();
+    }
+
+    void calling(ClockedCall current) {
+        call = current;
     }
 
     private void runBody() {
@@ -121,10 +192,27 @@ public final class PrimitiveTurn {
         if (delegating) {
             thread = delegateDone ? null : delegate;
         }
+        return !waking && blockedWithoutEnd(thread) && !returned;
+    }
+
+    /**
+     * Whether {@code thread} waits with no end of its own (a latch, a lock, a queue); false for null,
+     * and for a thread held while another loads the class it needs: that ends by itself.
+     */
+    static boolean blockedWithoutEnd(Thread thread) {
         if (thread == null) {
             return false;
         }
         Thread.State state = thread.getState();
-        return (state == Thread.State.WAITING || state == Thread.State.BLOCKED) && !returned;
+        return state == Thread.State.WAITING || state == Thread.State.BLOCKED && !loadingAClass(thread);
+    }
+
+    private static boolean loadingAClass(Thread thread) {
+        for (StackTraceElement frame : thread.getStackTrace()) {
+            if (frame.getMethodName().startsWith("loadClass")) {
+                return true;
+            }
+        }
+        return false;
     }
 }

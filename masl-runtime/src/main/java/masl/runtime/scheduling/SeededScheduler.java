@@ -13,13 +13,14 @@ import java.util.concurrent.Executor;
  * asynchronous primitives ({@link PrimitiveTurn}), so launches complete at reproducible points too.
  *
  * <p>Time is virtual: when nothing is runnable, the clock jumps to the earliest pending
- * {@link #scheduleAfter} action and runs it, so sleeps take no real time. A primitive that really
- * blocks for a while ({@code Thread.sleep}) holds the run meanwhile and takes no virtual time. A
- * body that waits for an agent goes on alone ({@link PrimitiveTurn}); such wake-ups, and those
- * from outside the mission (a future completed by another thread), are waited for and break
- * determinism only by when they come.
+ * {@link #scheduleAfter} action and runs it, so sleeps take no real time. A primitive's sleeps
+ * through its agent's services and the mission's call time limit are counted on this clock too
+ * ({@link ClockedCall}). A primitive that really blocks for a while ({@code Thread.sleep}) holds
+ * the run meanwhile and takes no virtual time. A body that waits for an agent goes on alone
+ * ({@link PrimitiveTurn}); such wake-ups, and those from outside the mission (a future completed
+ * by another thread), are waited for and break determinism only by when they come.
  */
-public final class SeededScheduler implements Scheduler {
+public final class SeededScheduler implements Scheduler, MissionClock {
 
     private record Timed(long at, long sequence, Runnable action) { }
 
@@ -85,6 +86,22 @@ public final class SeededScheduler implements Scheduler {
     @Override
     public synchronized void scheduleAfter(long delayMillis, Runnable action) {
         timers.add(new Timed(now + delayMillis, timerSequence++, action));
+        notifyAll();
+    }
+
+    @Override
+    public long millis() {
+        return now;
+    }
+
+    @Override
+    public synchronized void passHeld(long until) {
+        now = Math.max(now, until);
+    }
+
+    @Override
+    public synchronized void runAt(long at, Runnable task) {
+        timers.add(new Timed(at, timerSequence++, () -> runnable.add(task)));
         notifyAll();
     }
 
