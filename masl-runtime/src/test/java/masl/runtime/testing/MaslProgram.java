@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Supplier;
 import java.util.stream.Collectors;
@@ -19,13 +20,15 @@ import masl.translator.MaslClassPath;
 import masl.translator.MissionLoader;
 import masl.translator.Translation;
 import masl.translator.Translator;
+import masl.translator.cache.CompiledMission;
+import masl.translator.cache.CompiledMissionCache;
 import masl.translator.source.SourceFile;
 
 /**
  * A test program written in MASL and translated by masl's own translator, so that what the runtime
  * is tested with is what the translator emits. Its agents are {@link TestAgent}s, of the type
  * {@code agents/Default.xml}: a program begins with {@link #header(int)}. Each text is translated and
- * compiled once per test JVM; each run is a fresh mission of it.
+ * compiled once per test JVM, or taken from the cache of compiled missions; each run is a fresh mission of it.
  */
 public final class MaslProgram {
 
@@ -62,11 +65,22 @@ public final class MaslProgram {
         Path agents = TestTypes.folder();
         Path testClasses = Path.of(MaslClassPath.locationOf(TestAgent.class).orElseThrow());
         AgentPath path = AgentPath.of(List.of(agents, testClasses), MaslProgram.class.getClassLoader());
-        Translation translation = new Translator(path).translate(new SourceFile(name, agents, text));
+        SourceFile source = new SourceFile(name, agents, text);
+        // masl run's cache of compiled missions ($MASL_CACHE_DIR: the build folder in this build's tests):
+        // a program, descriptors, test classes and masl unchanged since the last run skip javac.
+        CompiledMissionCache cache = new CompiledMissionCache(CompiledMissionCache.defaultFolder(System.getenv()));
+        String key = cache.keyOf(source, path);
+        Optional<CompiledMission> compiled = cache.lookup(key);
+        if (compiled.isPresent()) {
+            return new MaslProgram(MissionLoader.ofCompiled(compiled.get().missionClassName(), compiled.get().classFiles(), path));
+        }
+        Translation translation = new Translator(path).translate(source);
         if (!translation.succeeded()) {
             throw new AssertionError(name + " does not translate:\n" + translation.diagnostics().sorted());
         }
-        return new MaslProgram(MissionLoader.load(translation, path));
+        MissionLoader loaded = MissionLoader.load(translation, path);
+        cache.store(key, new CompiledMission(loaded.missionClassName(), loaded.classFiles(), ""));
+        return new MaslProgram(loaded);
     }
 
     /** Agents made by {@code make}, each also added to {@code made}, in proxy id order: the test keeps them. */
