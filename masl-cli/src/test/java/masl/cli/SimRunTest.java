@@ -102,23 +102,12 @@ class SimRunTest {
 
     @Test
     void theSimulationsTraceIsCutAtItsLimit() throws IOException {
-        Path scenario = scenario("""
-                import WheeledRobot.xml as WheeledRobot;
-                WheeledRobot k = newAgent(WheeledRobot);
-                asynchronous entry main (true) {
-                  local int i = 0;
-                  asynchronous entry tick (i < 300) {
-                    i++;
-                    reelect;
-                  }
-                  .logln("ticked");
-                }
-                """);
+        Path scenario = scenario(TraceOutputTest.ticking("WheeledRobot", 300));
 
         Run run = Run.of("run", "--sim", scenario.toString(), "--trace-limit", "4K");
 
         assertEquals(0, run.status(), run.err());
-        assertEquals("ticked\n", run.out());
+        assertEquals("done\n", run.out());
         Path trace = folder.resolve("drive.out").resolve("trace.jsonl");
         assertTrue(Files.size(trace) <= 4096, Files.size(trace) + " bytes");
         List<String> lines = Files.readAllLines(trace);

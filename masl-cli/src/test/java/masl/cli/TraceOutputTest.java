@@ -19,18 +19,23 @@ import org.junit.jupiter.api.io.TempDir;
 class TraceOutputTest {
 
     /** 3000 turns of a block: about a megabyte of trace. */
-    private static final String TICKING = """
-            import Default.xml as Default;
-            Default a = newAgent(Default);
-            asynchronous entry main (true) {
-              local int i = 0;
-              asynchronous entry tick (i < 3000) {
-                i++;
-                reelect;
-              }
-              .logln("done");
-            }
-            """;
+    private static final String TICKING = ticking("Default", 3000);
+
+    /** A program whose agent k, of {@code type}, turns a block {@code turns} times, then logs "done". */
+    static String ticking(String type, int turns) {
+        return """
+                import %1$s.xml as %1$s;
+                %1$s k = newAgent(%1$s);
+                asynchronous entry main (true) {
+                  local int i = 0;
+                  asynchronous entry tick (i < %2$d) {
+                    i++;
+                    reelect;
+                  }
+                  .logln("done");
+                }
+                """.formatted(type, turns);
+    }
 
     @TempDir
     Path folder;
@@ -52,7 +57,7 @@ class TraceOutputTest {
 
     @Test
     void aTraceThatFailsWhileTheMissionRunsStopsIt() throws IOException {
-        Path program = Files.writeString(folder.resolve("tick.masl"), TICKING.replace("i < 3000", "true"));
+        Path program = Files.writeString(folder.resolve("tick.masl"), ticking("Default", Integer.MAX_VALUE));
 
         Run run = Run.of("run", program.toString(), "--trace", "/dev/full");
 
