@@ -8,7 +8,6 @@ import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicReference;
 import masl.runtime.descriptor.AgentPath;
 import org.eclipse.lsp4j.jsonrpc.Launcher;
-import org.eclipse.lsp4j.launch.LSPLauncher;
 import org.eclipse.lsp4j.services.LanguageClient;
 
 /** Runs the MASL language server over a pair of streams: what {@code masl lsp} does on standard input and output. */
@@ -25,7 +24,9 @@ public final class MaslLsp {
     public static int serve(InputStream in, OutputStream out, AgentPath agentPath) throws InterruptedException {
         AtomicReference<Future<Void>> listening = new AtomicReference<>();
         MaslLanguageServer server = new MaslLanguageServer(agentPath, () -> listening.get().cancel(true));
-        Launcher<LanguageClient> launcher = LSPLauncher.createServerLauncher(server, in, out);
+        OneLineLog.install();
+        Launcher<LanguageClient> launcher = new WholeBodyLauncherBuilder().setLocalService(server)
+                .setRemoteInterface(LanguageClient.class).setInput(in).setOutput(out).create();
         server.connect(launcher.getRemoteProxy());
         listening.set(launcher.startListening());
         try {
