@@ -10,6 +10,7 @@ import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.Consumer;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -78,24 +79,34 @@ class SeededCallTimeLimitTest {
         }
     }
 
-    /** One JVM per run, so that nothing one run left warm (loaded classes, threads) helps the next. */
+    /**
+     * One JVM per run, so that nothing one run left warm (loaded classes, threads) helps the next:
+     * the primitive sleeping past the limit in a synchronous block, and the labels and futures.
+     */
     @Test
     @Tag("slow")
-    void aPrimitiveSleepingPastTheCallTimeLimitGivesOneJournalPerSeedAcrossProcesses() throws Exception {
+    void eachSeedGivesOneJournalAcrossProcesses() throws Exception {
+        assertOneJournalPerSeed("sleep_past_call_timeout.masl", "100", journal -> assertTrue(
+                journal.contains("0 timeout\n") && journal.contains("0 x=0\n")
+                        && journal.contains("1 timeout\n") && journal.contains("1 x=0\n"), journal));
+        assertOneJournalPerSeed("sleeping_primitives.masl", "200", journal -> assertEquals(MISSION_TIME_ORDER, journal));
+    }
+
+    private void assertOneJournalPerSeed(String program, String callTimeout, Consumer<String> expected) throws Exception {
         Map<Long, Set<String>> journals = new LinkedHashMap<>();
         for (long seed = 1; seed <= 3; seed++) {
-            for (int run = 0; run < 4; run++) {
-                File out = folder.resolve("journal-" + seed + "-" + run + ".txt").toFile();
-                try (MaslProcess masl = MaslProcess.start(out, "run", "src/test/resources/faults/sleep_past_call_timeout.masl",
-                        "--agent-path", TEST_CLASSES, "--call-timeout", "100", "--seed", Long.toString(seed), "--quiet")) {
+            for (int run = 0; run < 3; run++) {
+                File out = folder.resolve(program + "-" + seed + "-" + run + ".txt").toFile();
+                try (MaslProcess masl = MaslProcess.start(out, "run", "src/test/resources/faults/" + program,
+                        "--agent-path", TEST_CLASSES, "--call-timeout", callTimeout, "--seed", Long.toString(seed), "--quiet")) {
                     assertEquals(0, masl.awaitExit(), masl::toString);
                 }
-                String journal = Files.readString(out.toPath());
-                assertTrue(journal.contains("0 timeout\n") && journal.contains("0 x=0\n")
-                        && journal.contains("1 timeout\n") && journal.contains("1 x=0\n"), journal);
-                journals.computeIfAbsent(seed, any -> new LinkedHashSet<>()).add(journal);
+                journals.computeIfAbsent(seed, any -> new LinkedHashSet<>()).add(Files.readString(out.toPath()));
             }
         }
-        journals.forEach((seed, seen) -> assertEquals(1, seen.size(), "seed " + seed + " gave " + seen));
+        journals.forEach((seed, seen) -> {
+            assertEquals(1, seen.size(), program + ": seed " + seed + " gave " + seen);
+            expected.accept(seen.iterator().next());
+        });
     }
 }
