@@ -30,6 +30,13 @@ public final class InMemoryCompiler {
     /** A generated compilation unit: the binary name of its top-level class and its text. */
     public record Source(String className, String text) { }
 
+    /**
+     * The Java the generated code is compiled for: 17, masl's. On a JDK 17 that is the JDK's own API, which
+     * javac reads from the running image; {@code --release 17} would make it read the API of 17 from the
+     * JDK's {@code ct.sym} instead, a tenth of a first {@code masl run}'s CPU. Other JDKs need it.
+     */
+    private static final List<String> RELEASE = Runtime.version().feature() == 17 ? List.of() : List.of("--release", "17");
+
     private final List<String> classPath;
 
     /** @param classPath folders and jars the generated code compiles against, besides this JVM's class path */
@@ -68,7 +75,8 @@ public final class InMemoryCompiler {
         for (Source source : sources) {
             units.add(new SourceInMemory(source));
         }
-        List<String> options = List.of("-classpath", joinedClassPath(), "-proc:none", "-g", "-nowarn", "--release", "17");
+        List<String> options = new ArrayList<>(List.of("-classpath", joinedClassPath(), "-proc:none", "-g", "-nowarn"));
+        options.addAll(RELEASE);
         StringWriter javacOutput = new StringWriter();
         boolean compiled = javac.getTask(javacOutput, output, problems, options, null, units).call();
         if (!compiled) {
