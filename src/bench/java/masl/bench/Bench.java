@@ -7,6 +7,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
 import masl.bench.jade.AclPingPong;
@@ -208,33 +209,48 @@ public final class Bench {
     }
 
     /**
-     * {@code masl run} as whole processes, {@link StartUp}: before the cache, a first
-     * run and a second run of the unchanged program, interleaved.
+     * {@code masl run} as whole processes, {@link StartUp}: before the cache, a first run and a second
+     * run of the unchanged program, and {@code masl check}, interleaved; on the bench's JDK (17) with
+     * the class-data archive, and on the JDK 25 installing found with its ahead-of-time cache.
      */
     private static void startUp() throws Exception {
-        System.out.println("8. Start-up: masl run and masl check of missions/hello.masl as whole processes of the installed command,"
-                + " elapsed and the process's CPU time (median of " + RUNS + ", " + loadAverage() + ")");
-        StartUp startUp = StartUp.installed();
+        System.out.println("8. Start-up: masl run and masl check of a new mission (missions/hello.masl under another name) as whole"
+                + " processes of the installed command, elapsed and the process's CPU time (median of " + RUNS + ", "
+                + loadAverage() + ")");
+        StartUp jdk17 = StartUp.installed(Path.of(System.getProperty("java.home")));
+        Optional<Path> aheadOfTimeJdk = StartUp.aheadOfTimeJdk();
+        Optional<StartUp> jdk25 = aheadOfTimeJdk.isPresent() ? Optional.of(StartUp.installed(aheadOfTimeJdk.get())) : Optional.empty();
         try {
-            List<StartUp.Timing> before = new ArrayList<>();
-            List<StartUp.Timing> first = new ArrayList<>();
-            List<StartUp.Timing> second = new ArrayList<>();
-            List<StartUp.Timing> checkC1 = new ArrayList<>();
-            List<StartUp.Timing> checkC2 = new ArrayList<>();
-            Map<String, double[]> figures = interleaved(RUNS, List.of(
-                    new Measure("before", () -> record(before, startUp.before())),
-                    new Measure("first", () -> record(first, startUp.first())),
-                    new Measure("second", () -> record(second, startUp.second())),
-                    new Measure("check C2", () -> record(checkC2, startUp.check(true))),
-                    new Measure("check", () -> record(checkC1, startUp.check(false)))));
-            System.out.printf(Locale.ROOT, "%-52s | %10s | %10s | %10s%n", "", "elapsed", "CPU", "goal");
-            printStartUp("before: --no-cache, the JDK's class-data archive", figures.get("before"), before, "");
-            printStartUp("first run: empty cache, lib/masl.jsa", figures.get("first"), first, "<= before");
-            printStartUp("second run: the mission from the cache", figures.get("second"), second, "<= 0.4 s");
-            printStartUp("masl check, C1 and C2 (-XX:TieredStopAtLevel=4)", figures.get("check C2"), checkC2, "");
-            printStartUp("masl check, C1 alone (the command's JIT)", figures.get("check"), checkC1, "<= C1 and C2");
+            Map<String, List<StartUp.Timing>> timings = new LinkedHashMap<>();
+            List<Measure> measures = new ArrayList<>(List.of(
+                    new Measure("before", () -> record(timings, "before", jdk17.before())),
+                    new Measure("first", () -> record(timings, "first", jdk17.first())),
+                    new Measure("second", () -> record(timings, "second", jdk17.second())),
+                    new Measure("check C2", () -> record(timings, "check C2", jdk17.check(true))),
+                    new Measure("check", () -> record(timings, "check", jdk17.check(false)))));
+            jdk25.ifPresent(startUp -> measures.addAll(List.of(
+                    new Measure("first 25", () -> record(timings, "first 25", startUp.first())),
+                    new Measure("second 25", () -> record(timings, "second 25", startUp.second())),
+                    new Measure("check 25", () -> record(timings, "check 25", startUp.check(false))))));
+            Map<String, double[]> figures = interleaved(RUNS, measures);
+            System.out.printf(Locale.ROOT, "%-58s | %10s | %10s | %10s%n", "", "elapsed", "CPU", "goal");
+            printStartUp("JDK 17 before: --no-cache, the JDK's class-data archive", figures, timings, "before", "");
+            printStartUp("JDK 17 first run: empty cache, lib/masl.jsa", figures, timings, "first", "<= 0.6 s");
+            printStartUp("JDK 17 second run: the mission from the cache", figures, timings, "second", "<= 0.4 s");
+            printStartUp("JDK 17 masl check, C1 and C2 (-XX:TieredStopAtLevel=4)", figures, timings, "check C2", "");
+            printStartUp("JDK 17 masl check, C1 alone (the command's JIT)", figures, timings, "check", "<= 0.4 s");
+            if (jdk25.isPresent()) {
+                printStartUp("JDK 25 first run: empty cache, lib/masl.aot", figures, timings, "first 25", "<= 0.6 s");
+                printStartUp("JDK 25 second run: the mission from the cache", figures, timings, "second 25", "<= 0.4 s");
+                printStartUp("JDK 25 masl check, C1 alone", figures, timings, "check 25", "<= 0.4 s");
+            } else {
+                System.out.println("   (no JDK 25: installing found none, so it made no lib/masl.aot)");
+            }
         } finally {
-            startUp.close();
+            jdk17.close();
+            if (jdk25.isPresent()) {
+                jdk25.get().close();
+            }
         }
         System.out.println();
     }
@@ -266,15 +282,21 @@ public final class Bench {
         System.out.println();
     }
 
-    private static double record(List<StartUp.Timing> timings, StartUp.Timing timing) {
-        timings.add(timing);
+    private static double record(Map<String, List<StartUp.Timing>> timings, String row, StartUp.Timing timing) {
+        timings.computeIfAbsent(row, name -> new ArrayList<>()).add(timing);
         return timing.elapsed();
     }
 
-    /** The CPU column skips the warm-up run, as the elapsed figures do. */
-    private static void printStartUp(String row, double[] elapsed, List<StartUp.Timing> timings, String goal) {
-        double[] cpu = timings.subList(1, timings.size()).stream().mapToDouble(StartUp.Timing::cpu).toArray();
-        System.out.printf(Locale.ROOT, "%-52s | %8.2f s | %8.2f s | %10s%n", row, median(elapsed), median(cpu), goal);
+    /** Median and range; the CPU column skips the warm-up run, as the elapsed figures do. */
+    private static void printStartUp(String row, Map<String, double[]> figures, Map<String, List<StartUp.Timing>> timings,
+            String measure, String goal) {
+        double[] elapsed = figures.get(measure);
+        List<StartUp.Timing> all = timings.get(measure);
+        double[] cpu = all.subList(1, all.size()).stream().mapToDouble(StartUp.Timing::cpu).sorted().toArray();
+        double[] sorted = elapsed.clone();
+        java.util.Arrays.sort(sorted);
+        System.out.printf(Locale.ROOT, "%-58s | %8.2f s | %8.2f s | %10s   (elapsed %.2f-%.2f s, CPU %.2f-%.2f s)%n", row,
+                median(elapsed), median(cpu), goal, sorted[0], sorted[sorted.length - 1], cpu[0], cpu[cpu.length - 1]);
     }
 
     /** A round trip of {@link CoreDistance}, or "-" if it could not be measured. */

@@ -7,16 +7,19 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.stream.Stream;
 
 /**
- * {@code masl run missions/hello.masl} as whole processes of the installed command
- * ({@code masl-cli/build/install}, which {@code gradle bench} installs first), elapsed time and the
- * child's CPU time (user and system, from this JVM's {@code /proc/self/stat} once the child is reaped):
+ * {@code masl run} of a copy of {@code missions/hello.masl} under another name, a mission the install's
+ * training run never saw, as whole processes of the installed command ({@code masl-cli/build/install},
+ * which {@code gradle bench} installs first) on one JDK, elapsed time and the child's CPU time (user and
+ * system, from this JVM's {@code /proc/self/stat} once the child is reaped):
  *
  * <ul>
  *   <li>before: {@code --no-cache} on the JDK's own class-data archive, as masl ran before the cache;</li>
- *   <li>first: an empty cache, on the archive installing made ({@code lib/masl.jsa});</li>
+ *   <li>first: an empty cache, on what installing made for the JDK ({@code lib/masl.jsa}, or on a JDK 25
+ *       {@code lib/masl.aot});</li>
  *   <li>second: the same again, the mission found in the cache.</li>
  * </ul>
  *
@@ -29,30 +32,39 @@ final class StartUp {
     private static final double TICKS_PER_SECOND = 100;
 
     private final Path masl;
-    private final Path program;
+    private final Path javaHome;
     private final Path caches;
+    private final Path program;
 
     /** Elapsed seconds and CPU seconds of one process. */
     record Timing(double elapsed, double cpu) { }
 
-    StartUp(Path masl, Path program) throws IOException {
+    StartUp(Path masl, Path javaHome, Path mission) throws IOException {
         this.masl = masl;
-        this.program = program;
+        this.javaHome = javaHome;
         this.caches = Files.createTempDirectory("masl-bench-cache");
+        this.program = Files.copy(mission, caches.resolve("startup.masl"));
     }
 
-    static StartUp installed() throws IOException {
+    /** The installed command on {@code javaHome}. */
+    static StartUp installed(Path javaHome) throws IOException {
         Path home = Path.of(System.getProperty("masl.bench.home", ".")).toAbsolutePath();
         Path masl = home.resolve("masl-cli/build/install/masl/bin/masl");
         if (!Files.isExecutable(masl)) {
             throw new IllegalStateException(masl + " is missing: gradle bench installs it (:masl-cli:installDist)");
         }
-        return new StartUp(masl, home.resolve("missions/hello.masl"));
+        return new StartUp(masl, javaHome, home.resolve("missions/hello.masl"));
+    }
+
+    /** The JDK 25 or later installing made {@code lib/masl.aot} with ({@code masl-cli/build.gradle}), if it found one. */
+    static Optional<Path> aheadOfTimeJdk() {
+        String jdk = System.getProperty("masl.bench.aotJdk", "");
+        return jdk.isEmpty() ? Optional.empty() : Optional.of(Path.of(jdk));
     }
 
     /** Without the cache, on the JDK's default class-data archive: masl as it was. */
     Timing before() throws Exception {
-        Path jdkArchive = Path.of(System.getProperty("java.home"), "lib", "server", "classes.jsa");
+        Path jdkArchive = javaHome.resolve("lib/server/classes.jsa");
         return run(Files.createTempDirectory(caches, "before"), "-XX:SharedArchiveFile=" + jdkArchive, "--no-cache");
     }
 
@@ -85,8 +97,10 @@ final class StartUp {
         ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
         Map<String, String> environment = builder.environment();
         environment.put("MASL_CACHE_DIR", cache.toString());
+        environment.put("JAVA_HOME", javaHome.toString());
         environment.put("JAVA_OPTS", javaOptions);
         environment.remove("MASL_OPTS");
+        environment.remove("MASL_JAVA_HOME");
         long cpuBefore = childrenCpuTicks();
         long start = System.nanoTime();
         Process process = builder.start();
