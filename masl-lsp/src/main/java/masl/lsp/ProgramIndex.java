@@ -87,6 +87,8 @@ final class ProgramIndex {
     }
 
     private final ProgramParser.Parsed parsed;
+    /** The parse tree, empty for a program nested too deeply to be parsed (the diagnostics say where). */
+    private final MASLParser.ProgramContext tree;
     private final AgentPath agentPath;
     private final Map<String, TypeDef> types = new LinkedHashMap<>();
     private final List<AgentDef> agents = new ArrayList<>();
@@ -97,9 +99,10 @@ final class ProgramIndex {
 
     private ProgramIndex(ProgramParser.Parsed parsed, AgentPath agentPath) {
         this.parsed = parsed;
+        this.tree = parsed.tree() != null ? parsed.tree() : new MASLParser.ProgramContext(null, -1);
         this.agentPath = agentPath;
         DescriptorLoader loader = new DescriptorLoader(agentPath);
-        for (MASLParser.HeaderContext header : parsed.tree().header()) {
+        for (MASLParser.HeaderContext header : tree.header()) {
             if (header.importDecl() != null) {
                 addType(header.importDecl().typeName, header.importDecl().filePath(), loader);
             } else if (header.typeDecl() != null) {
@@ -111,7 +114,7 @@ final class ProgramIndex {
                         .forEach(name -> entryDecls.putIfAbsent(name.getText(), name.getStart()));
             }
         }
-        root = parsed.tree().entryBlock() == null ? null : block(parsed.tree().entryBlock(), null);
+        root = tree.entryBlock() == null ? null : block(tree.entryBlock(), null);
     }
 
     static ProgramIndex of(SourceFile source, AgentPath agentPath) {
@@ -134,7 +137,7 @@ final class ProgramIndex {
     }
 
     MASLParser.ProgramContext tree() {
-        return parsed.tree();
+        return tree;
     }
 
     Map<String, TypeDef> types() {
