@@ -14,11 +14,13 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
+import java.util.function.Function;
 import masl.jade.acl.AclInvocations;
 import masl.testing.jade.JadePlatformExtension;
 import masl.runtime.AgentContext;
@@ -208,8 +210,14 @@ class ForgedMessagesTest {
     }
 
     static MissionProgram callsGated(List<Integer> results) {
-        return TestPrograms.of(CallsGated.MAIN, List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
-                self -> new CallsGated(self, results));
+        return callsOnce(results, "gated", body -> body::gated);
+    }
+
+    /** Agent {@code b} calling {@code primitive} once ({@link CallsOnce}). */
+    static MissionProgram callsOnce(List<Integer> results, String primitive,
+            Function<ServiceAgent, Callable<Integer>> call) {
+        return TestPrograms.of(CallsOnce.MAIN, List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
+                self -> new CallsOnce(self, results, primitive, call));
     }
 
     private static ACLMessage answer(AID receiver, int performative, String inReplyTo, String content) {
@@ -223,27 +231,31 @@ class ForgedMessagesTest {
         return answer;
     }
 
-    /** In a main block, calls {@code gated()} on its body once, keeping the result. */
-    static final class CallsGated extends CompactProgram {
+    /** In a main block, calls one primitive of its body once ({@code call}), keeping the result. */
+    static final class CallsOnce extends CompactProgram {
         static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
 
         private final List<Integer> results;
+        private final String primitive;
+        private final Function<ServiceAgent, Callable<Integer>> call;
 
-        CallsGated(TestAgent self, List<Integer> results) {
+        CallsOnce(TestAgent self, List<Integer> results, String primitive, Function<ServiceAgent, Callable<Integer>> call) {
             super(self);
             this.results = results;
+            this.primitive = primitive;
+            this.call = call;
         }
 
         @Override
         protected void resume(AgentContext ctx) {
-            ServiceAgent body = (ServiceAgent) self;
+            Callable<Integer> body = call.apply((ServiceAgent) self);
             while (true) {
                 switch (pc) {
                     case 0:
                         if (!arrive(ctx, MAIN, true, 1, 3)) return;
                         continue;
                     case 1:
-                        results.add(ctx.invokeSelf("gated", -1, body::gated));
+                        results.add(ctx.invokeSelf(primitive, -1, body));
                         if (!step(ctx, 2)) return;
                         continue;
                     case 2:

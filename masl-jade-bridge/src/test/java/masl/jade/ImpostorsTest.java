@@ -22,13 +22,9 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import masl.jade.acl.AclInvocations;
-import masl.runtime.AgentContext;
-import masl.runtime.EntryDefinition;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
-import masl.runtime.Mode;
-import masl.runtime.testing.CompactProgram;
 import masl.testing.jade.JadePlatformExtension;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -222,39 +218,14 @@ class ImpostorsTest {
 
     /** Agent {@code b} calls {@code add(2, 3)} on its body once the test lets it ({@link #go}). */
     static final class LetThrough {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-
         final CompletableFuture<Void> go = new CompletableFuture<>();
         final List<Integer> results = new CopyOnWriteArrayList<>();
 
         MissionProgram program() {
-            return TestPrograms.of(MAIN, List.of(new MissionProgram.AgentSpec("b", ServiceAgent.class.getName())),
-                    self -> new CompactProgram(self) {
-                        @Override
-                        protected void resume(AgentContext ctx) {
-                            ServiceAgent body = (ServiceAgent) self;
-                            while (true) {
-                                switch (pc) {
-                                    case 0:
-                                        if (!arrive(ctx, MAIN, true, 1, 3)) return;
-                                        continue;
-                                    case 1:
-                                        go.join();
-                                        results.add(ctx.invokeSelf("add", -1, () -> body.add(2, 3)));
-                                        if (!step(ctx, 2)) return;
-                                        continue;
-                                    case 2:
-                                        if (!leave(ctx, MAIN, 3)) return;
-                                        continue;
-                                    case 3:
-                                        ctx.finish();
-                                        return;
-                                    default:
-                                        throw new IllegalStateException("pc " + pc);
-                                }
-                            }
-                        }
-                    });
+            return ForgedMessagesTest.callsOnce(results, "add", body -> () -> {
+                go.join();
+                return body.add(2, 3);
+            });
         }
     }
 }

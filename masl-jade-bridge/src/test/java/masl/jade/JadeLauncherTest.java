@@ -83,9 +83,9 @@ class JadeLauncherTest {
     void aCallTimeoutBoundsTheMissionsOwnCalls() throws Exception {
         ServiceAgent.gate = new ServiceAgent.Gate();
         List<Integer> results = new CopyOnWriteArrayList<>();
-        MissionProgram program = TestPrograms.of(ForgedMessagesTest.CallsGated.MAIN,
+        MissionProgram program = TestPrograms.of(ForgedMessagesTest.CallsOnce.MAIN,
                 List.of(new MissionProgram.AgentSpec("g", ServiceAgent.class.getName())),
-                self -> new ForgedMessagesTest.CallsGated(self, results));
+                self -> new ForgedMessagesTest.CallsOnce(self, results, "gated", body -> body::gated));
         MissionOutcome outcome = JadeLauncher.of(program).types(TestPrograms::type).callTimeout(Duration.ofMillis(300))
                 .run(jade.platform(), Duration.ofSeconds(60));
         outcome.requireCompleted();
