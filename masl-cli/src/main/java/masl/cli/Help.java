@@ -88,7 +88,7 @@ final class Help {
                 --call-timeout MS   a primitive running longer than MS milliseconds gives its caller its default
                                     value and the event timeout; the mission goes on (default: no limit); with
                                     --platform jade it also bounds each FIPA agent's call from outside the mission
-                                    (default for those: 10000)
+                                    (default for those: 10000); with --seed, MS of the seeded run's virtual clock
                 """);
         OPTIONS.put("--trace", """
                 --trace FILE        write the trace (one JSON object per line) to FILE
