@@ -3,11 +3,8 @@ package masl.runtime;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.List;
-import java.util.Queue;
-import java.util.concurrent.ConcurrentLinkedQueue;
-import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
-import masl.runtime.testing.Missions;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.TestAgent;
 import masl.runtime.trace.MemoryTrace;
 import masl.runtime.trace.TraceEvent;
@@ -22,53 +19,26 @@ import org.junit.jupiter.api.Timeout;
 @Timeout(30)
 class InvocationRefusedTest {
 
-    static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-
-    /** {@code asynchronous entry main (true) { v = .add(); }} with an {@code add} that is refused. */
-    static final class Refused extends CompactProgram {
-        private final Queue<Integer> results;
-
-        Refused(TestAgent self, Queue<Integer> results) {
-            super(self);
-            this.results = results;
-        }
-
-        @Override
-        protected void resume(AgentContext ctx) {
-            while (true) {
-                switch (pc) {
-                    case 0:
-                        pc = 1;
-                        if (ctx.enter(MAIN, true) == Arrival.WAITING) return;
-                    case 1:
-                        results.add(ctx.invokeSelf("add", 7, () -> {
-                            throw new InvocationRefusedException("add", "its body no longer serves");
-                        }));
-                        pc = 2;
-                        if (!ctx.stepBoundary()) return;
-                    case 2:
-                        pc = 3;
-                        if (!ctx.leave(MAIN)) return;
-                    case 3:
-                        pc = 4;
-                        if (!ctx.endOfSequence(MAIN.sequence())) return;
-                    case 4:
-                        ctx.finish();
-                        return;
-                    default:
-                        throw new IllegalStateException("pc " + pc);
-                }
+    /** {@code v = .drain(1);}, refused: {@code v} takes the default value 0. */
+    private static final MaslProgram FAILING = MaslProgram.of("refused.masl", 2, """
+            asynchronous entry main (true) {
+              local int v = 7;
+              v = .drain(1);
+              .logln("v=" + v);
             }
-        }
-    }
+            """);
 
     @Test
     void aRefusedPrimitiveIsATimeoutWithTheDefaultValue() {
-        Queue<Integer> results = new ConcurrentLinkedQueue<>();
         MemoryTrace trace = new MemoryTrace();
-        Missions.run(Driver.THREADS, MAIN, 2, self -> new Refused(self, results), trace);
-        assertEquals(List.of(7, 7), List.copyOf(results));
-        assertEquals(List.of("timeout add", "timeout add"), trace.events(TraceEvent.EventEmitted.class).stream()
+        String journal = FAILING.run(Driver.THREADS.newScheduler(), trace, () -> new TestAgent() {
+            @Override
+            public int drain(int amount) {
+                throw new InvocationRefusedException("drain", "its body no longer serves");
+            }
+        }).journal();
+        assertEquals("v=0\nv=0\n", journal);
+        assertEquals(List.of("timeout drain", "timeout drain"), trace.events(TraceEvent.EventEmitted.class).stream()
                 .map(event -> event.event() + " " + event.message()).toList());
     }
 }

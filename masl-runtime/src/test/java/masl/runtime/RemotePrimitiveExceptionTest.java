@@ -3,11 +3,8 @@ package masl.runtime;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.List;
-import java.util.Queue;
-import java.util.concurrent.ConcurrentLinkedQueue;
-import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
-import masl.runtime.testing.Missions;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.TestAgent;
 import masl.runtime.trace.MemoryTrace;
 import masl.runtime.trace.TraceEvent;
@@ -22,52 +19,25 @@ import org.junit.jupiter.api.Timeout;
 @Timeout(30)
 class RemotePrimitiveExceptionTest {
 
-    static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-
-    /** {@code asynchronous entry main (true) { v = .divide(); }} with a {@code divide} that failed remotely. */
-    static final class FailsRemotely extends CompactProgram {
-        private final Queue<Integer> results;
-
-        FailsRemotely(TestAgent self, Queue<Integer> results) {
-            super(self);
-            this.results = results;
-        }
-
-        @Override
-        protected void resume(AgentContext ctx) {
-            while (true) {
-                switch (pc) {
-                    case 0:
-                        pc = 1;
-                        if (ctx.enter(MAIN, true) == Arrival.WAITING) return;
-                    case 1:
-                        results.add(ctx.invokeSelf("divide", -1, () -> {
-                            throw new RemotePrimitiveException("java.lang.ArithmeticException", "/ by zero");
-                        }));
-                        pc = 2;
-                        if (!ctx.stepBoundary()) return;
-                    case 2:
-                        pc = 3;
-                        if (!ctx.leave(MAIN)) return;
-                    case 3:
-                        pc = 4;
-                        if (!ctx.endOfSequence(MAIN.sequence())) return;
-                    case 4:
-                        ctx.finish();
-                        return;
-                    default:
-                        throw new IllegalStateException("pc " + pc);
-                }
+    /** {@code v = .drain(1);}, failed in another JVM: {@code v} takes the default value 0. */
+    private static final MaslProgram FAILING = MaslProgram.of("remote.masl", 2, """
+            asynchronous entry main (true) {
+              local int v = 7;
+              v = .drain(1);
+              .logln("v=" + v);
             }
-        }
-    }
+            """);
 
     @Test
     void aRemoteFailureIsAnUncaughtExceptionNamedAfterTheRemoteClass() {
-        Queue<Integer> results = new ConcurrentLinkedQueue<>();
         MemoryTrace trace = new MemoryTrace();
-        Missions.run(Driver.THREADS, MAIN, 2, self -> new FailsRemotely(self, results), trace);
-        assertEquals(List.of(-1, -1), List.copyOf(results));
+        String journal = FAILING.run(Driver.THREADS.newScheduler(), trace, () -> new TestAgent() {
+            @Override
+            public int drain(int amount) {
+                throw new RemotePrimitiveException("java.lang.ArithmeticException", "/ by zero");
+            }
+        }).journal();
+        assertEquals("v=0\nv=0\n", journal);
         assertEquals(List.of("uncaught_exception java.lang.ArithmeticException",
                 "uncaught_exception java.lang.ArithmeticException"),
                 trace.events(TraceEvent.EventEmitted.class).stream().map(e -> e.event() + " " + e.message()).toList());
