@@ -194,6 +194,9 @@ public final class Masl {
         } catch (InvalidPathException bad) {
             throw new UsageException("not a file name: " + name);
         }
+        if (Files.isDirectory(file)) {
+            throw new UsageException(name + ": is a folder, not a MASL program");
+        }
         if (!Files.isRegularFile(file)) {
             throw new UsageException(name + ": no such file");
         }

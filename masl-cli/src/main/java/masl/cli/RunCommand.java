@@ -55,10 +55,14 @@ final class RunCommand {
         }
         try (StopOnSignal signals = new StopOnSignal(err)) {
             return translateAndRun(line, source, signals);
+        } catch (TraceOutput.Unwritable lost) {
+            err.println("masl: " + lost.getMessage());
+            return Masl.MISSION_FAILED;
         }
     }
 
-    private int translateAndRun(CommandLine line, SourceFile source, StopOnSignal signals) throws UsageException {
+    private int translateAndRun(CommandLine line, SourceFile source, StopOnSignal signals)
+            throws UsageException, TraceOutput.Unwritable {
         AgentPath agentPath = AgentPath.parse(line.agentPath);
         CommandInputs inputs = CommandInputs.ofProgram(source, agentPath).add("the placement file", line.place);
         inputs.refuseOverwriting("the trace", line.traceFile);

@@ -30,6 +30,9 @@ final class TimelineCommand {
         }
         Path trace = path(traceName);
         Path page = path(line.outputFile);
+        if (Files.isDirectory(trace)) {
+            throw new UsageException(traceName + ": is a folder, not a trace (give the file run --trace wrote)");
+        }
         if (!Files.isRegularFile(trace)) {
             throw new UsageException(traceName + ": no such file");
         }

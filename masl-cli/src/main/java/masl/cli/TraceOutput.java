@@ -39,15 +39,30 @@ final class TraceOutput {
     }
 
     /** The trace to {@code file}, cut at {@code limit} bytes; none if {@code file} is null. */
-    static TraceOutput open(String file, long limit) throws UsageException {
+    static TraceOutput open(String file, long limit) throws UsageException, Unwritable {
         if (file == null) {
             return new TraceOutput(null, null, limit);
         }
+        Path path;
         try {
-            return new TraceOutput(file, new BufferedWriter(Files.newBufferedWriter(Path.of(file), StandardCharsets.UTF_8)),
-                    limit);
-        } catch (IOException | InvalidPathException cannotWrite) {
-            throw new UsageException("cannot write the trace to " + file + ": " + cannotWrite.getMessage());
+            path = Path.of(file);
+        } catch (InvalidPathException notAName) {
+            throw new UsageException("cannot write the trace to " + file + ": " + notAName.getMessage());
+        }
+        if (Files.isDirectory(path)) {
+            throw new Unwritable("cannot write the trace to " + file + ": it is a folder");
+        }
+        try {
+            return new TraceOutput(file, new BufferedWriter(Files.newBufferedWriter(path, StandardCharsets.UTF_8)), limit);
+        } catch (IOException cannotWrite) {
+            throw new Unwritable("cannot write the trace to " + file + ": " + cannotWrite.getMessage());
+        }
+    }
+
+    /** The trace cannot be opened for writing: a failed run, exit status 2, as a trace lost later is (§15). */
+    static final class Unwritable extends Exception {
+        Unwritable(String message) {
+            super(message);
         }
     }
 

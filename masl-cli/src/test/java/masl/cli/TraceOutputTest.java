@@ -55,6 +55,21 @@ class TraceOutputTest {
         assertEquals("masl: cannot write the trace to /dev/full: No space left on device\n", run.err());
     }
 
+    /** A trace that cannot even be opened is the same failure, in one line: not bad usage with the usage after it. */
+    @Test
+    void aTraceIntoAFolderFailsTheRunInOneLine() throws IOException {
+        Path program = Files.writeString(folder.resolve("hello.masl"), """
+                import Default.xml as Default;
+                Default a = newAgent(Default);
+                scalar entry main (true) { .logln("hi"); }
+                """);
+        Path traces = Files.createDirectories(folder.resolve("traces"));
+
+        Run run = Run.of("run", program.toString(), "--trace", traces.toString());
+
+        assertEquals(new Run(2, "", "masl: cannot write the trace to " + traces + ": it is a folder\n"), run);
+    }
+
     @Test
     void aTraceThatFailsWhileTheMissionRunsStopsIt() throws IOException {
         Path program = Files.writeString(folder.resolve("tick.masl"), ticking("Default", Integer.MAX_VALUE));
