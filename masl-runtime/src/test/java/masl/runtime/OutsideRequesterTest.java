@@ -25,6 +25,10 @@ class OutsideRequesterTest {
 
     static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SCALAR);
 
+    /**
+     * Written by hand: the request from outside is submitted within the agent's instruction, and
+     * the agent logs its state in {@code nothing}, where its own {@code .log} would be denied.
+     */
     static final class Requesting extends CompactProgram {
         private final String state;
         private final AtomicReference<Mission> mission;
