@@ -205,4 +205,24 @@ class RunCacheTest {
         assertTrue(run.err().contains("can be written by other users"), run.err());
         assertEquals(List.of(), entries());
     }
+
+    /**
+     * The owner and permissions checked are the cache folder's own: a symbolic link there (to a folder
+     * of this user's, here, but it could be anyone's) is refused, whatever it points to.
+     */
+    @Test
+    void aCacheFolderThatIsASymbolicLinkIsNotUsed() throws IOException {
+        writeScout(null);
+        Path elsewhere = Files.createDirectory(folder.resolve("elsewhere"), PosixFilePermissions.asFileAttribute(
+                PosixFilePermissions.fromString("rwx------")));
+        Files.createSymbolicLink(cache(), elsewhere);
+        Run run = run("run", program(PROGRAM));
+        assertEquals(0, run.status());
+        assertEquals("Hello from the cache\n", run.out());
+        assertEquals("masl: not using the cache of compiled missions: " + cache()
+                + " is a symbolic link, not a folder of its own\n", run.err());
+        try (Stream<Path> written = Files.list(elsewhere)) {
+            assertEquals(List.of(), written.toList());
+        }
+    }
 }

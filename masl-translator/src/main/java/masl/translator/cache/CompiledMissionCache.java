@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.attribute.PosixFileAttributes;
@@ -63,17 +64,21 @@ public final class CompiledMissionCache {
 
     /**
      * Why this cache is not used, if it is not: its folder is not a folder of this user's that only
-     * they can write into.
+     * they can write into, or it is a symbolic link.
      */
     public Optional<String> unusable() {
-        if (!Files.exists(folder)) {
+        if (!Files.exists(folder, LinkOption.NOFOLLOW_LINKS)) {
             return Optional.empty();
         }
         try {
-            if (!Files.isDirectory(folder)) {
+            // The link itself is checked, never what it points to: whoever can change the link chooses the folder.
+            if (Files.isSymbolicLink(folder)) {
+                return Optional.of(folder + " is a symbolic link, not a folder of its own");
+            }
+            if (!Files.isDirectory(folder, LinkOption.NOFOLLOW_LINKS)) {
                 return Optional.of(folder + " is not a folder");
             }
-            PosixFileAttributes attributes = Files.readAttributes(folder, PosixFileAttributes.class);
+            PosixFileAttributes attributes = Files.readAttributes(folder, PosixFileAttributes.class, LinkOption.NOFOLLOW_LINKS);
             String owner = attributes.owner().getName();
             if (!owner.equals(System.getProperty("user.name"))) {
                 return Optional.of(folder + " belongs to " + owner);
