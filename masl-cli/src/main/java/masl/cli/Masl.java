@@ -113,6 +113,9 @@ public final class Masl {
             try (Progress shown = new Progress(err, progress.quiet(line.quiet))) {
                 return dispatch(line, shown);
             }
+        } catch (SourceFile.NotUtf8 notText) {
+            err.println(notText.getMessage());
+            return PROGRAM_ERRORS;
         } catch (UsageException usage) {
             err.println("masl: " + usage.getMessage());
             err.print(args.length == 0 ? Help.all() : Help.usageLine(args[0]));
@@ -127,7 +130,7 @@ public final class Masl {
         }
     }
 
-    private int dispatch(CommandLine line, Progress progress) throws UsageException {
+    private int dispatch(CommandLine line, Progress progress) throws UsageException, SourceFile.NotUtf8 {
         return switch (line.command) {
             case "check" -> check(line, progress);
             case "compile" -> compile(line, progress);
@@ -152,12 +155,12 @@ public final class Masl {
         }
     }
 
-    private int check(CommandLine line, Progress progress) throws UsageException {
+    private int check(CommandLine line, Progress progress) throws UsageException, SourceFile.NotUtf8 {
         SourceFile source = readProgram(line.singleFile());
         return Pipeline.load(source, AgentPath.parse(line.agentPath), err, progress) == null ? PROGRAM_ERRORS : OK;
     }
 
-    private int compile(CommandLine line, Progress progress) throws UsageException {
+    private int compile(CommandLine line, Progress progress) throws UsageException, SourceFile.NotUtf8 {
         SourceFile source = readProgram(line.singleFile());
         if (line.outputFolder == null) {
             throw new UsageException("masl compile needs -d DIR, the folder to write the Java sources into");
@@ -187,7 +190,7 @@ public final class Masl {
         return OK;
     }
 
-    private static SourceFile readProgram(String name) throws UsageException {
+    private static SourceFile readProgram(String name) throws UsageException, SourceFile.NotUtf8 {
         Path file;
         try {
             file = Path.of(name);
@@ -202,6 +205,8 @@ public final class Masl {
         }
         try {
             return SourceFile.read(file);
+        } catch (SourceFile.NotUtf8 notText) {
+            throw notText;
         } catch (IOException unreadable) {
             throw new UsageException(name + ": cannot be read (" + unreadable.getMessage() + ")");
         }

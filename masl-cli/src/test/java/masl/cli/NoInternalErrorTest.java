@@ -37,6 +37,18 @@ class NoInternalErrorTest {
         assertEquals(0, Run.of("run", program, "--timeout", "315360000").status());
     }
 
+    /** A program saved in Latin-1 is refused at its first byte that is not UTF-8, not read as some other text. */
+    @Test
+    void aProgramThatIsNotUtf8IsRefusedAtItsFirstBadByte() throws IOException {
+        Path program = folder.resolve("latin1.masl");
+        Files.write(program, ("import Default.xml as Default;\nDefault a = newAgent(Default);\n"
+                + "scalar entry main (true) { .logln(\"d\u00e9j\u00e0\"); }\n").getBytes(StandardCharsets.ISO_8859_1));
+        String refusal = program + ":3:37: error: byte 0xE9 is not UTF-8: MASL programs are UTF-8 (save the file as UTF-8)\n";
+
+        assertEquals(new Run(1, "", refusal), Run.of("check", program.toString()));
+        assertEquals(new Run(1, "", refusal), Run.of("run", program.toString()));
+    }
+
     @Test
     void aProgramStartingWithAByteOrderMarkRuns() throws IOException {
         Path program = folder.resolve("bom.masl");
