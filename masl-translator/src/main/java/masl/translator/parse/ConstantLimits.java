@@ -30,12 +30,15 @@ public final class ConstantLimits implements ParseTreeListener {
     /** The most bytes, in modified UTF-8, that a class file's constant holds. */
     static final int LONGEST_CONSTANT = 65_535;
 
-    /** A constant expression: whether it is a string, and the bytes of its string form (at most, for a number). */
-    private record Constant(boolean string, long bytes) {
+    /**
+     * A constant expression: whether it is a string, and the bytes of its string form (at most, for a
+     * number) in a class file ({@code bytes}, modified UTF-8, what the limit counts) and in UTF-8.
+     */
+    private record Constant(boolean string, long bytes, long utf8) {
     }
 
     /** Bytes enough for the string form of any number, character or boolean. */
-    private static final Constant OTHER = new Constant(false, 25);
+    private static final Constant OTHER = new Constant(false, 25, 25);
 
     private final Map<ParseTree, Constant> constants = new IdentityHashMap<>();
     private final List<Problem> problems = new ArrayList<>();
@@ -67,12 +70,18 @@ public final class ConstantLimits implements ParseTreeListener {
             for (int i = 0; i < node.getChildCount(); i++) {
                 Constant child = constants.get(node.getChild(i));
                 if (child != null && child.string() && child.bytes() > LONGEST_CONSTANT) {
-                    problems.add(new Problem((ParserRuleContext) node.getChild(i), null, String.format("a string constant of %,d bytes"
-                            + " (in UTF-8): Java holds at most %,d in one; build a longer text at run time",
-                            child.bytes(), LONGEST_CONSTANT)));
+                    problems.add(new Problem((ParserRuleContext) node.getChild(i), null, tooLong(child)));
                 }
             }
         }
+    }
+
+    /** The sizes a user can check: the UTF-8 of the text, and the class file's count where it differs. */
+    private static String tooLong(Constant string) {
+        String inClassFiles = string.bytes() == string.utf8() ? "" : String.format(", %,d in Java's class files (6 bytes"
+                + " for a character beyond U+FFFF, 2 for U+0000)", string.bytes());
+        return String.format("a string constant of %,d bytes (in UTF-8)%s: Java holds at most %,d in one; build a longer"
+                + " text at run time", string.utf8(), inClassFiles, LONGEST_CONSTANT);
     }
 
     private void checkNumber(TerminalNode terminal) {
@@ -139,7 +148,8 @@ public final class ConstantLimits implements ParseTreeListener {
             if (!constants.containsKey(conditional.condition) || whenTrue == null || whenFalse == null) {
                 return null;
             }
-            return new Constant(whenTrue.string() || whenFalse.string(), Math.max(whenTrue.bytes(), whenFalse.bytes()));
+            return new Constant(whenTrue.string() || whenFalse.string(), Math.max(whenTrue.bytes(), whenFalse.bytes()),
+                    Math.max(whenTrue.utf8(), whenFalse.utf8()));
         }
         return null;
     }
@@ -151,7 +161,7 @@ public final class ConstantLimits implements ParseTreeListener {
             return null;
         }
         if (binary.op.getType() == MASLLexer.ADD && (left.string() || right.string())) {
-            return new Constant(true, left.bytes() + right.bytes());
+            return new Constant(true, left.bytes() + right.bytes(), left.utf8() + right.utf8());
         }
         return OTHER;
     }
@@ -164,10 +174,21 @@ public final class ConstantLimits implements ParseTreeListener {
             return OTHER;
         }
         try {
-            return new Constant(true, modifiedUtf8Length(Literals.string(literal.getText())));
+            String text = Literals.string(literal.getText());
+            return new Constant(true, modifiedUtf8Length(text), utf8Length(text));
         } catch (Literals.Problem reportedByTheParser) {
             return null;
         }
+    }
+
+    /** The bytes of {@code text} in UTF-8; a lone surrogate, which UTF-8 cannot hold, counts the 3 bytes of its replacement. */
+    private static long utf8Length(String text) {
+        long bytes = 0;
+        for (int i = 0; i < text.length(); i += Character.charCount(text.codePointAt(i))) {
+            int c = text.codePointAt(i);
+            bytes += c <= 0x7f ? 1 : c <= 0x7ff ? 2 : c <= 0xffff ? 3 : 4;
+        }
+        return bytes;
     }
 
     /** The bytes of {@code text} in a class file: 1 for U+0001 to U+007F, 2 up to U+07FF and for U+0000, else 3. */

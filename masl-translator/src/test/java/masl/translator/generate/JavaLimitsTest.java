@@ -80,6 +80,15 @@ class JavaLimitsTest {
                         + " one; build a longer text at run time"), errors);
     }
 
+    /** Java counts U+1F600 as 6 bytes, UTF-8 as 4: the message gives the size a user can check, and Java's. */
+    @Test
+    void aStringBeyondTheBasicPlaneIsMeasuredInUtf8AndInJavasCount() {
+        List<String> errors = errors("scalar entry main (true) {\n  .logln(\"" + "\uD83D\uDE00".repeat(12_000) + "\");\n}\n");
+        assertEquals(List.of("limits.masl:4:10: error: a string constant of 48,000 bytes (in UTF-8), 72,000 in Java's class"
+                + " files (6 bytes for a character beyond U+FFFF, 2 for U+0000): Java holds at most 65,535 in one; build a"
+                + " longer text at run time"), errors);
+    }
+
     @Test
     void aStatementTooLargeForAJavaMethodIsAPositionedError() {
         String sum = java.util.stream.IntStream.range(0, 9_000).mapToObj(i -> "x[0]").collect(Collectors.joining("+"));
