@@ -43,11 +43,7 @@ class TraceOutputTest {
     @Test
     void aTraceThatCannotBeWrittenFailsTheRun() throws IOException {
         assertTrue(new File("/dev/full").exists(), "this test needs Linux's /dev/full");
-        Path program = Files.writeString(folder.resolve("hello.masl"), """
-                import Default.xml as Default;
-                Default a = newAgent(Default);
-                scalar entry main (true) { .logln("hi"); }
-                """);
+        Path program = hello();
 
         Run run = Run.of("run", program.toString(), "--trace", "/dev/full");
 
@@ -58,11 +54,7 @@ class TraceOutputTest {
     /** A trace that cannot even be opened is the same failure, in one line: not bad usage with the usage after it. */
     @Test
     void aTraceIntoAFolderFailsTheRunInOneLine() throws IOException {
-        Path program = Files.writeString(folder.resolve("hello.masl"), """
-                import Default.xml as Default;
-                Default a = newAgent(Default);
-                scalar entry main (true) { .logln("hi"); }
-                """);
+        Path program = hello();
         Path traces = Files.createDirectories(folder.resolve("traces"));
 
         Run run = Run.of("run", program.toString(), "--trace", traces.toString());
@@ -116,5 +108,14 @@ class TraceOutputTest {
         assertEquals(64, word.status());
         assertTrue(word.err().startsWith("masl: --trace-limit needs a size in bytes, such as 1048576, 64K, 512M or 1G,"
                 + " got 'lots'\n"), word.err());
+    }
+
+    /** A program that logs "hi". */
+    private Path hello() throws IOException {
+        return Files.writeString(folder.resolve("hello.masl"), """
+                import Default.xml as Default;
+                Default a = newAgent(Default);
+                scalar entry main (true) { .logln("hi"); }
+                """);
     }
 }
