@@ -11,7 +11,7 @@ final class ExitStatus {
     static String meaning(int status) {
         return switch (status) {
             case 1 -> "errors in the program or its descriptors, or an agent class that cannot be made";
-            case MISSION_FAILED -> "the mission failed, deadlocked or timed out, or its journal could not be written";
+            case MISSION_FAILED -> "the mission failed, deadlocked or timed out, or its journal or trace could not be written";
             case 64 -> "masl was given a bad option";
             case 70 -> "an internal error of masl";
             case 130 -> "stopped by Ctrl-C";
