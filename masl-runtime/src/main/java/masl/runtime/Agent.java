@@ -10,7 +10,6 @@ import java.util.function.Consumer;
 import java.util.function.Supplier;
 import masl.runtime.descriptor.AgentType;
 import masl.runtime.descriptor.PermeabilityState;
-import masl.runtime.descriptor.PermeabilityState.Requester;
 import masl.runtime.entry.Entry;
 import masl.runtime.entry.EntryCoordinator;
 import masl.runtime.entry.Membership;
@@ -20,11 +19,12 @@ import masl.runtime.event.EventOccurrence;
 import masl.runtime.event.EventPlanner;
 import masl.runtime.event.ReactionPlan;
 import masl.runtime.event.ReactionRun;
-import masl.runtime.invocation.Countermeasure;
 import masl.runtime.invocation.Countermeasures;
 import masl.runtime.invocation.InvocationServing;
+import masl.runtime.invocation.Invoker;
 import masl.runtime.invocation.PendingInvocation;
 import masl.runtime.invocation.Permeability;
+import masl.runtime.invocation.PrimitiveCalls;
 import masl.runtime.scheduling.AgentTask;
 import masl.runtime.scheduling.RunState;
 import masl.runtime.scheduling.Scheduler;
@@ -60,7 +60,8 @@ import masl.runtime.trace.TraceEvent;
  * requests), on the submitting thread, in the same {@code SERVING} state.</li>
  * <li><b>Permeability</b> ({@link Permeability}, MASL §11): the current state, and whether it
  * lets a requester invoke a primitive or read or write an attribute, decided when it is served;
- * with the countermeasures armed by launches ({@link Countermeasures}).</li>
+ * with the countermeasures armed by launches ({@link Countermeasures}). What the agent requests of
+ * others (invocations, launches, attributes, its accept state) is its {@link Invoker}'s.</li>
  * </ul>
  *
  * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
@@ -77,11 +78,10 @@ public final class Agent implements AgentContext, AgentTask {
     private final EventPlanner events = new EventPlanner();
     private final Permeability permeability;
     private final InvocationServing invocations;
-    private final Countermeasures countermeasures = new Countermeasures();
+    private final Invoker invoker;
     // Made once: the hot paths that take them allocate nothing.
     private final BooleanSupplier servable;
     private final BooleanSupplier attentive;
-    private final Consumer<Countermeasure> fire = this::fire;
     private final Consumer<EventOccurrence> dropped = this::traceDropped;
     /** The ticket of the agent's latest busy-wait park: an event perceived then wakes it (§5). */
     private volatile long busyWaitTicket;
@@ -169,6 +169,7 @@ public final class Agent implements AgentContext, AgentTask {
         this.invocations = new InvocationServing(this, permeability, mission.trace(), this::now);
         this.servable = invocations::hasServable;
         this.attentive = invocations::isAttentive;
+        this.invoker = new Invoker(this, permeability, new RequesterSite());
     }
 
     // ---- AgentTask -----------------------------------------------------------------------------
@@ -246,7 +247,7 @@ public final class Agent implements AgentContext, AgentTask {
      * is blocked. Parked in {@code wait(state)}, the agent is idle for the deadlock watchdog even
      * with invocations queued (its state may allow none of them), so serving one is a wake-up:
      * pending from before the agent turns {@code PARKED} until it is {@code SERVING} (see
-     * {@link Mission}, "Deadlock watchdog").
+     * {@link DeadlockWatchdog}).
      */
     private boolean endSliceParked(boolean serving) {
         // Only the agent's own program makes it attentive, in a wait(state)'s park: no wait can begin
@@ -301,7 +302,7 @@ public final class Agent implements AgentContext, AgentTask {
      * slice, or by the agent at its next boundary); parked in {@code wait(state)}, even with
      * invocations queued, which its state may not allow. The queue is read first: the state read
      * after it then says whether the agent was idle at that instant, as nothing the watchdog waits
-     * out queues an invocation uncounted (see {@link Mission}, "Deadlock watchdog").
+     * out queues an invocation uncounted (see {@link DeadlockWatchdog}).
      */
     boolean isIdle() {
         boolean nothingQueued = invocations.nothingQueued();
@@ -336,7 +337,7 @@ public final class Agent implements AgentContext, AgentTask {
         try {
             events.abandon();
             reactionsUnderway = false;
-            fireCountermeasures(0);
+            invoker.fireCountermeasures(0);
             mission.coordinator().leaveAll(this);
         } catch (RuntimeException leaving) {
             failure.addSuppressed(leaving);
@@ -570,7 +571,7 @@ public final class Agent implements AgentContext, AgentTask {
     public boolean leave(EntryDefinition block) {
         atCallBefore();
         requireOutsideReaction("leaving " + block);
-        fireCountermeasures(memberships.size() - 1);
+        invoker.fireCountermeasures(memberships.size() - 1);
         return mission.coordinator().leaveAtEnd(this, mission.entry(block));
     }
 
@@ -579,7 +580,7 @@ public final class Agent implements AgentContext, AgentTask {
         atCurrentCase();
         requireNoReactionRunning("break");
         abandonEnding();
-        fireCountermeasures(depthOf(outermost));
+        invoker.fireCountermeasures(depthOf(outermost));
         mission.coordinator().leaveUpTo(this, mission.entry(outermost), LeaveCause.BREAK);
     }
 
@@ -588,7 +589,7 @@ public final class Agent implements AgentContext, AgentTask {
         atCurrentCase();
         requireNoReactionRunning("reelect");
         abandonEnding();
-        fireCountermeasures(depthOf(block));
+        invoker.fireCountermeasures(depthOf(block));
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.REELECT);
         iterations.jumpedBack();
     }
@@ -598,7 +599,7 @@ public final class Agent implements AgentContext, AgentTask {
         atCurrentCase();
         requireNoReactionRunning("restart");
         abandonEnding();
-        fireCountermeasures(depthOf(block) + 1);
+        invoker.fireCountermeasures(depthOf(block) + 1);
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.RESTART);
         iterations.jumpedBack();
     }
@@ -729,48 +730,12 @@ public final class Agent implements AgentContext, AgentTask {
     @Override
     public <T> CompletableFuture<T> invoke(AgentImplementation callee, String primitive, T defaultValue,
             Callable<T> call) {
-        atCurrentCase();
-        if (callee == null) {
-            return CompletableFuture.completedFuture(nullAgent(defaultValue));
-        }
-        Agent target = mission.agentOf(callee);
-        countermeasures.disarm(target, primitive);
-        if (target == this) {
-            return CompletableFuture.completedFuture(invokeSelf(primitive, defaultValue, call));
-        }
-        CompletableFuture<T> result = new CompletableFuture<>();
-        mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive, source()));
-        target.submitInvocation(new PendingInvocation(this, primitive,
-                () -> result.complete(runFor(this, primitive, call, defaultValue)),
-                () -> {
-                    raise(Event.TIMEOUT, primitive);
-                    result.complete(defaultValue);
-                }));
-        return result;
+        return invoker.invoke(callee, primitive, defaultValue, call);
     }
 
     @Override
     public <T> T invokeSelf(String primitive, T defaultValue, Callable<T> call) {
-        atCurrentCase();
-        countermeasures.disarm(this, primitive);
-        if (!allowsOwn(primitive)) {
-            return defaultValue;
-        }
-        return runFor(this, primitive, call, defaultValue);
-    }
-
-    /**
-     * Whether the current state lets this agent invoke its own {@code primitive}; if not, the
-     * denial's effects (§11): traced, and {@code timeout} perceived.
-     */
-    private boolean allowsOwn(String primitive) {
-        PermeabilityState state = permeability.current();
-        if (Permeability.allows(state, permeability.primitiveId(primitive), Requester.SELF, PermeabilityState.INVOKE)) {
-            return true;
-        }
-        mission.trace().record(new TraceEvent.InvocationDenied(now(), id, id, primitive, state.name(), source()));
-        raise(Event.TIMEOUT, primitive);
-        return false;
+        return invoker.invokeSelf(primitive, defaultValue, call);
     }
 
     @Override
@@ -782,56 +747,12 @@ public final class Agent implements AgentContext, AgentTask {
     @Override
     public <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue,
             Callable<T> call, String countermeasure, Callable<?> countermeasureCall) {
-        atCurrentCase();
-        if (callee == null) {
-            return CompletableFuture.completedFuture(nullAgent(defaultValue));
-        }
-        Agent target = mission.agentOf(callee);
-        countermeasures.disarm(target, primitive);
-        CompletableFuture<T> result = start(target, primitive, defaultValue, call);
-        if (countermeasure != null && !memberships.isEmpty()) {
-            countermeasures.arm(new Countermeasure(innermost().entry.definition(), target, countermeasure,
-                    countermeasureCall, result, defaultValue));
-        }
-        return result;
-    }
-
-    /** Launches an asynchronous primitive of {@code target}, filtered by permeability, without (dis)arming anything. */
-    private <T> CompletableFuture<T> start(Agent target, String primitive, T defaultValue, Callable<T> call) {
-        CompletableFuture<T> result = new CompletableFuture<>();
-        Runnable start = () -> mission.runAsynchronously(this, () -> result.complete(runFor(this, primitive, call, defaultValue)));
-        if (target == this) {
-            if (allowsOwn(primitive)) {
-                start.run();
-            } else {
-                result.complete(defaultValue);
-            }
-        } else {
-            mission.trace().record(new TraceEvent.InvocationMade(now(), id, target.id, primitive, source()));
-            target.submitInvocation(new PendingInvocation(this, primitive, start, () -> {
-                raise(Event.TIMEOUT, primitive);
-                result.complete(defaultValue);
-            }));
-        }
-        return result;
+        return invoker.launch(callee, primitive, defaultValue, call, countermeasure, countermeasureCall);
     }
 
     @Override
     public Label newLabel() {
         return new Label(mission.changes());
-    }
-
-    /** The agent is about to leave its blocks from the innermost to depth {@code outermostLeft} (0: outermost). */
-    private void fireCountermeasures(int outermostLeft) {
-        countermeasures.fireFor(memberships, outermostLeft, fire);
-    }
-
-    private void fire(Countermeasure countermeasure) {
-        mission.trace().record(new TraceEvent.CountermeasureFired(now(), id, countermeasure.target().id,
-                countermeasure.name(), countermeasure.block().name(), source()));
-        countermeasure.completeLaunch();
-        // Not launch(): a fired countermeasure disarms no other armed one (of an outer block).
-        start(countermeasure.target(), countermeasure.name(), null, countermeasure.call());
     }
 
     /** The depth of {@code block} in the agent's chain of blocks (0: outermost), for leaving up to it. */
@@ -845,60 +766,14 @@ public final class Agent implements AgentContext, AgentTask {
         return memberships.size();
     }
 
-    /**
-     * A member of an agent variable holding {@code null} was used: as for a Java call that throws
-     * (§8), the agent perceives {@code uncaught_exception} ({@code java.lang.NullPointerException})
-     * and the value is the default.
-     */
-    private <T> T nullAgent(T defaultValue) {
-        uncaughtException(new NullPointerException());
-        return defaultValue;
-    }
-
-    /**
-     * Runs primitive {@code primitive} for {@code requester}: an exception becomes its
-     * {@code uncaught_exception} (§9); a refusal by the agent's body, or running past the mission's
-     * call timeout, its {@code timeout}.
-     */
-    private static <T> T runFor(Agent requester, String primitive, Callable<T> call, T defaultValue) {
-        try {
-            return requester.mission.callPrimitive(call);
-        } catch (Mission.PrimitiveTimedOut late) {
-            requester.raise(Event.TIMEOUT, primitive);
-            return defaultValue;
-        } catch (InvocationRefusedException refused) {
-            requester.raise(Event.TIMEOUT, refused.primitive());
-            return defaultValue;
-        } catch (Exception thrown) {
-            requester.raise(Event.UNCAUGHT_EXCEPTION, RemotePrimitiveException.classNameOf(thrown));
-            return defaultValue;
-        }
-    }
-
     @Override
     public <T> T readAttribute(AgentImplementation owner, String attribute, T defaultValue, Supplier<T> read) {
-        if (owner == null) {
-            return nullAgent(defaultValue);
-        }
-        if (!mission.agentOf(owner).permeability.permitsAttribute(this, attribute, PermeabilityState.READ)) {
-            raise(Event.FORBIDDEN_ACCESS, attribute);
-            return defaultValue;
-        }
-        return read.get();
+        return invoker.readAttribute(owner, attribute, defaultValue, read);
     }
 
     @Override
     public boolean writeAttribute(AgentImplementation owner, String attribute, Runnable write) {
-        if (owner == null) {
-            nullAgent(null);
-            return false;
-        }
-        if (!mission.agentOf(owner).permeability.permitsAttribute(this, attribute, PermeabilityState.WRITE)) {
-            raise(Event.FORBIDDEN_ACCESS, attribute);
-            return false;
-        }
-        write.run();
-        return true;
+        return invoker.writeAttribute(owner, attribute, write);
     }
 
     /** Whether the current state lets an agent outside the mission read {@code attribute} (its r bit for o). */
@@ -914,13 +789,7 @@ public final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void setAcceptState(String name) {
-        PermeabilityState state = permeability.find(name).orElse(null);
-        if (state == null) {
-            uncaughtException(new IllegalArgumentException("no permeability state " + name));
-            return;
-        }
-        permeability.set(state);
-        mission.changes().advance();
+        invoker.setAcceptState(name);
     }
 
     @Override
@@ -934,10 +803,7 @@ public final class Agent implements AgentContext, AgentTask {
 
     @Override
     public String getAcceptState(AgentImplementation agent) {
-        if (agent == null) {
-            return nullAgent("");
-        }
-        return mission.agentOf(agent).permeability.currentName();
+        return invoker.getAcceptState(agent);
     }
 
     @Override
@@ -1185,5 +1051,65 @@ public final class Agent implements AgentContext, AgentTask {
     @Override
     public String toString() {
         return name;
+    }
+
+    /** The agent's private side its {@link Invoker} needs: kept off the public one. */
+    private final class RequesterSite implements Invoker.Site {
+
+        @Override
+        public void atCurrentCase() {
+            Agent.this.atCurrentCase();
+        }
+
+        @Override
+        public long now() {
+            return Agent.this.now();
+        }
+
+        @Override
+        public void record(TraceEvent event) {
+            mission.trace().record(event);
+        }
+
+        @Override
+        public Agent agentOf(AgentImplementation implementation) {
+            return mission.agentOf(implementation);
+        }
+
+        @Override
+        public void raise(Event systemEvent, String message) {
+            Agent.this.raise(systemEvent, message);
+        }
+
+        @Override
+        public void submit(Agent target, PendingInvocation invocation) {
+            target.submitInvocation(invocation);
+        }
+
+        @Override
+        public <T> T runFor(String primitive, Callable<T> call, T defaultValue) {
+            try {
+                return mission.primitiveCalls().call(call);
+            } catch (PrimitiveCalls.TimedOut late) {
+                Agent.this.raise(Event.TIMEOUT, primitive);
+                return defaultValue;
+            } catch (InvocationRefusedException refused) {
+                Agent.this.raise(Event.TIMEOUT, refused.primitive());
+                return defaultValue;
+            } catch (Exception thrown) {
+                Agent.this.raise(Event.UNCAUGHT_EXCEPTION, RemotePrimitiveException.classNameOf(thrown));
+                return defaultValue;
+            }
+        }
+
+        @Override
+        public void runAsynchronously(Runnable body) {
+            mission.runAsynchronously(Agent.this, body);
+        }
+
+        @Override
+        public void changed() {
+            mission.changes().advance();
+        }
     }
 }

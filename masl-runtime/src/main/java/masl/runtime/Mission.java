@@ -9,15 +9,9 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
-import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
@@ -27,12 +21,9 @@ import masl.runtime.entry.Entry;
 import masl.runtime.entry.EntryCoordinator;
 import masl.runtime.event.EventOccurrence;
 import masl.runtime.invocation.PendingInvocation;
-import masl.runtime.scheduling.Blocking;
+import masl.runtime.invocation.PrimitiveCalls;
 import masl.runtime.scheduling.ChangeEpoch;
-import masl.runtime.scheduling.ClockedCall;
-import masl.runtime.scheduling.MissionClock;
 import masl.runtime.scheduling.PoolScheduler;
-import masl.runtime.scheduling.PrimitiveTurn;
 import masl.runtime.scheduling.Scheduler;
 import masl.runtime.scheduling.WakeUps;
 import masl.runtime.trace.Trace;
@@ -56,43 +47,8 @@ import masl.runtime.trace.TraceEvent;
  *         .run(Duration.ofMinutes(1));
  * }</pre>
  *
- * <p><b>Deadlock watchdog.</b> A mission is <em>deadlocked</em> when some program has not finished
- * and no agent will ever run again (its program or a slice serving invocations on its behalf)
- * unless something outside the mission acts: an outside invocation, {@link #stop()}. The watchdog
- * reports exactly that ({@code DEADLOCKED}, or {@code FAILED} if an agent died); it never reports a
- * mission that can still make progress, however long a thread is preempted. It rests on three rules.
- * <ol>
- * <li>An agent is <em>idle</em> ({@code Agent.isIdle}) when it runs nothing until woken: parked or
- * done with no invocation queued, or parked in {@code wait(state)}. A <em>wake-up</em> ends that:
- * an unpark ({@code PARKED → SCHEDULED}), the serving slice of an agent in {@code wait(state)}, an
- * invocation queued, the timeout of a wait that leaves invocations queued.</li>
- * <li>Every wake-up and every queued invocation is <em>counted</em> ({@link WakeUps}) before it
- * happens.</li>
- * <li>From its count to its act, the thread making it either runs a slice of an agent that is not
- * idle (the program or serving slice that trips a barrier, releases, emits, writes a shared
- * variable, invokes), or holds a <em>pending</em> wake-up, begun (and counted) before: a sleep or a
- * timed wait from the call to the timer's unpark, an awaited future from the await to the unpark,
- * an asynchronous primitive while it runs, an outside invocation ({@link #submitInvocation}) for
- * the whole call, and the end of a slice of an agent in {@code wait(state)} from before it turns
- * {@code PARKED} to its serving slice being scheduled.</li>
- * </ol>
- * Every {@link #WATCHDOG_PERIOD} the watchdog <em>looks</em>: it reads the counts (one atomic word),
- * every agent, and the counts again. A look is quiet if nothing is pending, every agent is idle,
- * every agent that is done has been counted out of the running ones (an agent turns {@code DONE}
- * before the mission counts it out, and builds its report in between: until then it is ending, not
- * idle) and the counts did not move; two quiet looks in a row with the same counts end the mission.
- *
- * <p>Why that is a deadlock: the counts did not move from the first read of the first look to the
- * last read of the second, and nothing was pending at the first read, so nothing was pending
- * throughout (a pending wake-up counts when it begins). Any wake-up or queued invocation in that
- * span was therefore counted before it, by a slice of a non-idle agent X that ran on until the act
- * (rule 3); had the act come after the first look read X, that look would have seen X not idle. So
- * nothing wakes anyone after the first look, every agent the second look saw idle is still idle at
- * its end, and no pending wake-up, nor any slice that could make one, is left: the end of a slice
- * whose agent has just parked wakes nobody but through rule 3. One look would not do: a slice can
- * wake an agent the look has already read as idle, then park before the look reads it. In a mission
- * {@linkplain Builder#openToOutsideInvocations() open to outside invocations}, an agent parked in a
- * busy-wait is not idle, since an outside invocation is a change it waits for.
+ * <p>Its deadlock watchdog ({@link DeadlockWatchdog}) ends a mission in which no agent will ever run
+ * again unless something outside the mission acts.
  */
 public final class Mission {
 
@@ -116,30 +72,23 @@ public final class Mission {
     private final AtomicReference<Throwable> failure = new AtomicReference<>();
     /** The first agent whose program died; the mission went on without it, and fails once over. */
     private final AtomicReference<Throwable> firstDeath = new AtomicReference<>();
-    /** How long a primitive may run before its caller gets {@code timeout}; null: no limit. */
-    private final Duration callTimeout;
     private volatile boolean stopped;
     /** Why {@link #stop(String)} stopped the mission, for its {@code mission-ended} record; null if not said. */
     private volatile String stopReason;
     /** Wake-ups counted and pending, for the deadlock watchdog. */
     private final WakeUps wakeUps;
+    private final DeadlockWatchdog watchdog;
     /** {@link #run} has seen the end (whatever it was) and is stopping the scheduler. */
     private volatile boolean over;
     /** Asynchronous primitives running: the mission completes when they and every program are over. */
     private final AtomicInteger runningPrimitives = new AtomicInteger();
-    private final ExecutorService primitives = Executors.newCachedThreadPool(runnable -> {
-        Thread thread = new Thread(runnable, "masl-primitive");
-        thread.setDaemon(true);
-        return thread;
-    });
-    private final boolean openToOutsideInvocations;
+    private final PrimitiveCalls primitiveCalls;
 
     private Mission(Builder builder) {
         scheduler = builder.scheduler != null ? builder.scheduler : new PoolScheduler();
         journal = new Journal(builder.journalSink);
         trace = builder.trace;
-        openToOutsideInvocations = builder.openToOutsideInvocations;
-        callTimeout = builder.callTimeout;
+        primitiveCalls = new PrimitiveCalls(scheduler, builder.callTimeout);
         wakeUps = builder.wakeUps;
         coordinator = new EntryCoordinator(this, trace, scheduler::nanoTime, changes);
         Map<EntryDefinition, Entry> blocks = new IdentityHashMap<>();
@@ -155,6 +104,7 @@ public final class Mission {
         agentNames = builder.agents.stream().map(Builder.AgentDeclaration::name).toList();
         running = new AtomicInteger(agents.size());
         coordinator.addAgents(agents);
+        watchdog = new DeadlockWatchdog(agents, wakeUps, running, builder.openToOutsideInvocations);
         MemoryReserve.hold();
     }
 
@@ -200,21 +150,18 @@ public final class Mission {
                 status == MissionOutcome.Status.STOPPED ? stopReason : null));
         String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
         scheduler.shutdown();
-        primitives.shutdownNow();
+        primitiveCalls.shutdownNow();
         journal.flush();
         Throwable cause = failure.get() != null ? failure.get() : firstDeath.get();
         return new MissionOutcome(status, journal.text(), Optional.ofNullable(cause), report);
     }
 
     /**
-     * Waits for the end, looking for a deadlock every {@link #WATCHDOG_PERIOD} (see the class
-     * comment, "Deadlock watchdog"). A pending sleep or awaited future holds the verdict off: what
+     * Waits for the end, looking for a deadlock every {@link #WATCHDOG_PERIOD} ({@link DeadlockWatchdog}). A pending sleep or awaited future holds the verdict off: what
      * ends it is unknown, so it is given the benefit of the doubt.
      */
     private MissionOutcome.Status awaitEnd(Duration timeout) throws InterruptedException {
         long deadline = System.nanoTime() + timeout.toNanos();
-        boolean lastLookIdle = false;
-        long lastIdleLook = 0;
         while (true) {
             long left = deadline - System.nanoTime();
             boolean ended = this.ended.await(Math.min(left, WATCHDOG_PERIOD.toNanos()), TimeUnit.NANOSECONDS);
@@ -230,28 +177,10 @@ public final class Mission {
             if (deadline - System.nanoTime() <= 0) {
                 return MissionOutcome.Status.TIMED_OUT;
             }
-            long look = wakeUps.look();
-            boolean idle = WakeUps.nonePending(look) && agents.stream().allMatch(Agent::isIdle)
-                    && !(openToOutsideInvocations && agents.stream().anyMatch(Agent::isParkedInBusyWait))
-                    && noAgentEnding()
-                    && look == wakeUps.look();
-            if (idle && lastLookIdle && look == lastIdleLook) {
+            if (watchdog.deadlocked()) {
                 return firstDeath.get() == null ? MissionOutcome.Status.DEADLOCKED : MissionOutcome.Status.FAILED;
             }
-            lastLookIdle = idle;
-            lastIdleLook = look;
         }
-    }
-
-    /**
-     * Whether every agent whose program is over has been counted out: an agent is made DONE first
-     * and counted out after (its report is built in between), so a DONE agent still counted as
-     * running is ending, not idle. The states are read before the count, so a look that sees an
-     * agent DONE sees the count as of then or later.
-     */
-    private boolean noAgentEnding() {
-        long notDone = agents.stream().filter(agent -> !agent.isDone()).count();
-        return running.get() == notDone;
     }
 
     /** Made before it is needed: when it is, the heap has no room. */
@@ -474,7 +403,7 @@ public final class Mission {
                 } finally {
                     primitiveEnded();
                 }
-            }, primitives);
+            }, primitiveCalls.threads());
         } catch (RejectedExecutionException missionEnded) {
             primitiveEnded();
         }
@@ -520,73 +449,9 @@ public final class Mission {
         agentFinished(agent);
     }
 
-    /**
-     * Runs a primitive's Java code for a caller, within the mission's call timeout if it has one: then
-     * on a thread of its own, the caller's blocking wait letting the pool go on ({@link Blocking}).
-     * The timeout counts from the moment the primitive starts on that thread: it bounds how long the
-     * primitive runs, so a loaded machine that is slow to start the thread does not turn a quick
-     * primitive into a {@code timeout}. On a scheduler that keeps the mission's time, sleeps and
-     * the timeout are counted on its clock instead ({@link ClockedCall}).
-     *
-     * @throws PrimitiveTimedOut if it ran past the timeout: its thread is interrupted, its result dropped
-     * @throws Exception what the primitive threw
-     */
-    <T> T callPrimitive(Callable<T> call) throws Exception {
-        if (scheduler instanceof MissionClock clock) {
-            try {
-                return ClockedCall.run(clock, callTimeout, primitives, call);
-            } catch (ClockedCall.LimitPassed late) {
-                throw new PrimitiveTimedOut();
-            }
-        }
-        if (callTimeout == null) {
-            return call.call();
-        }
-        CountDownLatch started = new CountDownLatch(1);
-        PrimitiveTurn turn = PrimitiveTurn.current();
-        if (turn != null) {
-            turn.delegating();
-        }
-        Future<T> running = primitives.submit(() -> {
-            if (turn != null) {
-                turn.delegateStarted();
-            }
-            try {
-                started.countDown();
-                return call.call();
-            } finally {
-                if (turn != null) {
-                    turn.delegateFinished();
-                }
-            }
-        });
-        try {
-            return Blocking.call(() -> {
-                started.await();
-                return running.get(callTimeout.toNanos(), TimeUnit.NANOSECONDS);
-            });
-        } catch (TimeoutException late) {
-            running.cancel(true);
-            throw new PrimitiveTimedOut();
-        } catch (ExecutionException failed) {
-            if (failed.getCause() instanceof Error error) {
-                throw error;
-            }
-            throw (Exception) failed.getCause();
-        } finally {
-            if (turn != null) {
-                turn.delegationEnded();
-            }
-        }
-    }
-
-    /** A primitive ran past the mission's call timeout. */
-    static final class PrimitiveTimedOut extends Exception {
-        private static final long serialVersionUID = 1L;
-
-        PrimitiveTimedOut() {
-            super(null, null, false, false);
-        }
+    /** How the mission runs its primitives' Java code (the agents' invocations and launches). */
+    PrimitiveCalls primitiveCalls() {
+        return primitiveCalls;
     }
 
     void agentFailed(Agent agent, Throwable cause) {
@@ -605,7 +470,7 @@ public final class Mission {
                 Function<AgentImplementation, ? extends AgentProgram> program) {
 
             Agent create(int id, Mission mission) {
-                implementation.bind(mission.new Services(id));
+                implementation.bind(new MissionServices(id, mission.journal));
                 return new Agent(id, name, implementation, type, program.apply(implementation), mission);
             }
         }
@@ -707,36 +572,6 @@ public final class Mission {
 
         public Mission build() {
             return new Mission(this);
-        }
-    }
-
-    /** What an agent's implementation reaches the mission through. */
-    private final class Services implements AgentServices {
-        private final int id;
-
-        Services(int id) {
-            this.id = id;
-        }
-
-        @Override
-        public int proxyId() {
-            return id;
-        }
-
-        @Override
-        public void log(String text) {
-            journal.append(text);
-        }
-
-        /**
-         * On a mission clock, sleeps in mission time ({@link ClockedCall}); otherwise really blocks
-         * the calling thread (a primitive's Java code), the pool staying live meanwhile.
-         */
-        @Override
-        public void sleep(long ms) throws InterruptedException {
-            if (!ClockedCall.sleep(ms)) {
-                Blocking.sleep(ms);
-            }
         }
     }
 }

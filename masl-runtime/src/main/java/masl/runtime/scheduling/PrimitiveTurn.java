@@ -156,7 +156,7 @@ public final class PrimitiveTurn {
     }
 
     /**
-     * The body hands its work to another thread and waits for it ({@link Mission#callPrimitive}
+     * The body hands its work to another thread and waits for it ({@link masl.runtime.invocation.PrimitiveCalls#call}
      * under a call timeout): until {@link #delegationEnded()}, the body is blocked without end only
      * if that thread is, and not while it has yet to start or has just finished.
      *
