@@ -148,12 +148,24 @@ public final class Mission {
         over = true;
         trace.record(new TraceEvent.MissionEnded(scheduler.nanoTime(), status.name().toLowerCase(Locale.ROOT),
                 status == MissionOutcome.Status.STOPPED ? stopReason : null));
-        String report = status == MissionOutcome.Status.COMPLETED ? "" : coordinator.report(agents);
+        String report = status == MissionOutcome.Status.COMPLETED ? "" : report();
         scheduler.shutdown();
         primitiveCalls.shutdownNow();
         journal.flush();
         Throwable cause = failure.get() != null ? failure.get() : firstDeath.get();
         return new MissionOutcome(status, journal.text(), Optional.ofNullable(cause), report);
+    }
+
+    /** One line per agent: its program counter and chain of blocks, for failure reports. */
+    private String report() {
+        return coordinator.query(() -> {
+            StringBuilder report = new StringBuilder();
+            for (Agent agent : agents) {
+                report.append(agent.describe()).append(": ").append(agent.memberships.isEmpty()
+                        ? "in no block" : agent.memberships.toString()).append('\n');
+            }
+            return report.toString();
+        });
     }
 
     /**

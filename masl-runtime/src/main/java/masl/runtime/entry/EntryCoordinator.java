@@ -311,18 +311,6 @@ public final class EntryCoordinator {
         }
     }
 
-    /** One line per agent: its program counter and chain of blocks, for failure reports. */
-    public String report(List<Agent> agents) {
-        return query(() -> {
-            StringBuilder report = new StringBuilder();
-            for (Agent agent : agents) {
-                report.append(agent.describe()).append(": ").append(agent.memberships.isEmpty()
-                        ? "in no block" : agent.memberships.toString()).append('\n');
-            }
-            return report.toString();
-        });
-    }
-
     // ---- the changes ---------------------------------------------------------------------------
 
     private void join(Agent agent, Entry entry) {
