@@ -15,6 +15,7 @@ import masl.runtime.entry.EntryCoordinator;
 import masl.runtime.entry.Membership;
 import masl.runtime.entry.SynchronisationBarrier;
 import masl.runtime.entry.Wave;
+import masl.runtime.event.Emitter;
 import masl.runtime.event.EventOccurrence;
 import masl.runtime.event.EventPlanner;
 import masl.runtime.event.ReactionPlan;
@@ -79,6 +80,7 @@ public final class Agent implements AgentContext, AgentTask {
     private final Permeability permeability;
     private final InvocationServing invocations;
     private final Invoker invoker;
+    private final Emitter emitter;
     // Made once: the hot paths that take them allocate nothing.
     private final BooleanSupplier servable;
     private final BooleanSupplier attentive;
@@ -169,7 +171,9 @@ public final class Agent implements AgentContext, AgentTask {
         this.invocations = new InvocationServing(this, permeability, mission.trace(), this::now);
         this.servable = invocations::hasServable;
         this.attentive = invocations::isAttentive;
-        this.invoker = new Invoker(this, permeability, new RequesterSite());
+        PrivateSide side = new PrivateSide();
+        this.invoker = new Invoker(this, permeability, side);
+        this.emitter = new Emitter(this, side);
     }
 
     // ---- AgentTask -----------------------------------------------------------------------------
@@ -659,20 +663,7 @@ public final class Agent implements AgentContext, AgentTask {
 
     @Override
     public void emit(Event event, String message) {
-        atCurrentCase();
-        if (event.isSystemEvent()) {
-            raise(event, message);
-            return;
-        }
-        Entry block = mission.entry(event.block());
-        requireMember(event, block);
-        Agent[] receivers = event.isShared() ? block.perceivers() : new Agent[] {this};
-        EventOccurrence occurrence = new EventOccurrence(event, message, id);
-        mission.trace().record(new TraceEvent.EventEmitted(now(), id, event.name(), block.name(), message,
-                receivers.length, source()));
-        for (Agent receiver : receivers) {
-            receiver.perceive(occurrence);
-        }
+        emitter.emit(event, message);
     }
 
     @Override
@@ -875,17 +866,9 @@ public final class Agent implements AgentContext, AgentTask {
         mission.changes().advance();
     }
 
-    /**
-     * Makes this agent perceive a system event ({@code timeout}, {@code uncaught_exception},
-     * {@code forbidden_access}: local to it, §8). Safe from any thread, for instance from an agent
-     * serving an invocation that this agent made.
-     */
+    /** Makes this agent perceive a system event ({@link Emitter#raise}); safe from any thread. */
     void raise(Event systemEvent, String message) {
-        if (!systemEvent.isSystemEvent()) {
-            throw new IllegalArgumentException(systemEvent + " is not a system event");
-        }
-        mission.trace().record(new TraceEvent.EventEmitted(now(), id, systemEvent.name(), null, message, 1, source()));
-        perceive(new EventOccurrence(systemEvent, message, id));
+        emitter.raise(systemEvent, message);
     }
 
     /** Perceives an occurrence (§8): from any thread, never blocks; wakes a parked busy-wait (§5). */
@@ -969,15 +952,6 @@ public final class Agent implements AgentContext, AgentTask {
         }
     }
 
-    private void requireMember(Event event, Entry block) {
-        for (Membership membership : memberships) {
-            if (membership.entry == block) {
-                return;
-            }
-        }
-        throw new IllegalStateException(describe() + " emits " + event + " outside that block");
-    }
-
     private boolean yieldIfSliceUsed() {
         if (++stepsThisSlice < mission.scheduler().stepsPerSlice() && !mission.memoryExhausted()) {
             return true;
@@ -1053,8 +1027,8 @@ public final class Agent implements AgentContext, AgentTask {
         return name;
     }
 
-    /** The agent's private side its {@link Invoker} needs: kept off the public one. */
-    private final class RequesterSite implements Invoker.Site {
+    /** The agent's private side its {@link Invoker} and {@link Emitter} need: kept off the public one. */
+    private final class PrivateSide implements Invoker.Site, Emitter.Site {
 
         @Override
         public void atCurrentCase() {
@@ -1074,6 +1048,11 @@ public final class Agent implements AgentContext, AgentTask {
         @Override
         public Agent agentOf(AgentImplementation implementation) {
             return mission.agentOf(implementation);
+        }
+
+        @Override
+        public void deliver(Agent receiver, EventOccurrence occurrence) {
+            receiver.perceive(occurrence);
         }
 
         @Override
