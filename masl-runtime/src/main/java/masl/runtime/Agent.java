@@ -51,7 +51,7 @@ import masl.runtime.trace.TraceEvent;
  * code, and the boundary call returns {@code false}; the slice then calls {@code resume} again at
  * once. Each reaction ends with {@link #endReaction()}, which redirects to the next one, or lets
  * the last one apply its ending (§8: the last reaction decides): {@link #resumeInterrupted()}, or
- * a break, restart or reelect.</li>
+ * a break, restart or reelect. What the agent emits and raises goes through its {@link Emitter}.</li>
  * <li><b>Invocations</b> ({@link InvocationServing}, MASL §9): an external invocation waits in the
  * callee's queue until the callee's next boundary, or a serving slice, serves it; in
  * {@code wait(state)} the agent is attentive and serves only what that state allows.

@@ -18,7 +18,7 @@ import masl.runtime.scheduling.SliceRun;
  * trip without it, and the arrival counts in the phase it was made in. The flush that completes the
  * phase trips it, as a membership change does, waking every arrived agent.
  *
- * <p>Deadlock watchdog ({@link Mission}): from the first arrival held to the end of the flush, a
+ * <p>Deadlock watchdog (the mission's {@code DeadlockWatchdog}): from the first arrival held to the end of the flush, a
  * wake-up is pending: the parked agents look idle, but the flush may trip their barrier.
  *
  * <p>Confined to its thread.
