@@ -25,8 +25,8 @@ import org.junit.jupiter.api.Timeout;
 @Tag("slow")
 class TranslationScaleTest {
 
-    private static final int WARM_UPS = 2;
-    private static final int MEASUREMENTS = 6;
+    private static final int WARM_UPS = 1;
+    private static final int MEASUREMENTS = 4;
     private static final double MOST_FOR_TWICE_THE_INPUT = 3.0;
     private static final OperatingSystemMXBean PROCESS =
             (OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
