@@ -18,6 +18,24 @@ class IdleIterationTest {
     private static final int POOL_RUNS = 20;
     private static final int THREAD_RUNS = 20;
 
+    /** Agent 0 logs at steps 1 and 6 of the block, agent 1 at each of steps 1 to 7. */
+    private static final StepJournal ZERO_AT_STEPS_1_AND_6 = StepJournal.of("""
+                0 step 1
+                1 step 1
+
+                1 step 2
+
+                1 step 3
+
+                1 step 4
+
+                1 step 5
+
+                0 step 6
+                1 step 6
+
+                1 step 7""");
+
     /** Agents 2 and 3 skip {@code write} and spin on its active count while 0 and 1 write in lock-step. */
     @Test
     void membersSpinningOnASynchronousChildLetItsMembersFinish() {
@@ -149,22 +167,7 @@ class IdleIterationTest {
                         for (k = 2; k <= 7; k++) .logln("1 step " + k);
                     }
                 }
-                """, StepJournal.of("""
-                0 step 1
-                1 step 1
-
-                1 step 2
-
-                1 step 3
-
-                1 step 4
-
-                1 step 5
-
-                0 step 6
-                1 step 6
-
-                1 step 7"""));
+                """, ZERO_AT_STEPS_1_AND_6);
     }
 
     /** Nested loops: each idle iteration of the inner loop is a step; the outer loop's iterations, which ran them, add none. */
@@ -186,22 +189,7 @@ class IdleIterationTest {
                         for (i = 2; i <= 7; i++) .logln("1 step " + i);
                     }
                 }
-                """, StepJournal.of("""
-                0 step 1
-                1 step 1
-
-                1 step 2
-
-                1 step 3
-
-                1 step 4
-
-                1 step 5
-
-                0 step 6
-                1 step 6
-
-                1 step 7"""));
+                """, ZERO_AT_STEPS_1_AND_6);
     }
 
     private static void assertEverySchedule(String name, String program, StepJournal journal) {
