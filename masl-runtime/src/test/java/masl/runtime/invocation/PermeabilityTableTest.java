@@ -2,20 +2,12 @@ package masl.runtime.invocation;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.atomic.AtomicIntegerArray;
-import java.util.concurrent.atomic.AtomicReferenceArray;
-import masl.runtime.AgentContext;
-import masl.runtime.ESequence;
-import masl.runtime.EntryDefinition;
-import masl.runtime.Mode;
-import masl.runtime.SharedDeclaration;
-import masl.runtime.descriptor.AgentType;
-import masl.runtime.testing.CompactProgram;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
 import masl.runtime.testing.Driver;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
-import masl.runtime.testing.TestTypes;
 import masl.runtime.trace.Trace;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -27,118 +19,67 @@ import org.junit.jupiter.params.provider.EnumSource;
  * state, and {@code nop} is invoked by the callee itself (u), by a member of the same innermost
  * block (g), by an agent in the parent block {@code main} (o) and by one in the sibling block
  * {@code elsewhere} (o). Exactly the allowed invocations run, each once.
- * <pre>
- * asynchronous entry main (true) {
- *   shared int ready = 0; shared int done = 0;
- *   asynchronous entry inner (me &lt;= 1) { if (me == 0) callee(); else request(); }
- *   asynchronous entry elsewhere (me == 3) { request(); }
- *   if (me == 2) request();
- * }
- * callee:  setAcceptState("xK"); ready = 1; while (done &lt; 3) {} .nop();
- * request: while (ready == 0) {} a0.nop(); done++;
- * </pre>
+ * Each requester logs whether its call ran (a denied one gives it {@code timeout}); the callee's
+ * {@code nop} counts its runs. The callee takes the state its attribute {@code battery} names, and
+ * {@code default} again to log (a state that lists members denies the others).
  */
 @Timeout(120)
 class PermeabilityTableTest {
 
-    static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-    static final SharedDeclaration<Integer> READY = MAIN.declareShared("ready", 0);
-    static final SharedDeclaration<Integer> DONE = MAIN.declareShared("done", 0);
-    static final ESequence BLOCKS = MAIN.newSequence();
-    static final EntryDefinition INNER = BLOCKS.block("inner", Mode.ASYNCHRONOUS);
-    static final EntryDefinition ELSEWHERE = BLOCKS.block("elsewhere", Mode.ASYNCHRONOUS);
+    private static final MaslProgram REQUESTS = MaslProgram.of("permeability.masl", 4, """
+            asynchronous entry main (true) {
+              shared int ready = 0;
+              shared int done = 0;
+              local int denied = 0;
+              asynchronous entry inner (.getProxyID() <= 1) {
+                if (.getProxyID() == 0) {
+                  setAcceptState("x" + .battery); ready = 1; while (done < 3) {}
+                  .nop();
+                  setAcceptState("default");
+                  .logln("0 ran " + (1 - denied));
+                } else {
+                  while (ready == 0) {} a0.nop(); .logln("1 ran " + (1 - denied)); done++;
+                }
+              }
+              asynchronous entry elsewhere (.getProxyID() == 3) {
+                while (ready == 0) {} a0.nop(); .logln("3 ran " + (1 - denied)); done++;
+              }
+              if (.getProxyID() == 2) {
+                while (ready == 0) {} a0.nop(); .logln("2 ran " + (1 - denied)); done++;
+              }
+              react (timeout) { denied = 1; resume; }
+            }
+            """);
 
-    static final class Requests extends CompactProgram {
-        private final int bits;
-        private final AtomicReferenceArray<TestAgent> population;
-        private final AtomicIntegerArray ran;
-        private CompletableFuture<Object> request;
-        private int back;
+    /** An agent whose {@code battery} names the callee's state and whose {@code nop} counts its runs. */
+    private static final class Counting extends TestAgent {
+        private final AtomicInteger runs;
 
-        Requests(TestAgent self, int bits, AtomicReferenceArray<TestAgent> population, AtomicIntegerArray ran) {
-            super(self);
-            this.bits = bits;
-            this.population = population;
-            this.ran = ran;
-            population.set(self.getProxyID(), self);
+        Counting(int bits, AtomicInteger runs) {
+            this.runs = runs;
+            battery = bits;
         }
 
         @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            int me = self.getProxyID();
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 16)) return; continue;
-                    case 1: if (!arrive(ctx, INNER, me <= 1, 2, 9)) return; continue;
-                    case 2:
-                        if (me != 0) {
-                            back = 8;
-                            pc = 20;
-                            continue;
-                        }
-                        ctx.setAcceptState("x" + bits);
-                        ctx.shared(READY).set(1);
-                        if (!step(ctx, 3)) return;
-                        continue;
-                    case 3: if (!busyWait(ctx, ctx.shared(DONE).get() < 3, 4)) return; continue;
-                    case 4:
-                        ctx.invokeSelf("nop", null, () -> {
-                            ran.incrementAndGet(me);
-                            return null;
-                        });
-                        if (!step(ctx, 8)) return;
-                        continue;
-                    case 8: if (!leave(ctx, INNER, 9)) return; continue;
-                    case 9: if (!arrive(ctx, ELSEWHERE, me == 3, 10, 12)) return; continue;
-                    case 10: back = 11; pc = 20; continue;
-                    case 11: if (!leave(ctx, ELSEWHERE, 12)) return; continue;
-                    case 12: if (!endOf(ctx, BLOCKS, 13)) return; continue;
-                    case 13:
-                        if (me == 2) {
-                            back = 15;
-                            pc = 20;
-                        } else {
-                            pc = 15;
-                        }
-                        continue;
-                    case 15: if (!leave(ctx, MAIN, 16)) return; continue;
-                    case 16: if (!endOf(ctx, MAIN.sequence(), 17)) return; continue;
-                    case 17: ctx.finish(); return;
-                    case 20: if (!busyWait(ctx, ctx.shared(READY).get() == 0, 21)) return; continue;
-                    case 21:
-                        request = ctx.invoke(population.get(0), "nop", null, () -> {
-                            ran.incrementAndGet(me);
-                            return null;
-                        });
-                        pc = 22;
-                        if (!ctx.await(request)) return;
-                    case 22:
-                        ctx.shared(DONE).getAndUpdate(done -> done + 1);
-                        if (!step(ctx, back)) return;
-                        continue;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
-            }
+        public void nop() {
+            runs.incrementAndGet();
         }
     }
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void exactlyTheAllowedInvocationsRun(Driver driver) {
-        AgentType type = TestTypes.testAgent();
         for (int run = 0; run < Missions.REPETITIONS / 5; run++) {
             for (int bits = 0; bits < 8; bits++) {
-                AtomicIntegerArray ran = new AtomicIntegerArray(4);
+                AtomicInteger runs = new AtomicInteger();
                 int state = bits;
-                AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(4);
-                Missions.run(driver.newScheduler(), MAIN, 4, type,
-                        self -> new Requests(self, state, population, ran), Trace.NONE);
+                String journal = REQUESTS.run(driver.newScheduler(), Trace.NONE, () -> new Counting(state, runs)).journal();
                 int u = bits >> 2 & 1;
                 int g = bits >> 1 & 1;
                 int o = bits & 1;
-                assertEquals(u + "" + g + o + o, "" + ran.get(0) + ran.get(1) + ran.get(2) + ran.get(3),
+                assertEquals(List.of("0 ran " + u, "1 ran " + g, "2 ran " + o, "3 ran " + o), journal.lines().sorted().toList(),
                         "runs by self, same block, parent block, sibling block in state x" + bits);
+                assertEquals(u + g + o + o, runs.get(), "nop's runs in state x" + bits);
             }
         }
     }

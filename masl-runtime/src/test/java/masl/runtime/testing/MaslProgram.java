@@ -104,8 +104,23 @@ public final class MaslProgram {
 
     /** As {@link #run(Scheduler, Trace)}, each agent's implementation made by {@code agents}. */
     public MissionOutcome run(Scheduler scheduler, Trace trace, Supplier<? extends TestAgent> agents) {
+        return completed(newMission(agents), scheduler, trace);
+    }
+
+    /**
+     * A run under {@code scheduler} recording into {@code trace}, which must complete; each agent is
+     * made of the class its type names (a {@link TestRobot} for a program's {@code TestRobot}s), by
+     * its no-argument constructor, as {@code masl run} makes them.
+     */
+    public MissionOutcome runOfDeclaredClasses(Scheduler scheduler, Trace trace) {
+        MissionProgram program = loaded.program();
+        return completed(program.configure(Mission.builder(), spec -> (AgentImplementation) Class
+                .forName(spec.typeClassName()).getConstructor().newInstance()), scheduler, trace);
+    }
+
+    private static MissionOutcome completed(Mission.Builder mission, Scheduler scheduler, Trace trace) {
         try {
-            return newMission(agents).scheduler(scheduler).trace(trace).build().run(TIMEOUT).requireCompleted();
+            return mission.scheduler(scheduler).trace(trace).build().run(TIMEOUT).requireCompleted();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new AssertionError("interrupted", e);
