@@ -83,6 +83,13 @@ public final class EntryDefinition {
         }
     }
 
+    /** The event {@code eventName} this block declares, shared or local, if it does. */
+    Optional<Event> event(String eventName) {
+        synchronized (events) {
+            return events.stream().filter(event -> event.name().equals(eventName)).findFirst();
+        }
+    }
+
     private Event declareEvent(String eventName, boolean shared) {
         synchronized (events) {
             if (events.stream().anyMatch(event -> event.name().equals(eventName))) {

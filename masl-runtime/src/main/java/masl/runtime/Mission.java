@@ -15,6 +15,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BiFunction;
 import java.util.function.Function;
 import masl.runtime.descriptor.AgentType;
 import masl.runtime.entry.Entry;
@@ -98,7 +99,7 @@ public final class Mission {
         entries = Collections.unmodifiableMap(blocks);
         List<Agent> created = new ArrayList<>();
         for (Builder.AgentDeclaration declaration : builder.agents) {
-            created.add(declaration.create(created.size(), this));
+            created.add(declaration.create(created.size(), this, builder.around));
         }
         agents = Collections.unmodifiableList(created);
         agentNames = builder.agents.stream().map(Builder.AgentDeclaration::name).toList();
@@ -481,9 +482,9 @@ public final class Mission {
         private record AgentDeclaration(String name, AgentImplementation implementation, AgentType type,
                 Function<AgentImplementation, ? extends AgentProgram> program) {
 
-            Agent create(int id, Mission mission) {
+            Agent create(int id, Mission mission, BiFunction<String, AgentProgram, AgentProgram> around) {
                 implementation.bind(new MissionServices(id, mission.journal));
-                return new Agent(id, name, implementation, type, program.apply(implementation), mission);
+                return new Agent(id, name, implementation, type, around.apply(name, program.apply(implementation)), mission);
             }
         }
 
@@ -495,8 +496,18 @@ public final class Mission {
         private boolean openToOutsideInvocations;
         private Duration callTimeout;
         private WakeUps wakeUps = new WakeUps();
+        private BiFunction<String, AgentProgram, AgentProgram> around = (name, program) -> program;
 
-        private Builder() {
+        private Builder() { }
+
+        /** Each agent runs {@code around(name, program)}: the JADE bridge stands in for programs it deploys. */
+        public Builder programs(BiFunction<String, AgentProgram, AgentProgram> stand) {
+            this.around = Objects.requireNonNull(stand, "stand");
+            return this;
+        }
+
+        DeployedPrograms.Made madeOutsideAMission() {
+            return new DeployedPrograms.Made(main, agents.stream().<AgentProgram>map(a -> a.program.apply(a.implementation)).toList());
         }
 
         /**

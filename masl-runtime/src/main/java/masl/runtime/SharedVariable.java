@@ -12,9 +12,12 @@ import masl.runtime.scheduling.ChangeEpoch;
  * computes and stores the new value, so no other write to the variable comes in between. Each
  * write advances the mission's change epoch, which wakes agents parked in a busy-wait loop (§5).
  *
+ * <p>Not final for one subclass only: the copy a deployed agent's program uses in another JVM (the JADE
+ * bridge's), each of whose methods is a request to the mission's own copy.
+ *
  * @param <T> the variable's (boxed) Java type
  */
-public final class SharedVariable<T> {
+public class SharedVariable<T> {
 
     private final SharedDeclaration<T> declaration;
     private final ChangeEpoch changes;

@@ -22,9 +22,11 @@ import masl.runtime.scheduling.ChangeEpoch;
  * membership changes of the mission; a value it returns may be stale by the time it is used, as
  * for any concurrent counter.
  *
- * <p>The fields are guarded by the mission's {@link EntryCoordinator} lock.
+ * <p>The fields are guarded by the mission's {@link EntryCoordinator} lock. Not final for one subclass
+ * only: the entry a deployed agent's program uses in another JVM (the JADE bridge's), each of whose
+ * members is a request to the mission's own entry.
  */
-public final class Entry {
+public class Entry {
 
     private final EntryDefinition definition;
     private final EntryCoordinator coordinator;

@@ -1,0 +1,186 @@
+package masl.jade.deployment;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.BooleanNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.NullNode;
+import com.fasterxml.jackson.databind.node.TextNode;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.UnaryOperator;
+import masl.runtime.AgentContext;
+import masl.runtime.AgentImplementation;
+import masl.runtime.SharedDeclaration;
+import masl.runtime.SharedVariable;
+import masl.runtime.entry.Entry;
+
+/**
+ * Performs a deployed agent's request on its context in the mission ({@link RemoteContext} makes
+ * them): the same {@link AgentContext} call an in-process program makes, with the Java code it hands
+ * over standing for the code the container keeps ({@link Callbacks}), run there when the runtime runs it.
+ */
+final class ContextCalls {
+
+    /** What a call the container ran returns here; the runtime returns its default value, {@link #DENIED}, otherwise. */
+    static final Object RAN = new Object();
+    static final Object DENIED = new Object();
+
+    private final Coordination coordination;
+
+    ContextCalls(Coordination coordination) {
+        this.coordination = coordination;
+    }
+
+    JsonNode perform(StandIn agent, AgentContext ctx, JsonNode request) {
+        String op = request.get("op").textValue();
+        Blocks blocks = coordination.blocks();
+        int id = agent.id();
+        switch (op) {
+            case "stepBoundary": return bool(ctx.stepBoundary());
+            case "loopIteration": return bool(ctx.loopIteration());
+            case "busyWaitIteration": return bool(ctx.busyWaitIteration());
+            case "enter": return text(ctx.enter(blocks.block(text(request, "block")), request.get("test").booleanValue()).name());
+            case "leave": return bool(ctx.leave(blocks.block(text(request, "block"))));
+            case "endOfChild": return bool(ctx.endOfChild(blocks.block(text(request, "block"))));
+            case "endOfSequence": return bool(ctx.endOfSequence(blocks.sequence(text(request, "sequence"))));
+            case "breakOut": ctx.breakOut(blocks.block(text(request, "block"))); return null;
+            case "reelect": ctx.reelect(blocks.block(text(request, "block"))); return null;
+            case "restart": ctx.restart(blocks.block(text(request, "block"))); return null;
+            case "sleep": return bool(ctx.sleep(request.get("ms").longValue()));
+            case "await": return bool(ctx.await(agent.call(request.get("call").longValue())));
+            case "emit": ctx.emit(blocks.event(text(request, "event")), text(request, "message")); return null;
+            case "uncaughtException":
+                ctx.uncaughtException(new masl.runtime.RemotePrimitiveException(text(request, "class"),
+                        text(request, "message")));
+                return null;
+            case "messageOf": return text(ctx.messageOf(blocks.event(text(request, "event"))));
+            case "endReaction": return bool(ctx.endReaction());
+            case "resumeInterrupted": return bool(ctx.resumeInterrupted());
+            case "clearEvents": ctx.clearEvents(); return null;
+            case "finish": ctx.finish(); return null;
+            case "invokeSelf": {
+                long call = request.get("call").longValue();
+                return bool(ctx.invokeSelf(text(request, "primitive"), DENIED, () -> coordination.run(id, call, null)) == RAN);
+            }
+            case "invoke":
+            case "launch": return queued(agent, ctx, op, request);
+            case "readAttribute": {
+                long call = request.get("call").longValue();
+                return bool(ctx.readAttribute(agent(request, "owner"), text(request, "attribute"), DENIED,
+                        () -> coordination.run(id, call, null)) == RAN);
+            }
+            case "writeAttribute": {
+                long call = request.get("call").longValue();
+                return bool(ctx.writeAttribute(agent(request, "owner"), text(request, "attribute"),
+                        () -> coordination.run(id, call, null)));
+            }
+            case "setAcceptState": ctx.setAcceptState(text(request, "state")); return null;
+            case "getAcceptState": {
+                int of = request.get("agent").intValue();
+                return text(of == id ? ctx.getAcceptState() : ctx.getAcceptState(agent(request, "agent")));
+            }
+            case "waitFor": {
+                long ms = request.get("ms").longValue();
+                return bool(ms < 0 ? ctx.waitFor(text(request, "state")) : ctx.waitFor(text(request, "state"), ms));
+            }
+            default:
+                if (op.startsWith("shared-")) {
+                    return shared(agent, ctx, op.substring("shared-".length()), request);
+                }
+                if (op.startsWith("entry-")) {
+                    return entry(ctx.entry(blocks.block(text(request, "block"))), op.substring("entry-".length()),
+                            request.path("n").intValue());
+                }
+                throw new IllegalArgumentException("no request " + op + " of a deployed agent");
+        }
+    }
+
+    private JsonNode queued(StandIn agent, AgentContext ctx, String op, JsonNode request) {
+        int id = agent.id();
+        long call = request.get("call").longValue();
+        AgentImplementation callee = agent(request, "callee");
+        String primitive = text(request, "primitive");
+        CompletableFuture<Object> future;
+        if ("invoke".equals(op)) {
+            future = ctx.invoke(callee, primitive, DENIED, () -> coordination.run(id, call, null));
+        } else if (request.has("countermeasure")) {
+            long armed = request.get("countermeasureCall").longValue();
+            future = ctx.launch(callee, primitive, DENIED, () -> coordination.run(id, call, null),
+                    text(request, "countermeasure"), () -> coordination.run(id, armed, null));
+        } else {
+            future = ctx.launch(callee, primitive, DENIED, () -> coordination.run(id, call, null));
+        }
+        agent.track(call, future);
+        return null;
+    }
+
+    @SuppressWarnings("unchecked")
+    private JsonNode shared(StandIn agent, AgentContext ctx, String op, JsonNode request) {
+        SharedVariable<Object> variable = ctx.shared((SharedDeclaration<Object>) coordination.blocks()
+                .shared(text(request, "shared")));
+        List<AgentImplementation> agents = coordination.agents();
+        long call = request.path("call").longValue();
+        UnaryOperator<Object> remote = value -> coordination.apply(agent.id(), call, Values.toJson(value));
+        return switch (op) {
+            case "get" -> Values.toJson(variable.get());
+            case "set" -> {
+                variable.set(Values.fromJson(request.get("value"), agents));
+                yield null;
+            }
+            case "initialise" -> {
+                variable.initialise(() -> remote.apply(null));
+                yield null;
+            }
+            case "update" -> Values.toJson(variable.update(remote));
+            case "getAndUpdate" -> Values.toJson(variable.getAndUpdate(remote));
+            default -> throw new IllegalArgumentException("no shared request " + op);
+        };
+    }
+
+    private static JsonNode entry(Entry entry, String op, int n) {
+        return switch (op) {
+            case "count" -> JsonNodeFactory.instance.numberNode(entry.count());
+            case "getActiveCount" -> JsonNodeFactory.instance.numberNode(entry.getActiveCount());
+            case "getWaitingInCount" -> JsonNodeFactory.instance.numberNode(entry.getWaitingInCount());
+            case "getWaitingOutCount" -> JsonNodeFactory.instance.numberNode(entry.getWaitingOutCount());
+            case "getLockPolicy" -> text(entry.getLockPolicy());
+            case "lock" -> {
+                entry.lock();
+                yield null;
+            }
+            case "release" -> {
+                entry.release(n);
+                yield null;
+            }
+            case "getList" -> ids(entry.getList());
+            case "getActiveList" -> ids(entry.getActiveList());
+            case "getWaitingInList" -> ids(entry.getWaitingInList());
+            case "getWaitingOutList" -> ids(entry.getWaitingOutList());
+            default -> throw new IllegalArgumentException("no entry request " + op);
+        };
+    }
+
+    private static JsonNode ids(List<AgentImplementation> agents) {
+        ArrayNode ids = JsonNodeFactory.instance.arrayNode();
+        agents.forEach(agent -> ids.add(AgentImplementation.proxyIdOf(agent)));
+        return ids;
+    }
+
+    private AgentImplementation agent(JsonNode request, String field) {
+        int proxyId = request.get(field).intValue();
+        return proxyId < 0 ? null : coordination.agents().get(proxyId);
+    }
+
+    private static String text(JsonNode request, String field) {
+        return request.get(field).textValue();
+    }
+
+    private static JsonNode text(String value) {
+        return value == null ? NullNode.getInstance() : TextNode.valueOf(value);
+    }
+
+    private static JsonNode bool(boolean value) {
+        return BooleanNode.valueOf(value);
+    }
+}

@@ -1,0 +1,197 @@
+package masl.jade.deployment;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
+import java.util.function.IntFunction;
+import masl.runtime.AgentImplementation;
+import masl.runtime.AgentProgram;
+import masl.runtime.DeployedPrograms;
+import masl.runtime.EntryDefinition;
+import masl.runtime.MissionProgram;
+import masl.runtime.RemotePrimitiveException;
+
+/**
+ * The mission's side of its deployed agents: the one authority. Each deployed agent is a
+ * {@link StandIn} in the mission, scheduled, parked, woken and watched as any agent; its steps run in
+ * its container ({@link DeployedTeam}), whose requests the stand-in performs on the agent's context
+ * here. Messages from containers come in through {@link #receive}, in the order each container sent
+ * them: the journal text they carry is appended at once, before the request is performed.
+ */
+public final class Coordination {
+
+    private final Blocks blocks;
+    private final IntFunction<Wire> wireOf;
+    private final Consumer<String> journal;
+    private final ContextCalls calls = new ContextCalls(this);
+    private final Map<Integer, StandIn> standIns = new ConcurrentHashMap<>();
+    private final Map<Long, CompletableFuture<ObjectNode>> runs = new ConcurrentHashMap<>();
+    private final AtomicLong runNumbers = new AtomicLong();
+    /** Why each container is gone, by the proxy ids of its agents. */
+    private final Map<Integer, String> lost = new ConcurrentHashMap<>();
+    private volatile List<AgentImplementation> agents = List.of();
+
+    /**
+     * @param main the program's top-level block, as this JVM translated it
+     * @param wireOf the wire to the container of each deployed agent, by proxy id
+     * @param journal where the deployed agents' journal text goes: the mission's journal
+     */
+    public Coordination(EntryDefinition main, IntFunction<Wire> wireOf, Consumer<String> journal) {
+        this.blocks = new Blocks(main);
+        this.wireOf = wireOf;
+        this.journal = journal;
+    }
+
+    /**
+     * The top-level block of {@code program}, as this JVM translated it: the one whose blocks the
+     * containers' requests name. Makes the program's agents once more, with implementations from
+     * {@code implementations} that serve no mission.
+     */
+    public static EntryDefinition mainOf(MissionProgram program, MissionProgram.ImplementationFactory implementations) {
+        TeamJournal nowhere = new TeamJournal();
+        AtomicInteger next = new AtomicInteger();
+        return DeployedPrograms.outsideAMission(program, spec -> {
+            AgentImplementation implementation = implementations.create(spec);
+            implementation.bind(nowhere.servicesOf(next.getAndIncrement()));
+            return implementation;
+        }).main();
+    }
+
+    /** The program agent {@code proxyId} runs in the mission: a stand-in for {@code program}, which runs in its container. */
+    public AgentProgram standIn(int proxyId, AgentProgram program) {
+        StandIn standIn = new StandIn(proxyId, program, this);
+        standIns.put(proxyId, standIn);
+        return standIn;
+    }
+
+    /** The mission's agents' implementations, by proxy id: what requests naming agents mean here. */
+    public void agents(List<AgentImplementation> implementations) {
+        this.agents = List.copyOf(implementations);
+    }
+
+    /** A message from the container of the agent it names. */
+    public void receive(ObjectNode message) {
+        JsonNode written = message.get("journal");
+        if (written != null) {
+            journal.accept(written.textValue());
+        }
+        switch (message.path("kind").asText()) {
+            case "call", "yield" -> {
+                StandIn standIn = standIns.get(message.path("agent").intValue());
+                if (standIn != null) {
+                    standIn.requested(message);
+                }
+            }
+            case "ran" -> {
+                CompletableFuture<ObjectNode> run = runs.remove(message.path("run").longValue());
+                if (run != null) {
+                    run.complete(message);
+                }
+            }
+            default -> throw new IllegalArgumentException("not a message of a deployed agent: " + message);
+        }
+    }
+
+    /**
+     * The container of the agents {@code proxyIds} is gone ({@code why}): their steps and the calls
+     * waiting for it throw, so those agents fail and the others go on.
+     */
+    public void lose(List<Integer> proxyIds, String why) {
+        proxyIds.forEach(id -> lost.put(id, why));
+    }
+
+    Blocks blocks() {
+        return blocks;
+    }
+
+    ContextCalls calls() {
+        return calls;
+    }
+
+    List<AgentImplementation> agents() {
+        return agents;
+    }
+
+    void send(int proxyId, ObjectNode message) {
+        wireOf.apply(proxyId).send(message.put("agent", proxyId));
+    }
+
+    /** The next message for a stand-in's step; throws once its container is gone. */
+    ObjectNode await(int proxyId, BlockingQueue<ObjectNode> requests) {
+        try {
+            while (true) {
+                ObjectNode request = requests.poll(50, TimeUnit.MILLISECONDS);
+                if (request != null) {
+                    return request;
+                }
+                failIfLost(proxyId);
+            }
+        } catch (InterruptedException interrupted) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while agent " + proxyId + " ran in its container");
+        }
+    }
+
+    private void failIfLost(int proxyId) {
+        String why = lost.get(proxyId);
+        if (why != null) {
+            throw new ContainerLostException(why);
+        }
+    }
+
+    /** Runs call {@code call} of agent {@code proxyId}'s program in its container: {@link ContextCalls#RAN}, or throws what it threw. */
+    Object run(int proxyId, long call, JsonNode argument) {
+        ran(proxyId, call, argument);
+        return ContextCalls.RAN;
+    }
+
+    /** Applies the update function {@code call} of agent {@code proxyId}'s program to {@code value} in its container. */
+    Object apply(int proxyId, long call, JsonNode value) {
+        JsonNode result = ran(proxyId, call, value).get("value");
+        return result == null ? null : Values.fromJson(result, agents);
+    }
+
+    private ObjectNode ran(int proxyId, long call, JsonNode argument) {
+        long number = runNumbers.incrementAndGet();
+        CompletableFuture<ObjectNode> answer = new CompletableFuture<>();
+        runs.put(number, answer);
+        ObjectNode run = JsonNodeFactory.instance.objectNode().put("kind", "run").put("call", call).put("run", number);
+        if (argument != null) {
+            run.set("argument", argument);
+        }
+        send(proxyId, run);
+        ObjectNode ran = awaitRun(proxyId, answer);
+        if (!"ran".equals(ran.path("outcome").asText())) {
+            throw new RemotePrimitiveException(ran.path("class").asText(), ran.path("message").asText());
+        }
+        return ran;
+    }
+
+    private ObjectNode awaitRun(int proxyId, CompletableFuture<ObjectNode> answer) {
+        try {
+            while (true) {
+                try {
+                    return answer.get(50, TimeUnit.MILLISECONDS);
+                } catch (TimeoutException notYet) {
+                    failIfLost(proxyId);
+                }
+            }
+        } catch (InterruptedException interrupted) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while a call ran in agent " + proxyId + "'s container");
+        } catch (ExecutionException impossible) {
+            throw new IllegalStateException(impossible.getCause());
+        }
+    }
+}

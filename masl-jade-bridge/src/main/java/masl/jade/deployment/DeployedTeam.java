@@ -1,0 +1,158 @@
+package masl.jade.deployment;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ThreadFactory;
+import java.util.concurrent.TimeUnit;
+import masl.runtime.AgentImplementation;
+import masl.runtime.DeployedPrograms;
+import masl.runtime.MissionProgram;
+import masl.runtime.RemotePrimitiveException;
+
+/**
+ * The deployed agents of one container: their programs, made here from the program this container
+ * translated itself, each running its steps when the mission says {@code resume}, against a
+ * {@link RemoteContext}; the Java code the programs hand over, run when the mission asks; and what
+ * their primitives write to the journal, sent with the container's next message. The mission
+ * ({@link Coordination}) decides everything else.
+ */
+public final class DeployedTeam implements AutoCloseable {
+
+    private final Wire toMission;
+    private final List<AgentImplementation> agents;
+    private final Map<Integer, RemoteContext> hosted = new ConcurrentHashMap<>();
+    private final Callbacks callbacks;
+    private final TeamJournal journal = new TeamJournal();
+    private final ExecutorService steps = Executors.newCachedThreadPool(daemon("masl-deployed-step"));
+    private final ExecutorService calls = Executors.newCachedThreadPool(daemon("masl-deployed-call"));
+    private volatile String lost;
+
+    /**
+     * Makes the programs of {@code program}'s agents named in {@code names}, with implementations
+     * {@code implementations} gives (every agent's: a program may name any agent), bound to this
+     * container's services.
+     */
+    public DeployedTeam(MissionProgram program, Set<String> names, MissionProgram.ImplementationFactory implementations,
+            Wire toMission) {
+        this.toMission = toMission;
+        this.agents = new ArrayList<>();
+        DeployedPrograms.Made made = DeployedPrograms.outsideAMission(program, spec -> {
+            AgentImplementation implementation = implementations.create(spec);
+            implementation.bind(journal.servicesOf(agents.size()));
+            agents.add(implementation);
+            return implementation;
+        });
+        this.callbacks = new Callbacks(agents);
+        List<MissionProgram.AgentSpec> specs = program.agents();
+        for (int id = 0; id < specs.size(); id++) {
+            if (names.contains(specs.get(id).name())) {
+                hosted.put(id, new RemoteContext(id, made.programs().get(id), this));
+            }
+        }
+    }
+
+    /** The proxy ids of the agents this container runs. */
+    public Collection<Integer> hosted() {
+        return List.copyOf(hosted.keySet());
+    }
+
+    List<AgentImplementation> agents() {
+        return agents;
+    }
+
+    Callbacks callbacks() {
+        return callbacks;
+    }
+
+    /** A message from the mission: a step to run, an answer to a request, a call to run. */
+    public void receive(ObjectNode message) {
+        RemoteContext agent = hosted.get(message.path("agent").intValue());
+        switch (message.path("kind").textValue()) {
+            case "resume" -> steps.execute(() -> step(agent, message));
+            case "answer" -> agent.answered(message);
+            case "run" -> calls.execute(() -> {
+                ObjectNode ran = callbacks.run(message.get("call").longValue(), message.get("argument"));
+                send(ran.put("kind", "ran").put("agent", agent.id()).put("run", message.get("run").longValue()));
+            });
+            default -> throw new IllegalArgumentException("not a message of the mission: " + message);
+        }
+    }
+
+    private void step(RemoteContext agent, ObjectNode resume) {
+        ObjectNode yield = resume.objectNode().put("kind", "yield").put("agent", agent.id());
+        try {
+            agent.completeDone(resume.get("done"));
+            DeployedPrograms.resume(agent.program(), resume.get("pc").intValue(), agent);
+        } catch (MissionLost gone) {
+            return;
+        } catch (RuntimeException | Error failure) {
+            yield.put("failed", RemotePrimitiveException.classNameOf(failure))
+                    .put("message", String.valueOf(failure.getMessage()));
+        }
+        send(yield.put("pc", agent.program().pc()));
+    }
+
+    /** Sends {@code message} with what was written to the journal since the last message. */
+    synchronized void send(ObjectNode message) {
+        String written = journal.drain();
+        if (!written.isEmpty()) {
+            message.put("journal", written);
+        }
+        toMission.send(message);
+    }
+
+    /** The next answer in {@code answers}; throws {@link MissionLost} once the mission is gone. */
+    ObjectNode await(BlockingQueue<ObjectNode> answers) {
+        try {
+            while (true) {
+                ObjectNode answer = answers.poll(100, TimeUnit.MILLISECONDS);
+                if (answer != null) {
+                    return answer;
+                }
+                if (lost != null) {
+                    throw new MissionLost(lost);
+                }
+            }
+        } catch (InterruptedException interrupted) {
+            Thread.currentThread().interrupt();
+            throw new MissionLost("interrupted");
+        }
+    }
+
+    /** The mission is gone ({@code why}): steps waiting for it end, and no step starts. */
+    public void lose(String why) {
+        lost = why;
+        steps.shutdownNow();
+        calls.shutdownNow();
+    }
+
+    @Override
+    public void close() {
+        lose("the mission has ended");
+    }
+
+    private static ThreadFactory daemon(String name) {
+        return work -> {
+            Thread thread = new Thread(work, name);
+            thread.setDaemon(true);
+            return thread;
+        };
+    }
+
+    /** The mission is gone while a step waited for its answer: the step ends without one. */
+    static final class MissionLost extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        MissionLost(String why) {
+            super(why);
+        }
+    }
+}

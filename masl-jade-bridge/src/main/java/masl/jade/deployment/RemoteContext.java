@@ -1,0 +1,359 @@
+package masl.jade.deployment;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionStage;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.function.Function;
+import java.util.function.Supplier;
+import masl.runtime.AgentContext;
+import masl.runtime.AgentImplementation;
+import masl.runtime.AgentProgram;
+import masl.runtime.Arrival;
+import masl.runtime.DeployedPrograms;
+import masl.runtime.ESequence;
+import masl.runtime.EntryDefinition;
+import masl.runtime.Event;
+import masl.runtime.Label;
+import masl.runtime.RemotePrimitiveException;
+import masl.runtime.SharedDeclaration;
+import masl.runtime.SharedVariable;
+import masl.runtime.entry.Entry;
+
+/**
+ * The {@link AgentContext} of a deployed agent's program in its container. The program and the
+ * Java code it hands over (its primitives' calls, attribute accesses, update functions) run here;
+ * what the mission owns (blocks, barriers, waves, shared variables, events, permeability, the
+ * agent's place in the journal) is a request to the mission, answered by the mission's runtime on
+ * the thread running the agent's step there, so that the runtime's rules hold as in-process. Each
+ * request carries the program's resumption point and each answer brings back the one the runtime
+ * left (it redirects the program to reactions).
+ */
+final class RemoteContext implements AgentContext {
+
+    private static final JsonNodeFactory JSON = JsonNodeFactory.instance;
+
+    /** A future the program holds for a call the mission queued or launched. */
+    private record Mirror(CompletableFuture<Object> future, long call, Object defaultValue) {
+    }
+
+    private final int id;
+    private final AgentProgram program;
+    private final DeployedTeam team;
+    private final BlockingQueue<ObjectNode> answers = new LinkedBlockingQueue<>();
+    private final Map<Long, Mirror> mirrors = new ConcurrentHashMap<>();
+    private final Map<CompletionStage<?>, Long> callOf = new IdentityHashMap<>();
+
+    RemoteContext(int id, AgentProgram program, DeployedTeam team) {
+        this.id = id;
+        this.program = program;
+        this.team = team;
+    }
+
+    int id() {
+        return id;
+    }
+
+    AgentProgram program() {
+        return program;
+    }
+
+    /** An answer of the mission to this agent's request. */
+    void answered(ObjectNode answer) {
+        answers.add(answer);
+    }
+
+    /** Completes the futures of the calls the mission says are over ({@code done} of its message). */
+    void completeDone(JsonNode done) {
+        if (done == null) {
+            return;
+        }
+        for (JsonNode call : done) {
+            Mirror mirror = mirrors.remove(call.get("call").longValue());
+            if (mirror != null) {
+                synchronized (callOf) {
+                    callOf.remove(mirror.future());
+                }
+                mirror.future().complete(team.callbacks().result(mirror.call(), call.get("ran").booleanValue(),
+                        mirror.defaultValue()));
+            }
+        }
+    }
+
+    private JsonNode call(String op, ObjectNode request) {
+        request.put("kind", "call").put("agent", id).put("op", op).put("pc", program.pc());
+        team.send(request);
+        ObjectNode answer = team.await(answers);
+        completeDone(answer.get("done"));
+        DeployedPrograms.jump(program, answer.get("pc").intValue());
+        return answer.get("value");
+    }
+
+    private JsonNode call(String op) {
+        return call(op, JSON.objectNode());
+    }
+
+    private boolean bool(String op, ObjectNode request) {
+        return call(op, request).booleanValue();
+    }
+
+    private ObjectNode block(EntryDefinition block) {
+        return JSON.objectNode().put("block", Blocks.name(block));
+    }
+
+    private static int proxyId(AgentImplementation agent) {
+        return agent == null ? -1 : AgentImplementation.proxyIdOf(agent);
+    }
+
+    Object sharedCall(String op, SharedDeclaration<?> declaration, Function<Object, Object> function, Object value) {
+        ObjectNode request = JSON.objectNode().put("shared", Blocks.name(declaration));
+        if (function != null) {
+            request.put("call", team.callbacks().function(function));
+        }
+        if ("set".equals(op)) {
+            request.set("value", Values.toJson(value));
+        }
+        JsonNode answer = call("shared-" + op, request);
+        return answer == null || answer.isNull() ? null : Values.fromJson(answer, team.agents());
+    }
+
+    Object entryCall(EntryDefinition block, String op, int n) {
+        JsonNode answer = call("entry-" + op, block(block).put("n", n));
+        return answer == null || answer.isNull() ? null : answer.isTextual() ? answer.textValue() : answer.intValue();
+    }
+
+    List<AgentImplementation> entryAgents(EntryDefinition block, String op) {
+        List<AgentImplementation> agents = new ArrayList<>();
+        for (JsonNode proxyId : call("entry-" + op, block(block))) {
+            agents.add(team.agents().get(proxyId.intValue()));
+        }
+        return agents;
+    }
+
+    @Override
+    public int proxyId() {
+        return id;
+    }
+
+    @Override
+    public boolean stepBoundary() {
+        return bool("stepBoundary", JSON.objectNode());
+    }
+
+    @Override
+    public boolean loopIteration() {
+        return bool("loopIteration", JSON.objectNode());
+    }
+
+    @Override
+    public boolean busyWaitIteration() {
+        return bool("busyWaitIteration", JSON.objectNode());
+    }
+
+    @Override
+    public Arrival enter(EntryDefinition block, boolean test) {
+        return Arrival.valueOf(call("enter", block(block).put("test", test)).textValue());
+    }
+
+    @Override
+    public boolean leave(EntryDefinition block) {
+        return bool("leave", block(block));
+    }
+
+    @Override
+    public boolean endOfChild(EntryDefinition block) {
+        return bool("endOfChild", block(block));
+    }
+
+    @Override
+    public boolean endOfSequence(ESequence sequence) {
+        return bool("endOfSequence", JSON.objectNode().put("sequence", Blocks.name(sequence)));
+    }
+
+    @Override
+    public void breakOut(EntryDefinition outermost) {
+        call("breakOut", block(outermost));
+    }
+
+    @Override
+    public void reelect(EntryDefinition block) {
+        call("reelect", block(block));
+    }
+
+    @Override
+    public void restart(EntryDefinition block) {
+        call("restart", block(block));
+    }
+
+    @Override
+    public <T> SharedVariable<T> shared(SharedDeclaration<T> declaration) {
+        return new RemoteShared<>(declaration, this);
+    }
+
+    @Override
+    public Entry entry(EntryDefinition block) {
+        return new RemoteEntry(block, this);
+    }
+
+    @Override
+    public boolean sleep(long ms) {
+        return bool("sleep", JSON.objectNode().put("ms", ms));
+    }
+
+    @Override
+    public boolean await(CompletionStage<?> result) {
+        Long call;
+        synchronized (callOf) {
+            call = callOf.get(result);
+        }
+        if (call == null) {
+            if (result.toCompletableFuture().isDone()) {
+                return true;
+            }
+            throw new UnsupportedOperationException("a deployed agent awaits only the calls it made");
+        }
+        return bool("await", JSON.objectNode().put("call", call));
+    }
+
+    @Override
+    public void emit(Event event) {
+        emit(event, "");
+    }
+
+    @Override
+    public void emit(Event event, String message) {
+        call("emit", JSON.objectNode().put("event", Blocks.name(event)).put("message", message));
+    }
+
+    @Override
+    public void uncaughtException(Throwable thrown) {
+        call("uncaughtException", JSON.objectNode().put("class", RemotePrimitiveException.classNameOf(thrown))
+                .put("message", String.valueOf(thrown.getMessage())));
+    }
+
+    @Override
+    public String messageOf(Event event) {
+        return call("messageOf", JSON.objectNode().put("event", Blocks.name(event))).textValue();
+    }
+
+    @Override
+    public boolean endReaction() {
+        return bool("endReaction", JSON.objectNode());
+    }
+
+    @Override
+    public boolean resumeInterrupted() {
+        return bool("resumeInterrupted", JSON.objectNode());
+    }
+
+    @Override
+    public void clearEvents() {
+        call("clearEvents");
+    }
+
+    @Override
+    public void finish() {
+        call("finish");
+    }
+
+    @Override
+    public <T> CompletableFuture<T> invoke(AgentImplementation callee, String primitive, T defaultValue,
+            Callable<T> call) {
+        return queued("invoke", callee, primitive, defaultValue, call, JSON.objectNode());
+    }
+
+    @SuppressWarnings("unchecked")
+    private <T> CompletableFuture<T> queued(String op, AgentImplementation callee, String primitive, T defaultValue,
+            Callable<T> call, ObjectNode request) {
+        long number = team.callbacks().call(call);
+        CompletableFuture<Object> future = new CompletableFuture<>();
+        mirrors.put(number, new Mirror(future, number, defaultValue));
+        synchronized (callOf) {
+            callOf.put(future, number);
+        }
+        call(op, request.put("callee", proxyId(callee)).put("primitive", primitive).put("call", number));
+        return (CompletableFuture<T>) future;
+    }
+
+    @Override
+    @SuppressWarnings("unchecked")
+    public <T> T invokeSelf(String primitive, T defaultValue, Callable<T> call) {
+        long number = team.callbacks().call(call);
+        boolean ran = bool("invokeSelf", JSON.objectNode().put("primitive", primitive).put("call", number));
+        return (T) team.callbacks().result(number, ran, defaultValue);
+    }
+
+    @Override
+    @SuppressWarnings("unchecked")
+    public <T> T readAttribute(AgentImplementation owner, String attribute, T defaultValue, Supplier<T> read) {
+        long number = team.callbacks().call(read::get);
+        boolean ran = bool("readAttribute",
+                JSON.objectNode().put("owner", proxyId(owner)).put("attribute", attribute).put("call", number));
+        return (T) team.callbacks().result(number, ran, defaultValue);
+    }
+
+    @Override
+    public boolean writeAttribute(AgentImplementation owner, String attribute, Runnable write) {
+        long number = team.callbacks().call(() -> {
+            write.run();
+            return null;
+        });
+        boolean ran = bool("writeAttribute",
+                JSON.objectNode().put("owner", proxyId(owner)).put("attribute", attribute).put("call", number));
+        team.callbacks().result(number, ran, null);
+        return ran;
+    }
+
+    @Override
+    public void setAcceptState(String name) {
+        call("setAcceptState", JSON.objectNode().put("state", name));
+    }
+
+    @Override
+    public String getAcceptState() {
+        return call("getAcceptState", JSON.objectNode().put("agent", id)).textValue();
+    }
+
+    @Override
+    public String getAcceptState(AgentImplementation agent) {
+        return call("getAcceptState", JSON.objectNode().put("agent", proxyId(agent))).textValue();
+    }
+
+    @Override
+    public boolean waitFor(String state) {
+        return bool("waitFor", JSON.objectNode().put("state", state).put("ms", -1));
+    }
+
+    @Override
+    public boolean waitFor(String state, long ms) {
+        return bool("waitFor", JSON.objectNode().put("state", state).put("ms", ms));
+    }
+
+    @Override
+    public <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue,
+            Callable<T> call) {
+        return queued("launch", callee, primitive, defaultValue, call, JSON.objectNode());
+    }
+
+    @Override
+    public <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue,
+            Callable<T> call, String countermeasure, Callable<?> countermeasureCall) {
+        long armed = team.callbacks().call(countermeasureCall);
+        return queued("launch", callee, primitive, defaultValue, call,
+                JSON.objectNode().put("countermeasure", countermeasure).put("countermeasureCall", armed));
+    }
+
+    @Override
+    public Label newLabel() {
+        throw new UnsupportedOperationException("labels are not yet available to deployed agents");
+    }
+}

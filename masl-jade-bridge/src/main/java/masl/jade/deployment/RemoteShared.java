@@ -1,0 +1,53 @@
+package masl.jade.deployment;
+
+import java.util.function.Supplier;
+import java.util.function.UnaryOperator;
+import masl.runtime.SharedDeclaration;
+import masl.runtime.SharedVariable;
+import masl.runtime.scheduling.ChangeEpoch;
+
+/**
+ * A shared variable as a deployed agent's program sees it: every read and write is a request to the
+ * mission, which owns the wave's copy; an update's function runs here, asked by the mission while it
+ * holds the variable's lock, so that no other write comes in between, as in-process.
+ */
+final class RemoteShared<T> extends SharedVariable<T> {
+
+    private final SharedDeclaration<T> declaration;
+    private final RemoteContext context;
+
+    RemoteShared(SharedDeclaration<T> declaration, RemoteContext context) {
+        super(declaration, new ChangeEpoch());
+        this.declaration = declaration;
+        this.context = context;
+    }
+
+    @Override
+    @SuppressWarnings("unchecked")
+    public void initialise(Supplier<? extends T> initialiser) {
+        context.sharedCall("initialise", declaration, ignored -> initialiser.get(), null);
+    }
+
+    @Override
+    @SuppressWarnings("unchecked")
+    public T get() {
+        return (T) context.sharedCall("get", declaration, null, null);
+    }
+
+    @Override
+    public void set(T newValue) {
+        context.sharedCall("set", declaration, null, newValue);
+    }
+
+    @Override
+    @SuppressWarnings("unchecked")
+    public T update(UnaryOperator<T> function) {
+        return (T) context.sharedCall("update", declaration, value -> function.apply((T) value), null);
+    }
+
+    @Override
+    @SuppressWarnings("unchecked")
+    public T getAndUpdate(UnaryOperator<T> function) {
+        return (T) context.sharedCall("getAndUpdate", declaration, value -> function.apply((T) value), null);
+    }
+}

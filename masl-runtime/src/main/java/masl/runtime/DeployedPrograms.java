@@ -1,0 +1,69 @@
+package masl.runtime;
+
+import java.util.List;
+
+/**
+ * What the JADE bridge needs of generated programs to run an agent's program in another JVM than its
+ * mission (a deployed agent): the programs made outside a mission, and the program's own methods,
+ * called from the bridge's package. The container runs the real program against a context of its
+ * own; the mission runs a stand-in whose steps are the container's, and which answers for the program
+ * (its reactions' code, its MASL source) through the same generated class.
+ */
+public final class DeployedPrograms {
+
+    /** A program's top-level block (null if it has none) and its agents' programs in proxy id order. */
+    public record Made(EntryDefinition main, List<AgentProgram> programs) {
+    }
+
+    private DeployedPrograms() {
+    }
+
+    /**
+     * The programs of every agent {@code program} declares, each made for the implementation
+     * {@code implementations} gives (which the caller binds to its services), and its top-level block.
+     */
+    public static Made outsideAMission(MissionProgram program, MissionProgram.ImplementationFactory implementations) {
+        Mission.Builder builder = Mission.builder();
+        program.configure(builder, implementations);
+        return builder.madeOutsideAMission();
+    }
+
+    /** The event {@code name} that {@code block} declares, or the system event of that name if block is null; else null. */
+    public static Event event(EntryDefinition block, String name) {
+        if (block != null) {
+            return block.event(name).orElse(null);
+        }
+        for (Event system : List.of(Event.TIMEOUT, Event.UNCAUGHT_EXCEPTION, Event.FORBIDDEN_ACCESS)) {
+            if (system.name().equals(name)) {
+                return system;
+            }
+        }
+        return null;
+    }
+
+    /** Runs {@code program} from {@code pc} until it must wait or has finished, as a mission would. */
+    public static void resume(AgentProgram program, int pc, AgentContext ctx) {
+        program.jump(pc);
+        program.resume(ctx);
+    }
+
+    /** Sets {@code program}'s resumption point: the mission's runtime moved it (a reaction, a resume). */
+    public static void jump(AgentProgram program, int pc) {
+        program.jump(pc);
+    }
+
+    /** Where {@code program}'s code for {@code reaction} starts. */
+    public static int reactionPc(AgentProgram program, Reaction reaction) {
+        return program.reactionPc(reaction);
+    }
+
+    /** The MASL source of resumption point {@code pc} of {@code program}, or null. */
+    public static String sourceAt(AgentProgram program, int pc) {
+        return program.sourceAt(pc);
+    }
+
+    /** The MASL source of the statement whose call ends the case {@code pc} of {@code program}, or null. */
+    public static String sourceOfCallIn(AgentProgram program, int pc) {
+        return program.sourceOfCallIn(pc);
+    }
+}
