@@ -45,6 +45,8 @@ final class Distribution {
 
     private final Map<String, String> containerOfAgent;
     private final Duration agentsTimeout;
+    /** How long a placement waits for each container to join and prove it holds the secret. */
+    private final Duration containersWithin;
     /** Told one line for each message refused and each claimant of a container that did not prove itself. */
     private final Consumer<String> problems;
     private final CoordinatorAgent coordinator;
@@ -78,9 +80,10 @@ final class Distribution {
      * @throws JadeException if it cannot start (another mission spanning containers runs on the platform)
      */
     Distribution(JadePlatform platform, Map<String, String> containerOfAgent, MissionSecret secret,
-            Duration agentsTimeout, Consumer<String> problems) throws InterruptedException {
+            Duration agentsTimeout, Duration containersWithin, Consumer<String> problems) throws InterruptedException {
         this.containerOfAgent = Map.copyOf(containerOfAgent);
         this.agentsTimeout = agentsTimeout;
+        this.containersWithin = containersWithin;
         CountDownLatch ready = new CountDownLatch(1);
         this.problems = problems;
         coordinator = new CoordinatorAgent(secret, problems, ready, this::serveRelayed, this::containerRemoved,
@@ -120,8 +123,8 @@ final class Distribution {
 
     /**
      * Once the mission is built: gives the bodies' stand-ins its journal, lets the coordinator serve
-     * the requests bodies relay, and has each container create its bodies (waiting, up to the agents'
-     * timeout, for each container to join the platform).
+     * the requests bodies relay, and has each container create its bodies (waiting, up to
+     * {@code containersWithin}, for each container to join the platform and prove itself).
      *
      * @throws JadeException if a container does not join in time or cannot host its bodies
      */
@@ -133,8 +136,8 @@ final class Distribution {
         remotes.forEach((id, remote) -> byContainer.computeIfAbsent(remote.container(), c -> new ArrayList<>())
                 .add(new PlacementContent.Body(remote.name(), id, remote.className())));
         for (Map.Entry<String, List<PlacementContent.Body>> placed : byContainer.entrySet()) {
-            ContainerClaims.Proven proven = new ContainerClaims(coordinator, placed.getKey(), agentsTimeout, problems)
-                    .place(PlacementContent.write(placed.getValue()));
+            ContainerClaims.Proven proven = new ContainerClaims(coordinator, placed.getKey(), containersWithin,
+                    problems).place(PlacementContent.write(placed.getValue()));
             containers.put(placed.getKey(), proven.container());
             ACLMessage answer = proven.answer();
             if (answer.getPerformative() != ACLMessage.INFORM) {

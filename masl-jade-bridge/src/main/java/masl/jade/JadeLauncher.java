@@ -52,6 +52,7 @@ public final class JadeLauncher {
     private Consumer<Mission> whenReady = mission -> { };
     private Map<String, String> placement = Map.of();
     private MissionSecret secret;
+    private Duration containersWithin = AGENTS_TIMEOUT;
     private Duration callTimeout;
     private Consumer<String> problems = line -> System.err.println("masl: " + line);
 
@@ -132,6 +133,18 @@ public final class JadeLauncher {
     }
 
     /**
+     * How long the mission waits for each container of {@link #place} to join the platform and prove
+     * it holds the mission's secret before it fails without starting; 30 s by default.
+     */
+    public JadeLauncher containersWithin(Duration limit) {
+        if (limit.isNegative() || limit.isZero()) {
+            throw new IllegalArgumentException("the wait for containers must be positive: " + limit);
+        }
+        this.containersWithin = limit;
+        return this;
+    }
+
+    /**
      * Called on the launching thread once every JADE agent of a mission exists and is registered with
      * the DF, with the mission about to run: from then on FIPA agents can find and invoke them, and
      * the caller may {@link Mission#stop()} it (on Ctrl-C, say).
@@ -178,7 +191,7 @@ public final class JadeLauncher {
                     + " call secret(…) first");
         }
         Distribution distribution = placement.isEmpty() ? null
-                : new Distribution(platform, placement, secret, AGENTS_TIMEOUT, problems);
+                : new Distribution(platform, placement, secret, AGENTS_TIMEOUT, containersWithin, problems);
         List<AgentController> controllers = new ArrayList<>();
         List<MaslJadeAgent> locals = new ArrayList<>();
         Duration limit = callTimeout == null ? OutsideCalls.DEFAULT_LIMIT : callTimeout;

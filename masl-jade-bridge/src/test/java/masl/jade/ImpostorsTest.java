@@ -38,7 +38,8 @@ import org.junit.jupiter.api.extension.RegisterExtension;
  * name, answering the coordinator's requests with a result and journal lines, or a failure), and as
  * a body relaying a request. Each forged message is refused and said in one line by the coordinator,
  * and changes nothing: the real container is placed, no forged result or journal line is taken.
- * About 11 s each (containers of this JVM, each living at least 3 s).
+ * About 3 s each (containers of this JVM, each living at least 3 s; each closed once its mission ended, so
+ * that the coordinator does not wait for it to leave).
  */
 @Timeout(180)
 @Tag("slow")
@@ -82,6 +83,7 @@ class ImpostorsTest {
                     + " masl-place from " + impostor.getName()) && refused.endsWith(": not signed with the mission's"
                     + " secret"), refused);
             assertTrue(container.awaitMissionEnd(Duration.ofSeconds(60)), "the coordinator's own end");
+            container.close();
             MissionOutcome outcome = mission.get(60, TimeUnit.SECONDS);
             outcome.requireCompleted();
             assertEquals(List.of(5), let.results, "the real body's result");
@@ -132,6 +134,8 @@ class ImpostorsTest {
                     + " masl-body from " + body.getName()) && refused.endsWith(": not signed with the mission's"
                     + " secret"), refused);
             running.get(60, TimeUnit.SECONDS).stop("the test");
+            assertTrue(container.awaitMissionEnd(TIMEOUT), "the coordinator's end of the stopped mission");
+            container.close();
             MissionOutcome outcome = mission.get(60, TimeUnit.SECONDS);
             assertEquals(MissionOutcome.Status.STOPPED, outcome.status(), outcome.toString());
             assertFalse(let.results.contains(4242), let.results.toString());
@@ -170,6 +174,7 @@ class ImpostorsTest {
                     && refused.endsWith(": not signed with the mission's secret"), refused);
             gate.result().complete(7);
             assertTrue(container.awaitMissionEnd(Duration.ofSeconds(30)), "the coordinator's own end");
+            container.close();
             MissionOutcome outcome = mission.get(60, TimeUnit.SECONDS);
             outcome.requireCompleted();
             assertEquals(List.of(7), results);
