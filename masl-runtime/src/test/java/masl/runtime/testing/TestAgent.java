@@ -56,4 +56,26 @@ public class TestAgent extends AgentImplementation {
         battery -= amount;
         return battery;
     }
+
+    /** An asynchronous primitive (labels, §10): logs that it measures and gives 10 times the proxy id. */
+    public int measure() {
+        logln(getProxyID() + " measures");
+        return 10 * getProxyID();
+    }
+
+    /** An asynchronous primitive with the countermeasure {@link #stopCalibrate} (§9): logs that it calibrates. */
+    public int calibrate() {
+        logln(getProxyID() + " calibrates");
+        return 1;
+    }
+
+    /** {@link #calibrate}'s countermeasure: logs that it stops. */
+    public void stopCalibrate() {
+        logln(getProxyID() + " stops");
+    }
+
+    /** A hook for a test's agent (opening a latch, taking a time): does nothing here. */
+    public void signal(int value) {
+        // Nothing: a test that needs the moment overrides it.
+    }
 }
