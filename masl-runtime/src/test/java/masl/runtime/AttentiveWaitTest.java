@@ -4,18 +4,16 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLongArray;
-import java.util.concurrent.atomic.AtomicReferenceArray;
-import masl.runtime.descriptor.AgentType;
 import masl.runtime.scheduling.Scheduler;
-import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
-import masl.runtime.testing.TestTypes;
+import masl.runtime.trace.MemoryTrace;
 import masl.runtime.trace.Trace;
+import masl.runtime.trace.TraceEvent;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -24,173 +22,83 @@ import org.junit.jupiter.params.provider.EnumSource;
 @Timeout(120)
 class AttentiveWaitTest {
 
-    static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-    static final SharedDeclaration<Integer> ASKED = MAIN.declareShared("asked", 0);
-    static final EntryDefinition GROUP = MAIN.child("group", Mode.ASYNCHRONOUS);
-
     /**
      * The server (agent 0) waits in state {@code onlyLog}, which lets only its group invoke
-     * {@code log}. Agent 2, outside the group, asks for {@code getProxyID} first; then agent 1, in the
-     * group, invokes {@code log}.
-     * <pre>
-     * asynchronous entry main (true) {
-     *   shared int asked = 0;
-     *   asynchronous entry group (me &lt;= 1) {
-     *     if (me == 0) { wait("onlyLog", 2000); .logln("after wait"); }
-     *     else { while (asked == 0) {} a0.log("log from 1\n"); }
-     *   }
-     *   if (me == 2) { id = a0.getProxyID(); asked = 1; .logln("got " + id); }
-     * }
-     * </pre>
+     * {@code log}. Agent 2, outside the group, launches the server's {@code measure} first; then
+     * agent 1, in the group, invokes {@code log}.
      */
-    static final class OnlyLog extends CompactProgram {
-        private final AtomicReferenceArray<TestAgent> population;
-        private CompletableFuture<Integer> asking;
-        private CompletableFuture<Object> logging;
-
-        OnlyLog(TestAgent self, AtomicReferenceArray<TestAgent> population) {
-            super(self);
-            this.population = population;
-            population.set(self.getProxyID(), self);
-        }
-
-        @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            int me = self.getProxyID();
-            TestAgent server = population.get(0);
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 13)) return; continue;
-                    case 1: if (!arrive(ctx, GROUP, me <= 1, 2, 8)) return; continue;
-                    case 2:
-                        if (me != 0) {
-                            pc = 5;
-                            continue;
-                        }
-                        pc = 3;
-                        if (!ctx.waitFor("onlyLog", 2000)) return;
-                    case 3: if (!step(ctx, 4)) return; continue;
-                    case 4: self.logln("after wait"); if (!step(ctx, 7)) return; continue;
-                    case 5: if (!busyWait(ctx, ctx.shared(ASKED).get() == 0, 6)) return; continue;
-                    case 6:
-                        logging = ctx.invoke(server, "log", null, () -> {
-                            server.log("log from 1\n");
-                            return null;
-                        });
-                        pc = 16;
-                        if (!ctx.await(logging)) return;
-                    case 16: if (!step(ctx, 7)) return; continue;
-                    case 7: if (!leave(ctx, GROUP, 8)) return; continue;
-                    case 8: if (!endOf(ctx, GROUP.sequence(), 9)) return; continue;
-                    case 9:
-                        if (me != 2) {
-                            pc = 12;
-                            continue;
-                        }
-                        asking = ctx.invoke(server, "getProxyID", -1, () -> {
-                            server.log("proxy served\n");
-                            return server.getProxyID();
-                        });
-                        ctx.shared(ASKED).set(1);
-                        pc = 10;
-                        if (!ctx.await(asking)) return;
-                    case 10: self.logln("got " + asking.join()); if (!step(ctx, 12)) return; continue;
-                    case 12: if (!leave(ctx, MAIN, 13)) return; continue;
-                    case 13: if (!endOf(ctx, MAIN.sequence(), 14)) return; continue;
-                    case 14: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
+    private static final MaslProgram ONLY_LOG = MaslProgram.of("onlylog.masl", 3, """
+            asynchronous entry main (true) {
+              shared int asked = 0;
+              local int id = 0;
+              asynchronous entry group (.getProxyID() <= 1) {
+                if (.getProxyID() == 0) { wait("onlyLog", 2000); .logln("after wait"); }
+                else { while (asked == 0) {} a0.log("log from 1\\n"); }
+              }
+              if (.getProxyID() == 2) {
+                id = a0.measure();
+                asked = 1;
+                .logln("got " + id);
+              }
             }
-        }
-    }
+            """);
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void aWaitServesTheAllowedInvocationAndLeavesTheOthersQueuedUntilAfter(Driver driver) {
-        AgentType type = TestTypes.testAgent();
         for (int run = 0; run < Missions.REPETITIONS; run++) {
-            AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(3);
-            String journal = Missions.run(driver.newScheduler(), MAIN, 3, type,
-                    self -> new OnlyLog(self, population), Trace.NONE).journal();
-            assertTrue(journal.startsWith("log from 1\nproxy served\n"), journal);
-            assertEquals(List.of("after wait", "got 0", "log from 1", "proxy served"),
-                    journal.lines().sorted().toList(), journal);
+            MemoryTrace trace = new MemoryTrace();
+            String journal = ONLY_LOG.run(driver.newScheduler(), trace).journal();
+            assertTrue(journal.startsWith("log from 1\n"), journal);
+            assertEquals(List.of("0 measures", "after wait", "got 0", "log from 1"), journal.lines().sorted().toList(), journal);
+            assertEquals(List.of("log by 1", "measure by 2"), trace.events(TraceEvent.InvocationServed.class).stream()
+                    .map(served -> served.member() + " by " + served.requester()).toList(), "served in this order");
         }
     }
 
     /**
-     * Agent 0 waits in state {@code nothing} for 300 ms, reading the mission clock before and after;
-     * agent 1 invokes its {@code getProxyID} meanwhile, which runs only after the wait.
+     * Agent 0 waits in state {@code nothing} for 300 ms, taking the mission clock before and after
+     * ({@code signal(0)}, {@code signal(1)}); agent 1 invokes its {@code signal(2)} meanwhile, which
+     * runs only after the wait. Nothing stands between agent 0's entry and its wait that takes time,
+     * so no step boundary serves the call before the wait begins.
      */
-    static final class Nothing extends CompactProgram {
-        private final AtomicReferenceArray<TestAgent> population;
+    private static final MaslProgram NOTHING = MaslProgram.of("nothing.masl", 2, """
+            asynchronous entry main (true) {
+              if (.getProxyID() == 0) { .signal(0); wait("nothing", 300); .signal(1); }
+              else { a0.signal(2); .logln("answered"); }
+            }
+            """);
+
+    /** Takes the time of the mission's clock at each {@code signal(k)} as the {@code k}-th time. */
+    private static final class Clocked extends TestAgent {
         private final Scheduler clock;
         private final AtomicLongArray times;
-        private CompletableFuture<Integer> asking;
 
-        Nothing(TestAgent self, AtomicReferenceArray<TestAgent> population, Scheduler clock, AtomicLongArray times) {
-            super(self);
-            this.population = population;
+        Clocked(Scheduler clock, AtomicLongArray times) {
             this.clock = clock;
             this.times = times;
-            population.set(self.getProxyID(), self);
         }
 
         @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            TestAgent server = population.get(0);
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 6)) return; continue;
-                    case 1:
-                        if (self.getProxyID() != 0) {
-                            pc = 3;
-                            continue;
-                        }
-                        times.set(0, clock.nanoTime());
-                        pc = 2;
-                        if (!ctx.waitFor("nothing", 300)) return;
-                    case 2:
-                        times.set(1, clock.nanoTime());
-                        if (!step(ctx, 5)) return;
-                        continue;
-                    case 3:
-                        asking = ctx.invoke(server, "getProxyID", -1, () -> {
-                            times.set(2, clock.nanoTime());
-                            return server.getProxyID();
-                        });
-                        pc = 4;
-                        if (!ctx.await(asking)) return;
-                    case 4:
-                        times.set(3, asking.join());
-                        if (!step(ctx, 5)) return;
-                        continue;
-                    case 5: if (!leave(ctx, MAIN, 6)) return; continue;
-                    case 6: if (!endOf(ctx, MAIN.sequence(), 7)) return; continue;
-                    case 7: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
-            }
+        public int signal(int moment) {
+            times.set(moment, clock.nanoTime());
+            return moment;
         }
     }
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void aWaitThatNothingSatisfiesEndsByItsTimeout(Driver driver) {
-        AgentType type = TestTypes.testAgent();
         for (int run = 0; run < 3; run++) {
-            AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(2);
-            AtomicLongArray times = new AtomicLongArray(4);
-            times.set(3, -1);
+            AtomicLongArray times = new AtomicLongArray(3);
             Scheduler scheduler = driver.newScheduler();
-            Missions.run(scheduler, MAIN, 2, type, self -> new Nothing(self, population, scheduler, times), Trace.NONE);
+            String journal = NOTHING.run(scheduler, Trace.NONE, () -> new Clocked(scheduler, times)).journal();
             long waited = times.get(1) - times.get(0);
             assertTrue(waited >= TimeUnit.MILLISECONDS.toNanos(300), "waited " + waited + " ns");
             assertTrue(waited < TimeUnit.SECONDS.toNanos(15), "waited " + waited + " ns");
-            assertTrue(times.get(2) >= times.get(1), "served during the wait");
-            assertEquals(0, times.get(3), "the queued call was answered after the wait");
+            long served = times.get(2) - times.get(0);
+            assertTrue(served >= TimeUnit.MILLISECONDS.toNanos(300), "served " + served + " ns after the wait began");
+            assertEquals("answered\n", journal, "the queued call was answered after the wait");
         }
     }
 }

@@ -60,8 +60,9 @@ class LabelTest {
         }
 
         @Override
-        public void signal(int gate) {
+        public int signal(int gate) {
             gates.get(gate).countDown();
+            return gate;
         }
     }
 

@@ -98,8 +98,9 @@ class SeededPrimitivesTest {
         }
 
         @Override
-        public void signal(int value) {
+        public int signal(int value) {
             gate.countDown();
+            return value;
         }
     }
 

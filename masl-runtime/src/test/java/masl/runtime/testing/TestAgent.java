@@ -74,8 +74,11 @@ public class TestAgent extends AgentImplementation {
         logln(getProxyID() + " stops");
     }
 
-    /** A hook for a test's agent (opening a latch, taking a time): does nothing here. */
-    public void signal(int value) {
-        // Nothing: a test that needs the moment overrides it.
+    /**
+     * A hook for a test's agent (opening a latch, taking a time); gives {@code value} back. An
+     * accessor, of zero duration (§5): no step boundary stands between it and the next statement.
+     */
+    public int signal(int value) {
+        return value;
     }
 }
