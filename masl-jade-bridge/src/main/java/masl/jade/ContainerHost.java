@@ -10,6 +10,7 @@ import jade.wrapper.AgentController;
 import jade.wrapper.StaleProxyException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
@@ -21,6 +22,7 @@ import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
 import masl.jade.acl.JsonContent;
 import masl.jade.acl.PlacementContent;
+import masl.jade.deployment.DeployedTeam;
 import masl.jade.acl.Reply;
 import masl.runtime.AgentClasses;
 import masl.runtime.AgentImplementation;
@@ -73,6 +75,10 @@ final class ContainerHost extends Agent {
     private transient volatile boolean bodiesReady;
     private transient volatile String lost;
     private transient volatile String unhosted;
+    /** Translates the programs of agents deployed here; null if this container runs none. */
+    private final transient ProgramTranslator translator;
+    /** The deployed agents' programs, once a placement deployed some here. */
+    private transient volatile DeployedTeam team;
 
     /**
      * @param secretSource the mission's secret, asked for until a control message bears its signature
@@ -80,7 +86,9 @@ final class ContainerHost extends Agent {
      *                     the mission's secret), on this agent's thread
      */
     ContainerHost(String containerName, Function<String, AgentType> types, ClassLoader classes,
-            Consumer<ACLMessage> events, MissionSecret.Source secretSource, Consumer<String> refusals) {
+            Consumer<ACLMessage> events, MissionSecret.Source secretSource, Consumer<String> refusals,
+            ProgramTranslator translator) {
+        this.translator = translator;
         this.containerName = containerName;
         this.types = types;
         this.classes = classes;
@@ -134,6 +142,7 @@ final class ContainerHost extends Agent {
             lost = "the platform is gone (its main container shut down)";
             endMission();
         }
+        stopTeam(lost == null ? "the container closed" : lost);
         deleteBodies();
         try {
             DFService.deregister(this);
@@ -185,6 +194,7 @@ final class ContainerHost extends Agent {
             if (ended.getCount() > 0) {
                 lost = placed ? "the mission's coordinator is gone (its JVM died or it left the platform)"
                         : "the platform's main container is gone";
+                stopTeam(lost);
                 deleteBodies();
                 endMission();
             }
@@ -205,7 +215,8 @@ final class ContainerHost extends Agent {
         String conversation = message.getConversationId();
         return message.getPerformative() == ACLMessage.REQUEST && (CoordinatorAgent.PLACE.equals(conversation)
                 || CoordinatorAgent.END.equals(conversation) || ALIVE.equals(conversation))
-                || message.getPerformative() == ACLMessage.INFORM && CoordinatorAgent.EVENT.equals(conversation);
+                || message.getPerformative() == ACLMessage.INFORM && (CoordinatorAgent.EVENT.equals(conversation)
+                        || CoordinatorAgent.DEPLOYED.equals(conversation));
     }
 
     /** A control message that passed {@link #refusal}: placement (once), end, a check, or an event. */
@@ -222,7 +233,20 @@ final class ContainerHost extends Agent {
                     }
                 }
             }
+            case CoordinatorAgent.DEPLOYED -> {
+                DeployedTeam deployed = team;
+                if (deployed == null) {
+                    refuse(message, "no agent is deployed here", true);
+                } else {
+                    try {
+                        deployed.receive(DeployedTeams.read(message.getContent()));
+                    } catch (IllegalArgumentException malformed) {
+                        refuse(message, malformed.getMessage(), true);
+                    }
+                }
+            }
             case CoordinatorAgent.END -> {
+                stopTeam("the mission has ended");
                 deleteBodies();
                 send(channel.sign(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)), getAID()));
                 endMission();
@@ -266,6 +290,7 @@ final class ContainerHost extends Agent {
      */
     private ACLMessage place(ACLMessage request) {
         List<PlacementContent.Body> placed = List.of();
+        List<String> deployedNames = List.of();
         try {
             placed = PlacementContent.read(request.getContent());
             primitiveThreads = Executors.newCachedThreadPool(runnable -> {
@@ -290,14 +315,22 @@ final class ContainerHost extends Agent {
                     throw new JadeException("the DF refused to register " + agent.getLocalName());
                 }
             }
+            Optional<PlacementContent.Deploy> deploy = PlacementContent.readDeploy(request.getContent());
+            if (deploy.isPresent()) {
+                deployedNames = deploy.get().agents();
+                team = DeployedTeams.make(deploy.get(), translator, containerName, message -> send(channel.sign(
+                        Distribution.inform(coordinator, CoordinatorAgent.DEPLOYED, message.toString()), getAID())));
+                hosted.addAll(deployedNames);
+            }
             bodiesReady = true;
             settled.countDown();
             return AclInvocations.reply(request, Reply.Kind.RESULT, JsonContent.result(null));
         } catch (ContentException | StaleProxyException | ReflectiveOperationException | RuntimeException
-                | LinkageError problem) {
+                | LinkageError | ProgramTranslator.Refusal problem) {
             deleteBodies();
-            unhosted = Distribution.cannotHost(containerName, placed.stream().map(PlacementContent.Body::name).toList(),
-                    problem.getMessage());
+            List<String> names = new ArrayList<>(placed.stream().map(PlacementContent.Body::name).toList());
+            names.addAll(deployedNames);
+            unhosted = Distribution.cannotHost(containerName, names, problem.getMessage());
             return AclInvocations.reply(request, Reply.Kind.FAILED, JsonContent.failure(problem));
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -318,6 +351,14 @@ final class ContainerHost extends Agent {
         implementation.bind(journal);
         return new BodyAgent(implementation, journal, new PrimitiveTable(type, implementation.getClass()),
                 coordinator, MissionChannel.of(body.name(), channel.secret()), primitiveThreads, registered);
+    }
+
+    /** Stops the deployed agents' steps, if any run here; the line saying why is the caller's. */
+    private void stopTeam(String why) {
+        DeployedTeam deployed = team;
+        if (deployed != null) {
+            deployed.lose(why);
+        }
     }
 
     /** Deletes the bodies and waits, bounded, until their threads have ended; stops their primitives' threads. */

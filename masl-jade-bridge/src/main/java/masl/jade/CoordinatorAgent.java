@@ -41,6 +41,8 @@ final class CoordinatorAgent extends Agent {
     static final String RELAY = "masl-relay";
     /** A shared event emitted in the mission, sent to the containers hosting bodies. */
     static final String EVENT = "masl-event";
+    /** The coordination of a deployed agent's program with its mission, both ways ({@code INFORM}s). */
+    static final String DEPLOYED = "masl-deployed";
 
     private final transient PendingAnswers answers = new PendingAnswers(NAME);
     private final transient MissionChannel channel;
@@ -49,6 +51,7 @@ final class CoordinatorAgent extends Agent {
     private final transient Map<String, String> gone = new ConcurrentHashMap<>();
     private final transient CountDownLatch ready;
     private final transient Consumer<ACLMessage> relays;
+    private transient volatile Consumer<ACLMessage> deployed = message -> { };
     private final transient Consumer<String> containerRemoved;
     private final transient Consumer<String> unreachable;
     private transient volatile Thread thread;
@@ -132,6 +135,14 @@ final class CoordinatorAgent extends Agent {
         answers.failAll(reasonByReceiver, ContainerGoneException::new);
     }
 
+    /**
+     * Hands each signed {@value #DEPLOYED} message to {@code taker}, on this agent's thread, which
+     * checks that it comes from the container of the agent it names.
+     */
+    void deployedTo(Consumer<ACLMessage> taker) {
+        this.deployed = taker;
+    }
+
     /** Stops waiting for the answer to {@code request}: one that comes later answers nothing. Any thread. */
     void forget(ACLMessage request) {
         answers.fail(request.getReplyWith(), new CancellationException("no longer waited for"));
@@ -170,6 +181,13 @@ final class CoordinatorAgent extends Agent {
             } else {
                 refuse(message, refusal);
             }
+        } else if (message.getPerformative() == ACLMessage.INFORM && DEPLOYED.equals(message.getConversationId())) {
+            String refusal = channel.refusal(message);
+            if (refusal == null) {
+                deployed.accept(message);
+            } else {
+                refuse(message, refusal);
+            }
         } else if (message.getPerformative() != ACLMessage.NOT_UNDERSTOOD
                 && !ContainerHost.ALIVE.equals(message.getConversationId())) {
             send(AclInvocations.notUnderstood(message, new ContentException(
@@ -182,7 +200,7 @@ final class CoordinatorAgent extends Agent {
      * requests, a relay) that does not prove it: it changes nothing, is said in one line, and its
      * sender is told it was not understood.
      */
-    private void refuse(ACLMessage message, String reason) {
+    void refuse(ACLMessage message, String reason) {
         refusals.accept("refused " + ACLMessage.getPerformative(message.getPerformative()) + " "
                 + message.getConversationId() + " from "
                 + (message.getSender() == null ? "no sender" : message.getSender().getName()) + ": " + reason);

@@ -1,5 +1,6 @@
 package masl.jade;
 
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import jade.core.AID;
 import jade.lang.acl.ACLMessage;
 import jade.wrapper.AgentController;
@@ -22,6 +23,9 @@ import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
 import masl.jade.acl.JsonContent;
 import masl.jade.acl.PlacementContent;
+import masl.jade.deployment.ContainerLostException;
+import masl.jade.deployment.Coordination;
+import masl.jade.deployment.Wire;
 import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 import masl.runtime.descriptor.AgentType;
@@ -59,6 +63,8 @@ final class Distribution {
     private volatile Served served;
     /** The containers found gone, each said once. */
     private final Set<String> goneContainers = ConcurrentHashMap.newKeySet();
+    /** The containers running deployed agents found gone, each said once. */
+    private final Set<String> goneDeployments = ConcurrentHashMap.newKeySet();
     /** Set once the mission has ended: containers leaving then are expected. */
     private volatile boolean ending;
     /** Down once the container of that name is known gone: the AMS's removal event, or an undeliverable request. */
@@ -66,6 +72,17 @@ final class Distribution {
 
     private record Remote(String name, String container, String className, RemoteBody body) {
     }
+
+    /** The agents whose programs run in other containers, and what those make them from (MASL, not code). */
+    private record Deployed(Map<String, String> containerOfAgent, DeployedSource source, Coordination coordination,
+            List<String> names) {
+
+        List<String> agentsIn(String container) {
+            return names.stream().filter(name -> container.equals(containerOfAgent.get(name))).toList();
+        }
+    }
+
+    private volatile Deployed deployed = new Deployed(Map.of(), null, null, List.of());
 
     /** What a relayed request needs: the mission, each agent's name, primitives and implementation, the time limit. */
     private record Served(Mission mission, List<String> names, List<PrimitiveTable> tables,
@@ -122,6 +139,58 @@ final class Distribution {
     }
 
     /**
+     * Deploys the programs of the agents {@code containerOfAgent} names to those containers, which
+     * translate {@code source} themselves ({@link #place} sends it): their steps there, coordinated by
+     * {@code coordination} here. Call before {@link #place}.
+     */
+    void deploy(Map<String, String> containerOfAgent, DeployedSource source, Coordination coordination,
+            List<String> names) {
+        deployed = new Deployed(Map.copyOf(containerOfAgent), source, coordination, List.copyOf(names));
+        coordinator.deployedTo(this::takeDeployed);
+    }
+
+    /** The wire to the container running agent {@code proxyId}'s program: signed {@code INFORM}s. */
+    Wire wireTo(int proxyId) {
+        return message -> {
+            Deployed deployment = deployed;
+            AID container = containers.get(deployment.containerOfAgent().get(deployment.names().get(proxyId)));
+            coordinator.postSigned(inform(container, CoordinatorAgent.DEPLOYED, message.toString()));
+        };
+    }
+
+    /**
+     * A coordination message from a container (signed: {@link CoordinatorAgent} checked it): taken
+     * only from the container that proved itself the one of the agent it names; otherwise refused and
+     * said. On the coordinator's JADE thread; never blocks.
+     */
+    private void takeDeployed(ACLMessage message) {
+        Deployed deployment = deployed;
+        ObjectNode json;
+        try {
+            json = DeployedTeams.read(message.getContent());
+        } catch (IllegalArgumentException malformed) {
+            coordinator.refuse(message, malformed.getMessage());
+            return;
+        }
+        int id = json.path("agent").asInt(-1);
+        String agent = id >= 0 && id < deployment.names().size() ? deployment.names().get(id) : null;
+        String container = agent == null ? null : deployment.containerOfAgent().get(agent);
+        AID proven = container == null ? null : containers.get(container);
+        if (proven == null || !proven.equals(message.getSender())) {
+            coordinator.refuse(message, agent == null ? "it names no deployed agent"
+                    : "it does not come from the container of " + agent);
+            return;
+        }
+        deployment.coordination().receive(json);
+    }
+
+    static ACLMessage inform(AID receiver, String conversation, String content) {
+        ACLMessage inform = request(receiver, conversation, content);
+        inform.setPerformative(ACLMessage.INFORM);
+        return inform;
+    }
+
+    /**
      * Once the mission is built: gives the bodies' stand-ins its journal, lets the coordinator serve
      * the requests bodies relay, and has each container create its bodies (waiting, up to
      * {@code containersWithin}, for each container to join the platform and prove itself).
@@ -135,15 +204,22 @@ final class Distribution {
         Map<String, List<PlacementContent.Body>> byContainer = new LinkedHashMap<>();
         remotes.forEach((id, remote) -> byContainer.computeIfAbsent(remote.container(), c -> new ArrayList<>())
                 .add(new PlacementContent.Body(remote.name(), id, remote.className())));
+        Deployed deployment = deployed;
+        deployment.containerOfAgent().values().forEach(container -> byContainer.computeIfAbsent(container,
+                c -> new ArrayList<>()));
         for (Map.Entry<String, List<PlacementContent.Body>> placed : byContainer.entrySet()) {
+            List<String> programs = deployment.agentsIn(placed.getKey());
+            DeployedSource source = deployment.source();
+            PlacementContent.Deploy deploy = programs.isEmpty() ? null : new PlacementContent.Deploy(programs,
+                    source.programName(), source.programText(), source.descriptors(), source.key());
             ContainerClaims.Proven proven = new ContainerClaims(coordinator, placed.getKey(), containersWithin,
-                    problems).place(PlacementContent.write(placed.getValue()));
+                    problems).place(PlacementContent.write(placed.getValue(), deploy));
             containers.put(placed.getKey(), proven.container());
             ACLMessage answer = proven.answer();
             if (answer.getPerformative() != ACLMessage.INFORM) {
-                throw new JadeException(cannotHost(placed.getKey(),
-                        placed.getValue().stream().map(PlacementContent.Body::name).toList(),
-                        JsonContent.failureMessage(answer.getContent())));
+                List<String> hosted = new ArrayList<>(placed.getValue().stream().map(PlacementContent.Body::name).toList());
+                hosted.addAll(programs);
+                throw new JadeException(cannotHost(placed.getKey(), hosted, JsonContent.failureMessage(answer.getContent())));
             }
         }
     }
@@ -246,6 +322,7 @@ final class Distribution {
      */
     private void containerRemoved(String container) {
         departure(container).countDown();
+        loseDeployed(container);
         List<String> agents = remotes.values().stream().filter(remote -> remote.container().equals(container))
                 .map(Remote::name).toList();
         if (agents.isEmpty() || !goneContainers.add(container)) {
@@ -259,6 +336,24 @@ final class Distribution {
         agents.forEach(agent -> reasons.put(agent, "the container " + container + " of agent " + agent + " is gone"));
         reasons.put(ContainerHost.agentName(container), "the container " + container + " is gone");
         coordinator.abandon(reasons);
+    }
+
+    /**
+     * The agents deployed to {@code container}, now gone, fail (their steps, and the calls waiting
+     * for it, throw {@link ContainerLostException}); the others go on. Said once on standard error.
+     */
+    private void loseDeployed(String container) {
+        Deployed deployment = deployed;
+        List<String> agents = deployment.agentsIn(container);
+        if (agents.isEmpty() || !goneDeployments.add(container)) {
+            return;
+        }
+        if (!ending) {
+            System.err.println("masl: the container " + container + " is gone (its JVM ended or died): its deployed"
+                    + " agents " + String.join(", ", agents) + " fail");
+        }
+        deployment.coordination().lose(agents.stream().map(deployment.names()::indexOf).toList(),
+                "the container " + container + " is gone (its JVM ended or died)");
     }
 
     /**
@@ -289,6 +384,9 @@ final class Distribution {
     /** A request to {@code receiver} was undeliverable: if it is a body or a container agent, its container is gone. */
     private void unreachable(String receiver) {
         String container = containerOfAgent.get(receiver);
+        if (container == null) {
+            container = deployed.containerOfAgent().get(receiver);
+        }
         if (container == null) {
             container = containers.keySet().stream().filter(name -> ContainerHost.agentName(name).equals(receiver))
                     .findFirst().orElse(null);

@@ -10,8 +10,10 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
 import java.util.function.Function;
+import masl.jade.deployment.Coordination;
 import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
@@ -51,6 +53,8 @@ public final class JadeLauncher {
     private Trace trace = Trace.NONE;
     private Consumer<Mission> whenReady = mission -> { };
     private Map<String, String> placement = Map.of();
+    private Map<String, String> deployment = Map.of();
+    private DeployedSource deployedSource;
     private MissionSecret secret;
     private Duration containersWithin = AGENTS_TIMEOUT;
     private Duration callTimeout;
@@ -96,6 +100,20 @@ public final class JadeLauncher {
      */
     public JadeLauncher place(Map<String, String> containerOfAgent) {
         this.placement = Map.copyOf(containerOfAgent);
+        return this;
+    }
+
+    /**
+     * Deploys agents' programs to other containers, by name: {@code {"a": "c2"}} runs agent {@code a}'s
+     * program and implementation in container {@code c2} ({@link MaslContainer} with a
+     * {@link ProgramTranslator}), which translates {@code source} itself and refuses it if its
+     * translation's key is not {@code source}'s. The mission stays here: blocks, barriers, shared
+     * variables, events, permeability, the watchdog, the journal and the trace; the deployed program's
+     * requests for them are signed messages. An agent is deployed or placed, not both.
+     */
+    public JadeLauncher deploy(Map<String, String> containerOfAgent, DeployedSource source) {
+        this.deployment = Map.copyOf(containerOfAgent);
+        this.deployedSource = containerOfAgent.isEmpty() ? null : Objects.requireNonNull(source, "source");
         return this;
     }
 
@@ -186,11 +204,20 @@ public final class JadeLauncher {
                         + " that name (it declares " + String.join(", ", names) + ")");
             }
         }
-        if (!placement.isEmpty() && secret == null) {
-            throw new IllegalStateException("a mission placing bodies in other containers needs their secret:"
-                    + " call secret(…) first");
+        for (String deployed : deployment.keySet()) {
+            if (!names.contains(deployed)) {
+                throw new IllegalArgumentException("cannot deploy " + deployed + ": the program declares no agent of"
+                        + " that name (it declares " + String.join(", ", names) + ")");
+            }
+            if (placement.containsKey(deployed)) {
+                throw new IllegalArgumentException("cannot deploy " + deployed + ": it is placed (deploy or place it)");
+            }
         }
-        Distribution distribution = placement.isEmpty() ? null
+        if ((!placement.isEmpty() || !deployment.isEmpty()) && secret == null) {
+            throw new IllegalStateException("a mission placing bodies or deploying programs in other containers needs"
+                    + " their secret: call secret(…) first");
+        }
+        Distribution distribution = placement.isEmpty() && deployment.isEmpty() ? null
                 : new Distribution(platform, placement, secret, AGENTS_TIMEOUT, containersWithin, problems);
         List<AgentController> controllers = new ArrayList<>();
         List<MaslJadeAgent> locals = new ArrayList<>();
@@ -230,12 +257,21 @@ public final class JadeLauncher {
         if (callTimeout != null) {
             builder.callTimeout(callTimeout);
         }
+        AtomicReference<Mission> built = new AtomicReference<>();
+        Coordination coordination = deployment.isEmpty() ? null : new Coordination(
+                Coordination.mainOf(program, implementations), distribution::wireTo,
+                text -> built.get().journal().append(text));
+        if (coordination != null) {
+            // A deployed agent's program runs in its container; here, a stand-in whose steps are its.
+            builder.programs((name, own) -> deployment.containsKey(name)
+                    ? coordination.standIn(names.indexOf(name), own) : own);
+        }
         program.configure(builder, spec -> {
             AgentImplementation implementation = implementations.create(spec);
             String container = distribution == null ? null : distribution.containerOf(spec.name());
             AgentType type = types.apply(spec);
             if (ExternalAgents.isExternal(type)) {
-                if (container != null) {
+                if (container != null || deployment.containsKey(spec.name())) {
                     throw new JadeException("cannot place " + spec.name() + ": an external FIPA agent answers its"
                             + " primitives (its type " + type.shortName() + " has <Fipa>)");
                 }
@@ -250,6 +286,7 @@ public final class JadeLauncher {
             return implementation;
         });
         Mission mission = builder.build();
+        built.set(mission);
         subscribers.of(mission);
         if (created.size() != specs.size()) {
             throw new IllegalStateException(program.getClass().getName() + " declares " + specs.size()
@@ -260,10 +297,11 @@ public final class JadeLauncher {
             tables.add(new PrimitiveTable(types.apply(specs.get(id)), created.get(id).getClass()));
         }
         List<Agent> hosts = new ArrayList<>();
-        CountDownLatch ready = new CountDownLatch(specs.size() - placement.size() - externals.count());
+        CountDownLatch ready = new CountDownLatch(specs.size() - placement.size() - deployment.size() - externals.count());
         for (int id = 0; id < specs.size(); id++) {
-            if (placement.containsKey(names.get(id))) {
-                hosts.add(distribution.coordinator()); // runs the program; the body is elsewhere
+            if (placement.containsKey(names.get(id)) || deployment.containsKey(names.get(id))) {
+                // Runs the program (or a deployed program's stand-in); the body is elsewhere.
+                hosts.add(distribution.coordinator());
                 continue;
             }
             if (externals.hosts(id)) {
@@ -291,6 +329,10 @@ public final class JadeLauncher {
             }
         }
         externals.start(platform);
+        if (coordination != null) {
+            coordination.agents(created);
+            distribution.deploy(deployment, deployedSource, coordination, names);
+        }
         if (distribution != null) {
             distribution.place(mission, names, tables, created, outside);
         }

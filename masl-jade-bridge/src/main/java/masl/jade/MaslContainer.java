@@ -63,11 +63,21 @@ public final class MaslContainer implements AutoCloseable {
     /** As {@code start} above, each refusal said in one line to {@code refusals} (on the container agent's thread). */
     public static MaslContainer start(JadeOptions joining, String name, Function<String, AgentType> types,
             ClassLoader classes, Consumer<ACLMessage> events, MissionSecret.Source secret, Consumer<String> refusals) {
+        return start(joining, name, types, classes, events, secret, refusals, null);
+    }
+
+    /**
+     * As {@code start} above; the container also runs the programs of agents a coordinator deploys here
+     * ({@link JadeLauncher#deploy}), translated by {@code translator} from the source the coordinator sends.
+     */
+    public static MaslContainer start(JadeOptions joining, String name, Function<String, AgentType> types,
+            ClassLoader classes, Consumer<ACLMessage> events, MissionSecret.Source secret, Consumer<String> refusals,
+            ProgramTranslator translator) {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(secret, "secret");
         JadePlatform platform = JadePlatform.start(joining.withContainerName(name));
         try {
-            ContainerHost host = new ContainerHost(name, types, classes, events, secret, refusals);
+            ContainerHost host = new ContainerHost(name, types, classes, events, secret, refusals, translator);
             platform.container().acceptNewAgent(ContainerHost.agentName(name), host).start();
             if (!host.ready().await(START_TIMEOUT.toMillis(), TimeUnit.MILLISECONDS)) {
                 throw new JadeException("container " + name + " did not register within " + START_TIMEOUT);
