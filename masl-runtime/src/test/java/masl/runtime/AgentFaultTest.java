@@ -4,13 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.atomic.AtomicReference;
-import java.util.concurrent.atomic.AtomicReferenceArray;
+import java.util.concurrent.CopyOnWriteArrayList;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.TestAgent;
 import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.MemoryTrace;
@@ -38,206 +37,122 @@ class AgentFaultTest {
     private static final int TIMED_OUT_REPETITIONS = 3;
 
     /**
-     * A primitive that never returns by itself: it waits until its thread is interrupted. Once timed
-     * out, it must end, its thread interrupted.
+     * An agent whose {@code hang}, and its {@code measure} launched asynchronously, never return by
+     * themselves. Once timed out, each must end, its thread interrupted.
      */
-    private static final class Hang {
-        private final AtomicReference<Thread> runner = new AtomicReference<>();
+    private static final class Hanging extends TestAgent {
+        private final List<Thread> runners = new CopyOnWriteArrayList<>();
 
-        int call() throws InterruptedException {
-            runner.set(Thread.currentThread());
-            new CountDownLatch(1).await();
-            return 42;
+        @Override
+        public int hang() {
+            runners.add(Thread.currentThread());
+            return super.hang();
         }
 
-        /** Whether the thread that ran the call, if any, has ended within 10 s. */
-        boolean ended() throws InterruptedException {
-            Thread thread = runner.get();
-            if (thread != null) {
+        @Override
+        public int measure() {
+            return hang();
+        }
+
+        /** How many calls hung, once the threads that ran them, if any, have ended within 10 s. */
+        int ended() throws InterruptedException {
+            for (Thread thread : runners) {
                 thread.join(10_000);
+                assertTrue(!thread.isAlive(), "a timed-out primitive's thread still runs");
             }
-            return thread == null || !thread.isAlive();
+            return runners.size();
         }
     }
 
-    /**
-     * <pre>
-     * synchronous entry main (true) {
-     *   v = .hang();  .logln("v=" + v);          // internal
-     *   l = .hang();  (launched, asynchronous)   then await it, .logln("l=" + l)
-     *   w = .fail();  .logln("w=" + w);
-     *   react (timeout) { .logln("timeout " + getMessageFromEvent(timeout)); resume; }
-     *   react (uncaught_exception) { .logln("uncaught " + …); resume; }
-     * }
-     * </pre>
-     */
-    static final class Calls extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
-        static final Reaction ON_TIMEOUT = MAIN.react(Event.TIMEOUT);
-        static final Reaction ON_UNCAUGHT = MAIN.react(Event.UNCAUGHT_EXCEPTION);
-
-        final Hang internal = new Hang();
-        final Hang launched = new Hang();
-        private CompletableFuture<Integer> launch;
-
-        Calls(TestAgent self) {
-            super(self);
-        }
-
-        @Override
-        protected int reactionPc(Reaction reaction) {
-            return reaction == ON_TIMEOUT ? 20 : reaction == ON_UNCAUGHT ? 21 : super.reactionPc(reaction);
-        }
-
-        @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 6)) return; continue;
-                    case 1:
-                        self.logln("v=" + ctx.invokeSelf("hang", 7, internal::call));
-                        if (!step(ctx, 2)) return;
-                    case 2:
-                        launch = ctx.launch(self, "hang", 8, launched::call);
-                        pc = 3;
-                        if (!ctx.await(launch)) return;
-                    case 3:
-                        self.logln("l=" + launch.join());
-                        if (!step(ctx, 4)) return;
-                    case 4:
-                        self.logln("w=" + ctx.invokeSelf("fail", 9, () -> {
-                            throw new IllegalStateException("fails");
-                        }));
-                        if (!step(ctx, 5)) return;
-                    case 5: if (!leave(ctx, MAIN, 6)) return;
-                    case 6: if (!endOf(ctx, MAIN.sequence(), 7)) return;
-                    case 7: ctx.finish(); return;
-                    case 20:
-                        self.logln("timeout " + ctx.messageOf(Event.TIMEOUT));
-                        if (!resumeAfterReaction(ctx)) return;
-                        continue;
-                    case 21:
-                        self.logln("uncaught " + ctx.messageOf(Event.UNCAUGHT_EXCEPTION));
-                        if (!resumeAfterReaction(ctx)) return;
-                        continue;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
+    private static final MaslProgram CALLS = MaslProgram.of("calls.masl", 1, """
+            synchronous entry main (true) {
+              local int v = 7;
+              local int l = 8;
+              local int w = 9;
+              v = .hang(); .logln("v=" + v);
+              l = .measure(); .logln("l=" + l);
+              w = .divide(1, 0); .logln("w=" + w);
+              react (timeout) { .logln("timeout " + getMessageFromEvent(timeout)); resume; }
+              react (uncaught_exception) { .logln("uncaught " + getMessageFromEvent(uncaught_exception)); resume; }
             }
-        }
-    }
+            """);
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void aHungPrimitiveGivesTimeoutAndItsDefaultAndOneThatThrowsUncaughtException(Driver driver) throws Exception {
         for (int run = 0; run < TIMED_OUT_REPETITIONS; run++) {
-            Calls[] program = new Calls[1];
-            MissionOutcome outcome = Mission.builder().main(Calls.MAIN).scheduler(driver.newScheduler())
-                    .callTimeout(CALL_TIMEOUT)
-                    .agent("a", new TestAgent(), self -> program[0] = new Calls(self))
-                    .build().run(Duration.ofSeconds(20));
+            Hanging agent = new Hanging();
+            MissionOutcome outcome = CALLS.newMission(() -> agent).scheduler(driver.newScheduler())
+                    .callTimeout(CALL_TIMEOUT).build().run(Duration.ofSeconds(20));
             assertEquals(MissionOutcome.Status.COMPLETED, outcome.status(), outcome::toString);
-            assertEquals("v=7\ntimeout hang\nl=8\ntimeout hang\nw=9\nuncaught java.lang.IllegalStateException\n",
+            assertEquals("timeout hang\nv=0\nl=0\ntimeout measure\nuncaught java.lang.ArithmeticException\nw=0\n",
                     outcome.journal());
             // The hung calls' threads were interrupted: none is left running.
-            assertTrue(program[0].internal.ended());
-            assertTrue(program[0].launched.ended());
+            assertEquals(2, agent.ended());
         }
     }
 
-    /**
-     * Agent 0 calls agent 1's hanging primitive; agent 1 has finished and serves it on its behalf.
-     * <pre>
-     * asynchronous entry main (true) {
-     *   if (me == 0) { w = a1.hang(); .logln("w=" + w); }
-     *   react (timeout) { .logln("timeout " + getMessageFromEvent(timeout)); resume; }
-     * }
-     * </pre>
-     */
-    static final class ExternalCall extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-        static final Reaction ON_TIMEOUT = MAIN.react(Event.TIMEOUT);
-
-        private final AtomicReferenceArray<TestAgent> population;
-        private final Hang hang;
-        private CompletableFuture<Integer> call;
-
-        ExternalCall(TestAgent self, AtomicReferenceArray<TestAgent> population, Hang hang) {
-            super(self);
-            this.population = population;
-            this.hang = hang;
-            population.set(self.getProxyID(), self);
-        }
-
-        @Override
-        protected int reactionPc(Reaction reaction) {
-            return reaction == ON_TIMEOUT ? 20 : super.reactionPc(reaction);
-        }
-
-        @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 4)) return; continue;
-                    case 1:
-                        if (self.getProxyID() != 0) {
-                            pc = 3;
-                            continue;
-                        }
-                        call = ctx.invoke(population.get(1), "hang", 8, hang::call);
-                        pc = 2;
-                        if (!ctx.await(call)) return;
-                    case 2:
-                        self.logln("w=" + call.join());
-                        if (!step(ctx, 3)) return;
-                    case 3: if (!leave(ctx, MAIN, 4)) return;
-                    case 4: if (!endOf(ctx, MAIN.sequence(), 5)) return;
-                    case 5: ctx.finish(); return;
-                    case 20:
-                        self.logln("timeout " + ctx.messageOf(Event.TIMEOUT));
-                        if (!resumeAfterReaction(ctx)) return;
-                        continue;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
+    /** Agent 0 calls agent 1's hanging primitive; agent 1 has finished and serves it on its behalf. */
+    private static final MaslProgram EXTERNAL_CALL = MaslProgram.of("external.masl", 2, """
+            asynchronous entry main (true) {
+              local int w = 8;
+              if (.getProxyID() == 0) { w = a1.hang(); .logln("w=" + w); }
+              react (timeout) { .logln("timeout " + getMessageFromEvent(timeout)); resume; }
             }
-        }
-    }
+            """);
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void anExternalCallPastTheTimeoutGivesTimeoutInTheCaller(Driver driver) throws Exception {
         for (int run = 0; run < TIMED_OUT_REPETITIONS; run++) {
-            AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(2);
-            Hang hang = new Hang();
-            Mission.Builder builder = Mission.builder().main(ExternalCall.MAIN).scheduler(driver.newScheduler())
-                    .callTimeout(CALL_TIMEOUT);
-            for (int i = 0; i < 2; i++) {
-                builder.agent("a" + i, new TestAgent(), self -> new ExternalCall(self, population, hang));
-            }
-            MissionOutcome outcome = builder.build().run(Duration.ofSeconds(20));
+            List<Hanging> agents = new ArrayList<>();
+            MissionOutcome outcome = EXTERNAL_CALL.newMission(MaslProgram.recording(Hanging::new, agents))
+                    .scheduler(driver.newScheduler()).callTimeout(CALL_TIMEOUT).build().run(Duration.ofSeconds(20));
             assertEquals(MissionOutcome.Status.COMPLETED, outcome.status(), outcome::toString);
-            assertEquals("w=8\ntimeout hang\n", outcome.journal());
-            assertTrue(hang.ended());
+            assertEquals("timeout hang\nw=0\n", outcome.journal());
+            assertEquals(List.of(0, 1), List.of(agents.get(0).ended(), agents.get(1).ended()));
+        }
+    }
+
+    /** Three agents in lock-step for six instructions; agent 1's program dies at its third. */
+    private static final MaslProgram DYING = MaslProgram.of("dying.masl", 3, """
+            synchronous entry main (true) {
+              local int i = 0;
+              for (i = 0; i < 6; i++) .logln(.getProxyID() + ":" + i);
+            }
+            """);
+    private static final int STEPS = 6;
+    private static final String DIES_AT = "dying.masl:5: .logln(.getProxyID() + \":\" + i);";
+
+    /** An agent whose program dies of {@code cause} where it would log "1:2": an Error escapes the call. */
+    private static final class Dying extends TestAgent {
+        private final Error cause;
+
+        Dying(Error cause) {
+            this.cause = cause;
+        }
+
+        @Override
+        public void logln(String message) {
+            if (message.equals("1:2")) {
+                throw cause;
+            }
+            super.logln(message);
         }
     }
 
     /**
-     * Three agents in lock-step for {@code STEPS} instructions; agent 1's program throws at its third.
-     * <pre>
-     * synchronous entry main (true) {
-     *   for (i = 0; i &lt; STEPS; i++) { if (me == 1 &amp;&amp; i == 2) throw …; .logln(me + ":" + i); }
-     * }
-     * </pre>
+     * The same program written by hand, for a cause MASL cannot let escape: every {@link Exception}
+     * of a call in MASL becomes {@code uncaught_exception} (§8), so only the runtime or a program
+     * broken by hand dies of one.
      */
-    static final class Dying extends CompactProgram {
+    static final class DyingOfException extends CompactProgram {
         static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
-        static final int STEPS = 6;
 
-        private final Throwable cause;
+        private final RuntimeException cause;
         private int i;
 
-        Dying(TestAgent self, Throwable cause) {
+        DyingOfException(TestAgent self, RuntimeException cause) {
             super(self);
             this.cause = cause;
         }
@@ -253,7 +168,7 @@ class AgentFaultTest {
                             continue;
                         }
                         if (self.getProxyID() == 1 && i == 2) {
-                            throwUnchecked(cause);
+                            throw cause;
                         }
                         self.logln(self.getProxyID() + ":" + i++);
                         if (!step(ctx, 1)) return;
@@ -268,14 +183,7 @@ class AgentFaultTest {
 
         @Override
         protected String sourceAt(int pc) {
-            return pc == 1 ? "dying.masl:3: .logln(me + \":\" + i);" : null;
-        }
-
-        private static void throwUnchecked(Throwable cause) {
-            if (cause instanceof Error error) {
-                throw error;
-            }
-            throw (RuntimeException) cause;
+            return pc == 1 ? DIES_AT : null;
         }
     }
 
@@ -285,24 +193,28 @@ class AgentFaultTest {
         for (Throwable cause : List.of(new AssertionError("boom"), new ArithmeticException("/ by zero"))) {
             for (int run = 0; run < REPETITIONS; run++) {
                 MemoryTrace trace = new MemoryTrace();
-                Mission.Builder builder = Mission.builder().main(Dying.MAIN).scheduler(driver.newScheduler()).trace(trace);
-                for (int i = 0; i < 3; i++) {
-                    builder.agent("a" + i, new TestAgent(), self -> new Dying(self, cause));
+                Mission.Builder builder;
+                if (cause instanceof Error error) {
+                    builder = DYING.newMission(() -> new Dying(error));
+                } else {
+                    builder = Mission.builder().main(DyingOfException.MAIN);
+                    for (int i = 0; i < 3; i++) {
+                        builder.agent("a" + i, new TestAgent(), self -> new DyingOfException(self, (RuntimeException) cause));
+                    }
                 }
-                MissionOutcome outcome = builder.build().run(Duration.ofSeconds(20));
+                MissionOutcome outcome = builder.scheduler(driver.newScheduler()).trace(trace).build().run(Duration.ofSeconds(20));
 
                 assertEquals(MissionOutcome.Status.FAILED, outcome.status(), outcome::toString);
                 assertEquals(cause, outcome.failure().orElseThrow().getCause());
                 List<String> journal = outcome.journal().lines().toList();
-                for (int step = 0; step < Dying.STEPS; step++) {
+                for (int step = 0; step < STEPS; step++) {
                     assertTrue(journal.contains("0:" + step) && journal.contains("2:" + step), outcome.journal());
                 }
                 assertEquals(List.of("1:0", "1:1"), journal.stream().filter(line -> line.startsWith("1:")).toList());
 
                 List<TraceEvent> events = trace.events();
                 TraceEvent.AgentFailed failed = trace.events(TraceEvent.AgentFailed.class).get(0);
-                assertEquals(new TraceEvent.AgentFailed(failed.nanos(), 1, cause.toString(),
-                        "dying.masl:3: .logln(me + \":\" + i);"), failed);
+                assertEquals(new TraceEvent.AgentFailed(failed.nanos(), 1, cause.toString(), DIES_AT), failed);
                 int failedAt = events.indexOf(failed);
                 TraceEvent left = events.get(failedAt + 1);
                 assertTrue(left instanceof TraceEvent.Left l && l.agent() == 1 && l.cause() == LeaveCause.FAILED,

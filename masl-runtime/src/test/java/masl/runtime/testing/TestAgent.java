@@ -1,5 +1,6 @@
 package masl.runtime.testing;
 
+import java.util.concurrent.CountDownLatch;
 import masl.runtime.AgentImplementation;
 
 /** The primitives of {@code Default} the tests need (masl-runtime cannot depend on the agents module). */
@@ -80,5 +81,20 @@ public class TestAgent extends AgentImplementation {
      */
     public int signal(int value) {
         return value;
+    }
+
+    /** Throws {@link ArithmeticException} for a zero divisor: a primitive's exception (§9). */
+    public int divide(int dividend, int divisor) {
+        return dividend / divisor;
+    }
+
+    /** A primitive that never returns by itself: it waits until its thread is interrupted, then gives 42. */
+    public int hang() {
+        try {
+            new CountDownLatch(1).await();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        return 42;
     }
 }
