@@ -58,76 +58,25 @@ class ExternalInvocationTest {
     }
 
     /**
-     * Agent 0 invokes a primitive of agent 1 that throws; agent 1 is parked at the exit barrier by
-     * then, or not yet there.
-     * <pre>
-     * synchronous entry main (true) {
-     *   if (me == 0) { v = a1.divide(1, 0); .logln("v=" + v); }
-     *   react (uncaught_exception) { .logln(getMessageFromEvent(uncaught_exception)); resume; }
-     * }
-     * </pre>
+     * Agent 0 invokes {@code divide} of {@code target}, which throws; agent 1 is parked at the exit
+     * barrier by then, or not yet there.
      */
-    static final class Throwing extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
-        static final Reaction MAIN_REACT = MAIN.react(Event.UNCAUGHT_EXCEPTION);
-
-        private final AtomicReferenceArray<TestAgent> population;
-        private final boolean nullCallee;
-        private CompletableFuture<Integer> call;
-        private int divisor;
-
-        Throwing(TestAgent self, AtomicReferenceArray<TestAgent> population, boolean nullCallee) {
-            super(self);
-            this.population = population;
-            this.nullCallee = nullCallee;
-            population.set(self.getProxyID(), self);
-        }
-
-        @Override
-        protected int reactionPc(Reaction reaction) {
-            return reaction == MAIN_REACT ? 9 : super.reactionPc(reaction);
-        }
-
-        @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 5)) return; continue;
-                    case 1:
-                        if (self.getProxyID() != 0) {
-                            pc = 4;
-                            continue;
-                        }
-                        call = ctx.invoke(nullCallee ? null : population.get(1), "divide", 7, () -> 1 / divisor);
-                        pc = 2;
-                        if (!ctx.await(call)) return;
-                    case 2:
-                        self.logln("v=" + call.join());
-                        if (!step(ctx, 4)) return;
-                        continue;
-                    case 4: if (!leave(ctx, MAIN, 5)) return; continue;
-                    case 5: if (!endOf(ctx, MAIN.sequence(), 6)) return; continue;
-                    case 6: ctx.finish(); return;
-                    case 9:
-                        self.logln(ctx.messageOf(Event.UNCAUGHT_EXCEPTION));
-                        if (!resumeAfterReaction(ctx)) return;
-                        continue;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
+    private static final String THROWING = """
+            synchronous entry main (true) {
+              local int v = 7;
+              local Default target = %s;
+              if (.getProxyID() == 0) { v = target.divide(1, 0); .logln("v=" + v); }
+              react (uncaught_exception) { .logln(getMessageFromEvent(uncaught_exception)); resume; }
             }
-        }
-    }
+            """;
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void aPrimitivesExceptionBecomesUncaughtExceptionInTheCallerWithTheDefaultValue(Driver driver) {
+        MaslProgram throwing = MaslProgram.of("throwing.masl", 2, THROWING.formatted("a1"));
         for (int run = 0; run < Missions.REPETITIONS; run++) {
-            AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(2);
-            String journal = Missions.run(driver, Throwing.MAIN, 2, self -> new Throwing(self, population, false))
-                    .journal();
-            // The value is logged in the instruction of the call, the reaction at its step boundary.
-            assertEquals("v=7\njava.lang.ArithmeticException\n", journal);
+            // The reaction at the call's step boundary, then the value: the type's default.
+            assertEquals("java.lang.ArithmeticException\nv=0\n", throwing.run(driver).journal());
         }
     }
 
@@ -135,9 +84,8 @@ class ExternalInvocationTest {
     @ParameterizedTest
     @EnumSource(Driver.class)
     void invokingAnAgentVariableHoldingNullIsAnUncaughtException(Driver driver) {
-        AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(2);
-        String journal = Missions.run(driver, Throwing.MAIN, 2, self -> new Throwing(self, population, true)).journal();
-        assertEquals("v=7\njava.lang.NullPointerException\n", journal);
+        MaslProgram throwing = MaslProgram.of("throwing.masl", 2, THROWING.formatted("null"));
+        assertEquals("java.lang.NullPointerException\nv=0\n", throwing.run(driver).journal());
     }
 
     /**
@@ -159,6 +107,8 @@ class ExternalInvocationTest {
      *   }
      * }
      * </pre>
+     * Written by hand: agent 0 calls only once agent 1 is parked ({@code Agent.isIdle}), which no
+     * MASL program can observe.
      */
     static final class StuckCallee extends CompactProgram {
         static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
