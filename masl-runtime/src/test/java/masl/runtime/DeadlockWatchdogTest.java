@@ -32,6 +32,7 @@ class DeadlockWatchdogTest {
      * Agent 0 waits in state {@code default} (attentive, no timeout) and, once an invocation has
      * ended its wait, logs and finishes. Agent 1 awaits {@code released}, then finishes. No block.
      * {@code beforeParking} runs in the slice that parks, {@code woken} in the one after.
+     * Written by hand: these hooks stand between two runtime calls of one slice, where no MASL statement can.
      */
     static final class WaitOrAwait extends AgentProgram {
         private final TestAgent self;
@@ -185,6 +186,7 @@ class DeadlockWatchdogTest {
         Mission mission = Mission.builder().scheduler(new ThreadPerAgentScheduler()).wakeUps(wakeUps)
                 .agent("waiter", waiter, TestTypes.testAgent(),
                         self -> new WaitOrAwait(self, new CompletableFuture<>(), waitForTheCall, () -> { }))
+                // Written by hand: the latch opens between the invocation and the slice's end, where no MASL statement stands.
                 .agent("caller", caller, TestTypes.testAgent(), self -> new AgentProgram() {
                     @Override
                     protected void resume(AgentContext ctx) {
@@ -222,6 +224,8 @@ class DeadlockWatchdogTest {
      *   }
      * }
      * </pre>
+     * Written by hand: agent 0's hook runs in the slice that parks at {@code held}, after the runtime's
+     * arrival and before the slice ends, where no MASL statement stands.
      */
     static final class HeldAndReleased extends CompactProgram {
         private final TestAgent held;
@@ -321,7 +325,8 @@ class DeadlockWatchdogTest {
     void aWaitNoQueuedInvocationCanEndIsADeadlock() throws InterruptedException {
         CountDownLatch waiting = new CountDownLatch(1);
         TestAgent waiter = new TestAgent();
-        // Threads: the caller blocks its own until the waiter has parked.
+        // Threads: the caller blocks its own until the waiter has parked. Written by hand: the waiter
+        // opens the latch once parked, after its wait's runtime call, where no MASL statement stands.
         Mission mission = Mission.builder().scheduler(new ThreadPerAgentScheduler())
                 .agent("waiter", waiter, TestTypes.testAgent(), self -> new AgentProgram() {
                     @Override
@@ -351,6 +356,7 @@ class DeadlockWatchdogTest {
      * The program throws at once. While the runtime names the dying agent for the mission's report
      * ({@code sourceAt}), its state is already DONE but the mission still counts it as running: the
      * program holds its thread there until the watchdog has looked at that quiet mission three times.
+     * Written by hand: it holds the runtime inside {@code sourceAt}, which a translated program only answers.
      */
     static final class DiesHeldInTheWindow extends AgentProgram {
         private final BooleanSupplier done;

@@ -120,7 +120,11 @@ class InlineServingTest {
         }
     }
 
-    /** Agent 0 awaits {@code release}, then logs and finishes; agent 1 finishes at once. */
+    /**
+     * Agent 0 awaits {@code release}, then logs and finishes; agent 1 finishes at once. Written by
+     * hand: each agent's first slice parks or finishes, so that the test counts slices; a MASL
+     * program awaits only its own calls, and its entry into {@code main} takes slices of its own.
+     */
     private static Mission awaitingAndFinished(Scheduler scheduler, CompletableFuture<Void> release) {
         Mission.Builder builder = Mission.builder().scheduler(scheduler);
         builder.agent("waiting", new TestAgent(), self -> new CompactProgram(self) {
@@ -190,6 +194,7 @@ class InlineServingTest {
         assertEquals("released\n", ended.journal());
     }
 
+    /** Written by hand: the invocation is submitted from inside the program's slice, between two runtime calls. */
     @Test
     void aRunningAgentServesItAtItsNextBoundaryOnItsOwnThread() throws InterruptedException {
         AtomicReference<Mission> mission = new AtomicReference<>();
@@ -221,6 +226,7 @@ class InlineServingTest {
      * Agent 0 parks on {@code releases[0]}, {@code releases[1]}, … in turn. For each, once the agent
      * has parked, one thread completes the future (the unpark) while this one submits an invocation,
      * both let go by a barrier: every interleaving of the inline serve with the wake-up is tried.
+     * Written by hand: the program records the thread that runs each of its slices, around the runtime's calls.
      */
     @ParameterizedTest
     @EnumSource(value = Driver.class, names = {"POOL", "SINGLE_WORKER", "THREADS"})
