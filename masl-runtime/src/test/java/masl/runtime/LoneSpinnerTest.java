@@ -30,7 +30,8 @@ class LoneSpinnerTest {
      *   if (.getProxyID() == 1) { nop() STEPS times; go = 1; }
      * }
      * </pre>
-     * counting the evaluations of {@code go == 0}.
+     * counting the evaluations of {@code go == 0}. Written by hand: MASL cannot count them, since a
+     * primitive call in the condition would make the loop a spinning one, not parked.
      */
     static final class Spinner extends CompactProgram {
         static final int STEPS = 1_000;

@@ -20,7 +20,11 @@ class OutsideInvocationsTest {
     private final AtomicBoolean released = new AtomicBoolean();
     private final CountDownLatch waiting = new CountDownLatch(1);
 
-    /** {@code while (!released) {}}, where only an outside invocation sets {@code released}. */
+    /**
+     * {@code while (!released) {}}, where only an outside invocation sets {@code released}. Written by
+     * hand: in MASL a condition that reads what such an invocation can set (an attribute, a primitive's
+     * answer) makes the loop a spinning one, not a parked busy-wait.
+     */
     private Mission.Builder waitingForRelease() {
         return Mission.builder().agent("a", new TestAgent(), self -> new CompactProgram(self) {
             @Override

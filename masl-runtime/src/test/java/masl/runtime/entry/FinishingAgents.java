@@ -7,7 +7,10 @@ import masl.runtime.EntryDefinition;
 import masl.runtime.Mission;
 import masl.runtime.testing.TestAgent;
 
-/** A mission built, not run, whose agents' programs would finish at once: for tests that play a barrier by hand. */
+/**
+ * A mission built, not run, whose agents' programs would finish at once: for tests that play a barrier by hand.
+ * Written by hand: the tests play the barriers of their own {@code main}, which a translated program keeps to itself.
+ */
 final class FinishingAgents {
 
     final Mission mission;

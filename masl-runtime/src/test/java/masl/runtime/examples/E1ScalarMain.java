@@ -14,6 +14,8 @@ import masl.runtime.testing.TestAgent;
  * 5   .logln("team");
  * 6 }
  * </pre>
+ * Kept by hand as a worked example of the generated-code contract: {@link HandTranslationTest}
+ * holds it equal to what the translator makes of examples.md.
  */
 final class E1ScalarMain extends AgentProgram {
 

@@ -20,6 +20,8 @@ import masl.runtime.testing.TestAgent;
  *  9   .logln("mine=" + mine);
  * 10 }
  * </pre>
+ * Kept by hand as a worked example of the generated-code contract: {@link HandTranslationTest}
+ * holds it equal to what the translator makes of examples.md.
  */
 final class E2SharedAndLocal extends AgentProgram {
 

@@ -18,6 +18,8 @@ import masl.runtime.testing.TestAgent;
  * 8   scalar entry end (true) { .log("\n"); }
  * 9 }
  * </pre>
+ * Kept by hand as a worked example of the generated-code contract: {@link HandTranslationTest}
+ * holds it equal to what the translator makes of examples.md.
  */
 final class E3AsynchronousChild extends AgentProgram {
 

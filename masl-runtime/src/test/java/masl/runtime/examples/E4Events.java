@@ -36,6 +36,8 @@ import masl.runtime.testing.TestAgent;
  * 20   }
  * 21 }
  * </pre>
+ * Kept by hand as a worked example of the generated-code contract: {@link HandTranslationTest}
+ * holds it equal to what the translator makes of examples.md.
  */
 final class E4Events extends AgentProgram {
 

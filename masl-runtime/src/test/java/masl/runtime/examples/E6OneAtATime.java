@@ -28,6 +28,8 @@ import masl.runtime.testing.TestAgent;
  * 16   }
  * 17 }
  * </pre>
+ * Kept by hand as a worked example of the generated-code contract: {@link HandTranslationTest}
+ * holds it equal to what the translator makes of examples.md.
  */
 final class E6OneAtATime extends AgentProgram {
 

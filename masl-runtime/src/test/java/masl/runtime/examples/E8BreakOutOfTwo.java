@@ -21,6 +21,8 @@ import masl.runtime.testing.TestAgent;
  * 12   .logln("out");
  * 13 }
  * </pre>
+ * Kept by hand as a worked example of the generated-code contract: {@link HandTranslationTest}
+ * holds it equal to what the translator makes of examples.md.
  */
 final class E8BreakOutOfTwo extends AgentProgram {
 
