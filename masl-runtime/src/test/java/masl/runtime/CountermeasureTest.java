@@ -83,11 +83,7 @@ class CountermeasureTest {
 
         @Override
         public int calibrate() {
-            try {
-                stopped.await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
+            awaitOpening(stopped);
             return 5;
         }
 

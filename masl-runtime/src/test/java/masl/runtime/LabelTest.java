@@ -51,11 +51,7 @@ class LabelTest {
 
         @Override
         public int measure() {
-            try {
-                gates.get(getProxyID()).await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
+            awaitOpening(gates.get(getProxyID()));
             return 10 * getProxyID();
         }
 

@@ -89,11 +89,7 @@ class SeededPrimitivesTest {
 
         @Override
         public int measure() {
-            try {
-                gate.await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
+            awaitOpening(gate);
             return 7;
         }
 

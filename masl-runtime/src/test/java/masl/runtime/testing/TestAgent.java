@@ -90,11 +90,19 @@ public class TestAgent extends AgentImplementation {
 
     /** A primitive that never returns by itself: it waits until its thread is interrupted, then gives 42. */
     public int hang() {
+        awaitOpening(new CountDownLatch(1));
+        return 42;
+    }
+
+    /**
+     * Waits in a primitive until {@code latch} opens, or until the primitive's thread is interrupted
+     * (a call timed out, the mission stopped): then it returns, the interrupt kept.
+     */
+    protected static void awaitOpening(CountDownLatch latch) {
         try {
-            new CountDownLatch(1).await();
+            latch.await();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        return 42;
     }
 }
