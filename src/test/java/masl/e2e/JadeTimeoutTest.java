@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Optional;
 import java.util.stream.Collectors;
+import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -33,12 +34,19 @@ class JadeTimeoutTest {
      */
     private static final Duration BOUND = Duration.ofSeconds(25);
 
+    /** What {@code masl run --timeout} of the same program says in-process: what each run in JADE must say. */
+    private static String inProcess;
+
     @TempDir
     Path folder;
 
+    @BeforeAll
+    static void runInProcess(@TempDir Path inProcessFolder) throws Exception {
+        inProcess = inProcessReport(inProcessFolder);
+    }
+
     @Test
     void aRunWhoseAgentsNeverParkEndsOnItsTimeoutWithTheReportOfAnInProcessRun() throws Exception {
-        String inProcess = inProcessReport();
         try (MaslProcess run = MaslProcess.start(folder.resolve("journal.txt").toFile(), "run", PROGRAM, "--quiet",
                 "--platform", "jade", "--timeout", TIMEOUT_SECONDS)) {
             long ready = awaitLine(run, "masl: platform ready: ");
@@ -50,7 +58,6 @@ class JadeTimeoutTest {
 
     @Test
     void aRunWhoseAgentsBodiesAreInAnotherJvmEndsOnItsTimeoutAndSoDoesTheirContainer() throws Exception {
-        String inProcess = inProcessReport();
         String port = String.valueOf(freePort());
         String secret = folder.resolve("secret").toString();
         try (MaslProcess container = MaslProcess.start(folder.resolve("container.txt").toFile(), "container",
@@ -73,7 +80,7 @@ class JadeTimeoutTest {
     }
 
     /** What {@code masl run --timeout} of the same program says in-process. */
-    private String inProcessReport() throws Exception {
+    private static String inProcessReport(Path folder) throws Exception {
         try (MaslProcess run = MaslProcess.start(folder.resolve("in-process.txt").toFile(), "run", PROGRAM, "--quiet",
                 "--timeout", TIMEOUT_SECONDS)) {
             assertEquals(2, run.awaitExit(), run::toString);
