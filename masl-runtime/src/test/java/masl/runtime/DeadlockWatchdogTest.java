@@ -1,16 +1,22 @@
 package masl.runtime;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
+import java.util.regex.Pattern;
 import masl.runtime.scheduling.ThreadPerAgentScheduler;
 import masl.runtime.scheduling.WakeUps;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.TestAgent;
 import masl.runtime.testing.TestTypes;
 import org.junit.jupiter.api.Test;
@@ -320,36 +326,45 @@ class DeadlockWatchdogTest {
         }
     }
 
-    /** Agent 0 waits in state {@code nothing}, no timeout; agent 1 queues a call it does not allow and finishes. */
+    /**
+     * Agent 0 waits in state {@code nothing}, no timeout; agent 1 spins until agent 0 has parked
+     * ({@code signal(1)} answers 1 then: a primitive in the condition makes the loop a spinning one),
+     * launches a call it does not allow, and finishes.
+     */
+    private static final MaslProgram WAIT_FOR_NOTHING = MaslProgram.of("nothing.masl", 2, """
+            asynchronous entry main (true) {
+              if (.getProxyID() == 0) wait("nothing");
+              else { while (.signal(1) == 0) {} a0.measure(); }
+            }
+            """);
+
+    /** An agent whose {@code signal} answers whether {@code parked} holds yet. */
+    private static final class Watching extends TestAgent {
+        private final BooleanSupplier parked;
+
+        Watching(BooleanSupplier parked) {
+            this.parked = parked;
+        }
+
+        @Override
+        public int signal(int value) {
+            return parked.getAsBoolean() ? value : 0;
+        }
+    }
+
     @Test
     void aWaitNoQueuedInvocationCanEndIsADeadlock() throws InterruptedException {
-        CountDownLatch waiting = new CountDownLatch(1);
-        TestAgent waiter = new TestAgent();
-        // Threads: the caller blocks its own until the waiter has parked. Written by hand: the waiter
-        // opens the latch once parked, after its wait's runtime call, where no MASL statement stands.
-        Mission mission = Mission.builder().scheduler(new ThreadPerAgentScheduler())
-                .agent("waiter", waiter, TestTypes.testAgent(), self -> new AgentProgram() {
-                    @Override
-                    protected void resume(AgentContext ctx) {
-                        pc = 1;
-                        ctx.waitFor("nothing");
-                        waiting.countDown();
-                    }
-                })
-                .agent("caller", new TestAgent(), TestTypes.testAgent(), self -> new AgentProgram() {
-                    @Override
-                    protected void resume(AgentContext ctx) {
-                        awaitUninterruptibly(waiting);
-                        ctx.invoke(waiter, "getProxyID", -1, waiter::getProxyID);
-                        ctx.finish();
-                    }
-                })
-                .build();
+        List<TestAgent> agents = new ArrayList<>();
+        AtomicReference<Mission> mission = new AtomicReference<>();
+        BooleanSupplier waiterParked = () -> mission.get().agentOf(agents.get(0)).isIdle();
+        mission.set(WAIT_FOR_NOTHING.newMission(MaslProgram.recording(() -> new Watching(waiterParked), agents))
+                .scheduler(new ThreadPerAgentScheduler()).build());
 
-        MissionOutcome outcome = mission.run(Duration.ofSeconds(30));
+        MissionOutcome outcome = mission.get().run(Duration.ofSeconds(30));
 
         assertEquals(MissionOutcome.Status.DEADLOCKED, outcome.status(), outcome::toString);
-        assertEquals("agent waiter (0) at pc 1: in no block\nagent caller (1) at pc 0: in no block\n", outcome.report());
+        assertTrue(Pattern.compile("agent a0 \\(0\\) at pc \\d+ \\(nothing.masl:4: .*wait\\(\"nothing\"\\).*\\): \\[main\\]\n"
+                + "agent a1 \\(1\\) at pc \\d+ .*in no block\n").matcher(outcome.report()).matches(), outcome.report());
     }
 
     /**

@@ -2,12 +2,11 @@ package masl.runtime;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.util.Objects;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.atomic.AtomicBoolean;
-import java.util.concurrent.atomic.AtomicReferenceArray;
-import masl.runtime.entry.Entry;
-import masl.runtime.testing.CompactProgram;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.Missions;
@@ -42,87 +41,28 @@ class InvocationServingTest {
             """);
 
     /**
-     * Agent 1 (the callee) waits at the entry barrier of a locked block, or skips main and
-     * finishes; agent 0 invokes it, waits for the result with {@code await}, logs it, and then
-     * releases the block. Written by hand for the callee that finishes first: the caller waits
-     * until the callee's program has finished, which no MASL expression sees.
+     * Agent 1 (the callee) skips main and finishes; agent 0 spins until then ({@code signal(1)}
+     * answers 1 once agent 1's program has finished: a primitive in the condition makes the loop a
+     * spinning one, which the runtime does not park), invokes it and logs the result.
      */
-    static final class CallerAndCallee extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-        static final EntryDefinition SETUP = MAIN.child("setup", Mode.SCALAR);
-        static final ESequence CALL_GATE = MAIN.newSequence();
-        static final EntryDefinition CALL = CALL_GATE.block("call", Mode.ASYNCHRONOUS);
-        static final EntryDefinition GATE = CALL_GATE.block("gate", Mode.SYNCHRONOUS);
+    private static final MaslProgram FINISHED_CALLEE = MaslProgram.of("finished.masl", 2, """
+            asynchronous entry main (.getProxyID() == 0) {
+              while (.signal(1) == 0) {}
+              .logln("served " + a1.getProxyID());
+            }
+            """);
 
-        private final AtomicReferenceArray<AgentContext> agents;
-        private final boolean calleeFinishesFirst;
-        private final AtomicBoolean calleeFinishing;
-        private CompletableFuture<String> result;
+    /** An agent whose {@code signal} answers whether {@code finished} holds yet. */
+    private static final class Watching extends TestAgent {
+        private final BooleanSupplier finished;
 
-        CallerAndCallee(TestAgent self, AtomicReferenceArray<AgentContext> agents, boolean calleeFinishesFirst,
-                AtomicBoolean calleeFinishing) {
-            super(self);
-            this.agents = agents;
-            this.calleeFinishesFirst = calleeFinishesFirst;
-            this.calleeFinishing = calleeFinishing;
+        Watching(BooleanSupplier finished) {
+            this.finished = finished;
         }
 
         @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            int id = self.getProxyID();
-            Entry gate = ctx.entry(GATE);
-            while (true) {
-                switch (pc) {
-                    case 0:
-                        agents.set(id, ctx);
-                        if (!arrive(ctx, MAIN, id == 0 || !calleeFinishesFirst, 1, 15)) return;
-                        continue;
-                    case 1: if (!arrive(ctx, SETUP, true, 2, 3)) return; continue;
-                    case 2: gate.lock(); if (!leave(ctx, SETUP, 3)) return; continue;
-                    case 3: if (!endOf(ctx, SETUP.sequence(), 4)) return; continue;
-                    case 4: if (!busyWait(ctx, Objects.equals(gate.getLockPolicy(), "free"), 5)) return; continue;
-                    case 5: if (!arrive(ctx, CALL, id == 0, 6, 10)) return; continue;
-                    case 6:
-                        if (calleeFinishesFirst) {
-                            // A spin: the flag is no state the runtime sees change.
-                            if (calleeFinishing.get()) {
-                                pc = 7;
-                                continue;
-                            }
-                            if (!ctx.loopIteration()) return;
-                            continue;
-                        }
-                        if (!busyWait(ctx, gate.getWaitingInCount() == 0, 7)) return;
-                        continue;
-                    case 7:
-                        TestAgent callee = (TestAgent) ((Agent) agents.get(1)).implementation;
-                        result = ctx.invoke(callee, "nop", "", () -> "served");
-                        pc = 8;
-                        if (!ctx.await(result)) return;
-                    case 8:
-                        self.logln(result.join());
-                        gate.release();
-                        if (!step(ctx, 9)) return;
-                        continue;
-                    case 9: if (!leave(ctx, CALL, 10)) return; continue;
-                    case 10:
-                        if (!arrive(ctx, GATE, id == 1 && !calleeFinishesFirst, 11, 13)) return;
-                        continue;
-                    case 11: self.logln("in gate"); if (!step(ctx, 12)) return; continue;
-                    case 12: if (!leave(ctx, GATE, 13)) return; continue;
-                    case 13: if (!endOf(ctx, CALL_GATE, 14)) return; continue;
-                    case 14: if (!leave(ctx, MAIN, 15)) return; continue;
-                    case 15: if (!endOf(ctx, MAIN.sequence(), 16)) return; continue;
-                    case 16:
-                        if (id == 1) {
-                            calleeFinishing.set(true);
-                        }
-                        ctx.finish();
-                        return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
-            }
+        public int signal(int value) {
+            return finished.getAsBoolean() ? value : 0;
         }
     }
 
@@ -136,13 +76,15 @@ class InvocationServingTest {
 
     @ParameterizedTest
     @EnumSource(Driver.class)
-    void aCalleeThatHasLeftMainStillServesItsCallers(Driver driver) {
+    void aCalleeThatHasLeftMainStillServesItsCallers(Driver driver) throws InterruptedException {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
-            AtomicReferenceArray<AgentContext> agents = new AtomicReferenceArray<>(2);
-            AtomicBoolean calleeFinishing = new AtomicBoolean();
-            String journal = Missions.run(driver, CallerAndCallee.MAIN, 2,
-                    self -> new CallerAndCallee(self, agents, true, calleeFinishing)).journal();
-            assertEquals("served\n", journal);
+            List<TestAgent> agents = new ArrayList<>();
+            AtomicReference<Mission> mission = new AtomicReference<>();
+            BooleanSupplier calleeFinished = () -> mission.get().agentOf(agents.get(1)).isDone();
+            mission.set(FINISHED_CALLEE.newMission(MaslProgram.recording(() -> new Watching(calleeFinished), agents))
+                    .scheduler(driver.newScheduler()).build());
+            MissionOutcome outcome = mission.get().run(Duration.ofSeconds(20)).requireCompleted();
+            assertEquals("served 1\n", outcome.journal());
         }
     }
 }
