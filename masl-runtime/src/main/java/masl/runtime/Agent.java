@@ -26,8 +26,8 @@ import masl.runtime.invocation.Invoker;
 import masl.runtime.invocation.PendingInvocation;
 import masl.runtime.invocation.Permeability;
 import masl.runtime.invocation.PrimitiveCalls;
-import masl.runtime.scheduling.AgentTask;
 import masl.runtime.scheduling.RunState;
+import masl.runtime.scheduling.ScheduledAgent;
 import masl.runtime.scheduling.Scheduler;
 import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.TraceEvent;
@@ -68,14 +68,9 @@ import masl.runtime.trace.TraceEvent;
  * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
  * friend packages), and may change without notice.
  */
-public final class Agent implements AgentContext, AgentTask {
+public final class Agent extends ScheduledAgent implements AgentContext {
 
-    private final int id;
-    private final String name;
     public final AgentImplementation implementation;
-    private final AgentProgram program;
-    private final Mission mission;
-    private final RunState run;
     private final EventPlanner events = new EventPlanner();
     private final Permeability permeability;
     private final InvocationServing invocations;
@@ -87,9 +82,6 @@ public final class Agent implements AgentContext, AgentTask {
     private final Consumer<EventOccurrence> dropped = this::traceDropped;
     /** The ticket of the agent's latest busy-wait park: an event perceived then wakes it (§5). */
     private volatile long busyWaitTicket;
-    /** Whether the agent's latest park is a busy-wait's: for the deadlock watchdog (Mission). */
-    private volatile boolean busyWaitPark;
-    private volatile boolean finished;
     /**
      * Set after an invocation is queued; cleared by the agent's own boundary before it serves its
      * queue, and set again if some stay queued. A boundary, or the end of a slice, that finds it
@@ -104,24 +96,9 @@ public final class Agent implements AgentContext, AgentTask {
     private volatile boolean eventsPerceived;
 
     // Confined to the thread running the current slice (successive slices are ordered).
-    private boolean suspended;
-    private int stepsThisSlice;
-    /** Step boundaries and plain loop iterations passed: "ran an instruction" for busy-waits. */
-    private long progress;
     private long busyWaitEpoch = -1;
     private long busyWaitProgress = -1;
     private final IdleIterations iterations = new IdleIterations();
-    /** The program's pc was set to other code: resume it at once, in this slice. */
-    private boolean redirected;
-    /**
-     * The resumption point whose MASL statement the agent is at, for trace records and reports: the
-     * case making the current runtime call. A suspending call comes after {@code pc} was set to the
-     * case that follows it (the contract numbers cases in program order), a loop iteration or a call
-     * in the middle of a case finds {@code pc} at its own case. Read by others only while parked.
-     */
-    private int statementPc;
-    /** Whether {@link #statementPc} is a loop's head, whose statement is the loop, not the last one of its body. */
-    private boolean statementIsLoop;
     /**
      * From the start of an event processing to its ending (resumed or abandoned) or the program's
      * death: false says that {@link #events} has no reaction running or ending, without reading it.
@@ -129,8 +106,6 @@ public final class Agent implements AgentContext, AgentTask {
      * cache line of another object.
      */
     private boolean reactionsUnderway;
-    /** Whether the latest park is a {@code wait(state)}'s, the only one that makes the agent attentive. */
-    private boolean parkAttends;
 
     // Guarded by the EntryCoordinator's lock (see its invariant for the agent's own reads).
     public final List<Membership> memberships = new ArrayList<>();
@@ -161,12 +136,8 @@ public final class Agent implements AgentContext, AgentTask {
 
     Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
             Mission mission) {
-        this.id = id;
-        this.name = name;
+        super(id, name, program, mission);
         this.implementation = implementation;
-        this.program = program;
-        this.mission = mission;
-        this.run = new RunState(this::describe, mission::countSchedule);
         this.permeability = new Permeability(type, this, mission.coordinator());
         this.invocations = new InvocationServing(this, permeability, mission.trace(), this::now);
         this.servable = invocations::hasServable;
@@ -177,11 +148,6 @@ public final class Agent implements AgentContext, AgentTask {
     }
 
     // ---- AgentTask -----------------------------------------------------------------------------
-
-    @Override
-    public int id() {
-        return id;
-    }
 
     @Override
     public void runSlice() {
@@ -313,20 +279,6 @@ public final class Agent implements AgentContext, AgentTask {
         return run.isIdle(nothingQueued, attentive);
     }
 
-    /** Its program is over (finished or died); the mission may not have counted it out yet. */
-    boolean isDone() {
-        return run.isDone();
-    }
-
-    /** Parked in a busy-wait: waiting for a change, which an outside invocation is. */
-    boolean isParkedInBusyWait() {
-        return run.isParked() && busyWaitPark;
-    }
-
-    private void end() {
-        finished = true;
-        run.done();
-    }
 
     /**
      * Something escaped from the program (an {@code Error}, or an exception outside the calls the
@@ -352,30 +304,7 @@ public final class Agent implements AgentContext, AgentTask {
         serveIfPending();
     }
 
-    /** Issues the ticket of a park: the caller (this agent's own slice) then returns {@code false}. */
-    public long prepareToPark() {
-        if (suspended) {
-            throw new IllegalStateException(describe() + ": runtime called again after a suspension");
-        }
-        suspended = true;
-        // A volatile write costs a fence; in lock-step no park is a busy-wait's, and this reads it.
-        if (busyWaitPark) {
-            busyWaitPark = false;
-        }
-        parkAttends = false;
-        return run.issueTicket();
-    }
 
-    /**
-     * Takes back the park that issued {@code ticket}, which nobody has ended: the call that issued
-     * it goes on without waiting after all (the arrival that completes a synchronisation barrier).
-     */
-    public void cancelPark(long ticket) {
-        if (!run.takeBack(ticket)) {
-            throw new IllegalStateException(describe() + ": its park was ended before it was taken back");
-        }
-        suspended = false;
-    }
 
     /**
      * Reads the state a slice of this agent reads first, bringing it into the calling core's cache.
@@ -391,31 +320,6 @@ public final class Agent implements AgentContext, AgentTask {
                 + (suspended ? 1 : 0) + (int) progress + (int) run.pendingTicket();
     }
 
-    /** The ticket of the pending park, or 0 if the agent has none (it is running, not waiting). */
-    public long pendingTicket() {
-        return run.pendingTicket();
-    }
-
-    /** Ends the park that issued {@code ticket}; ignored if that park already ended. */
-    public void unpark(long ticket) {
-        if (ticket != 0 && run.pendingTicket() == ticket) {
-            // Counted before the agent leaves PARKED, for the deadlock watchdog (Mission). Another
-            // thread may end the park first: one count too many only puts the watchdog's verdict off.
-            mission.countSchedule();
-            if (run.unpark(ticket)) {
-                mission.scheduler().schedule(this);
-            }
-        }
-    }
-
-    /**
-     * Ends the park that issued {@code ticket} ({@link RunState#unpark}), as {@link #unpark} does but
-     * for a caller that counted the wake-up already or holds a pending one, and that schedules the
-     * agent itself: true if it must.
-     */
-    public boolean endPark(long ticket) {
-        return run.unpark(ticket);
-    }
 
     // ---- AgentContext --------------------------------------------------------------------------
 
@@ -952,17 +856,6 @@ public final class Agent implements AgentContext, AgentTask {
         }
     }
 
-    private boolean yieldIfSliceUsed() {
-        if (++stepsThisSlice < mission.scheduler().stepsPerSlice() && !mission.memoryExhausted()) {
-            return true;
-        }
-        long ticket = prepareToPark();
-        if (!mission.memoryExhausted()) {
-            unpark(ticket);
-        }
-        // else parked for good: the mission failed for want of memory, which this agent would take
-        return false;
-    }
 
     /** {@link #barrierDue}; an agent held by a barrier of its innermost block is parked, not running. */
     private SynchronisationBarrier barrierDue() {
@@ -982,29 +875,13 @@ public final class Agent implements AgentContext, AgentTask {
         return !memberships.isEmpty() && innermost().status != Membership.Status.ACTIVE;
     }
 
-    /** The current runtime call comes after {@code pc} was set to the case that follows its own. */
-    private void atCallBefore() {
-        statementPc = program.pc() - 1;
-        statementIsLoop = false;
-    }
-
-    /** The current runtime call is made from the case {@code pc} names. */
-    private void atCurrentCase() {
-        statementPc = program.pc();
-        statementIsLoop = false;
-    }
-
-    /** The current runtime call is a loop's iteration, made from its head, the case {@code pc} names. */
-    private void atLoopHead() {
-        statementPc = program.pc();
-        statementIsLoop = true;
-    }
 
     /**
      * The MASL statement the agent is at ({@code "e6.masl:14: synchronous entry turn (…)"}), or null
      * if its program does not say: the last statement of the case making the current call (a loop's
      * own statement at its head), or of the nearest case before it that has one.
      */
+    @Override
     public String source() {
         return sourceOf(statementPc, statementIsLoop);
     }
@@ -1017,14 +894,15 @@ public final class Agent implements AgentContext, AgentTask {
         return source;
     }
 
+    @Override
     public String describe() {
         String source = source();
         return "agent " + name + " (" + id + ") at pc " + program.pc() + (source == null ? "" : " (" + source + ")");
     }
 
     @Override
-    public String toString() {
-        return name;
+    protected boolean memoryExhausted() {
+        return mission.memoryExhausted();
     }
 
     /** The agent's private side its {@link Invoker} and {@link Emitter} need: kept off the public one. */
