@@ -12,6 +12,7 @@ import masl.runtime.descriptor.AgentType;
 import masl.runtime.descriptor.PermeabilityState;
 import masl.runtime.entry.Entry;
 import masl.runtime.entry.EntryCoordinator;
+import masl.runtime.entry.MemberAgent;
 import masl.runtime.entry.Membership;
 import masl.runtime.entry.SynchronisationBarrier;
 import masl.runtime.entry.Wave;
@@ -27,7 +28,6 @@ import masl.runtime.invocation.PendingInvocation;
 import masl.runtime.invocation.Permeability;
 import masl.runtime.invocation.PrimitiveCalls;
 import masl.runtime.scheduling.RunState;
-import masl.runtime.scheduling.ScheduledAgent;
 import masl.runtime.scheduling.Scheduler;
 import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.TraceEvent;
@@ -68,7 +68,7 @@ import masl.runtime.trace.TraceEvent;
  * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
  * friend packages), and may change without notice.
  */
-public final class Agent extends ScheduledAgent implements AgentContext {
+public final class Agent extends MemberAgent implements AgentContext {
 
     public final AgentImplementation implementation;
     private final EventPlanner events = new EventPlanner();
@@ -106,33 +106,6 @@ public final class Agent extends ScheduledAgent implements AgentContext {
      * cache line of another object.
      */
     private boolean reactionsUnderway;
-
-    // Guarded by the EntryCoordinator's lock (see its invariant for the agent's own reads).
-    public final List<Membership> memberships = new ArrayList<>();
-    public List<Wave> activeIn = new ArrayList<>();
-    public List<SynchronisationBarrier> participatesIn = new ArrayList<>();
-    /** Its program died: it counts in no wave, not even the mission's (see {@link EntryCoordinator#leaveAll}). */
-    public boolean departed;
-    /**
-     * The barrier its step boundaries arrive at: that of its innermost block if the block is
-     * synchronous and the agent active in it, else null. Kept with the memberships, so that a step
-     * in lock-step reads this field, not the chain of blocks (a list, its array and a membership,
-     * three more cache lines per agent-step).
-     */
-    public SynchronisationBarrier barrierDue;
-
-    // The agent's latest arrival at a synchronisation barrier (see SynchronisationBarrier): written
-    // without the lock by its own slice, or, for an arrival its worker held (ArrivalCombiner), by
-    // that worker when it publishes it; read under the lock by the barrier it arrived at.
-    /**
-     * For an arrival by itself, the agent that arrived before it at the same barrier, while it waits
-     * on the barrier's stack; a published chunk holds its agents in an array of its own.
-     */
-    public Agent nextArrival;
-    /** The barrier it arrived at last, until it stops taking part in it; null if none. */
-    public SynchronisationBarrier arrivedAt;
-    /** The phase of {@link #arrivedAt} its arrival counted in. */
-    public int arrivalPhase;
 
     Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
             Mission mission) {
@@ -376,14 +349,6 @@ public final class Agent extends ScheduledAgent implements AgentContext {
         return completeBoundary(null);
     }
 
-    /** The agent's innermost block must be {@code parent} ({@code null}: no block) when it ends {@code what} in it. */
-    private void requireAtLevelOf(EntryDefinition parent, Object what) {
-        EntryDefinition innermost = memberships.isEmpty() ? null : innermost().entry.definition();
-        if (innermost != parent) {
-            throw new IllegalStateException(describe() + " ends " + what + " inside " + innermost);
-        }
-    }
-
     @Override
     public boolean loopIteration() {
         atLoopHead();
@@ -513,17 +478,6 @@ public final class Agent extends ScheduledAgent implements AgentContext {
     }
 
     @Override
-    public <T> SharedVariable<T> shared(SharedDeclaration<T> declaration) {
-        for (int i = memberships.size() - 1; i >= 0; i--) {
-            Membership membership = memberships.get(i);
-            if (membership.entry.definition() == declaration.block()) {
-                return membership.wave.shared(declaration);
-            }
-        }
-        throw new IllegalStateException(describe() + " reads " + declaration + " outside its block");
-    }
-
-    @Override
     public Entry entry(EntryDefinition block) {
         return mission.entry(block);
     }
@@ -648,17 +602,6 @@ public final class Agent extends ScheduledAgent implements AgentContext {
     @Override
     public Label newLabel() {
         return new Label(mission.changes());
-    }
-
-    /** The depth of {@code block} in the agent's chain of blocks (0: outermost), for leaving up to it. */
-    private int depthOf(EntryDefinition block) {
-        for (int depth = memberships.size() - 1; depth >= 0; depth--) {
-            if (memberships.get(depth).entry.definition() == block) {
-                return depth;
-            }
-        }
-        // Not a member: the coordinator reports the translator bug.
-        return memberships.size();
     }
 
     @Override
@@ -800,11 +743,7 @@ public final class Agent extends ScheduledAgent implements AgentContext {
         if (events.nothingPerceived()) {
             return false;
         }
-        List<EntryDefinition> chain = new ArrayList<>(memberships.size());
-        for (int i = memberships.size() - 1; i >= 0; i--) {
-            chain.add(memberships.get(i).entry.definition());
-        }
-        if (events.start(chain, program.pc(), barrierDue, statementPc, statementIsLoop, dropped) == null) {
+        if (events.start(chainInnermostFirst(), program.pc(), barrierDue, statementPc, statementIsLoop, dropped) == null) {
             return false;
         }
         reactionsUnderway = true;
@@ -856,24 +795,6 @@ public final class Agent extends ScheduledAgent implements AgentContext {
         }
     }
 
-
-    /** {@link #barrierDue}; an agent held by a barrier of its innermost block is parked, not running. */
-    private SynchronisationBarrier barrierDue() {
-        SynchronisationBarrier barrier = barrierDue;
-        if (barrier == null && isHeld() && innermost().entry.mode() == Mode.SYNCHRONOUS) {
-            throw new IllegalStateException(describe() + " runs while " + innermost());
-        }
-        return barrier;
-    }
-
-    public Membership innermost() {
-        return memberships.get(memberships.size() - 1);
-    }
-
-    /** Held by an entry or exit barrier: then it is active nowhere (§6.3). */
-    public boolean isHeld() {
-        return !memberships.isEmpty() && innermost().status != Membership.Status.ACTIVE;
-    }
 
 
     /**
