@@ -12,7 +12,6 @@ import masl.runtime.descriptor.AgentType;
 import masl.runtime.descriptor.PermeabilityState;
 import masl.runtime.entry.Entry;
 import masl.runtime.entry.EntryCoordinator;
-import masl.runtime.entry.MemberAgent;
 import masl.runtime.entry.Membership;
 import masl.runtime.entry.SynchronisationBarrier;
 import masl.runtime.entry.Wave;
@@ -21,6 +20,7 @@ import masl.runtime.event.EventOccurrence;
 import masl.runtime.event.EventPlanner;
 import masl.runtime.event.ReactionPlan;
 import masl.runtime.event.ReactionRun;
+import masl.runtime.event.ReactingAgent;
 import masl.runtime.invocation.Countermeasures;
 import masl.runtime.invocation.InvocationServing;
 import masl.runtime.invocation.Invoker;
@@ -68,10 +68,9 @@ import masl.runtime.trace.TraceEvent;
  * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
  * friend packages), and may change without notice.
  */
-public final class Agent extends MemberAgent implements AgentContext {
+public final class Agent extends ReactingAgent implements AgentContext {
 
     public final AgentImplementation implementation;
-    private final EventPlanner events = new EventPlanner();
     private final Permeability permeability;
     private final InvocationServing invocations;
     private final Invoker invoker;
@@ -79,9 +78,6 @@ public final class Agent extends MemberAgent implements AgentContext {
     // Made once: the hot paths that take them allocate nothing.
     private final BooleanSupplier servable;
     private final BooleanSupplier attentive;
-    private final Consumer<EventOccurrence> dropped = this::traceDropped;
-    /** The ticket of the agent's latest busy-wait park: an event perceived then wakes it (§5). */
-    private volatile long busyWaitTicket;
     /**
      * Set after an invocation is queued; cleared by the agent's own boundary before it serves its
      * queue, and set again if some stay queued. A boundary, or the end of a slice, that finds it
@@ -89,23 +85,11 @@ public final class Agent extends MemberAgent implements AgentContext {
      * otherwise fetch for nothing.
      */
     private volatile boolean invocationsQueued;
-    /**
-     * Set after an occurrence is perceived; cleared by the agent's own boundary before it takes the
-     * occurrences. A boundary that finds it clear reads no event queue, for the same reason.
-     */
-    private volatile boolean eventsPerceived;
 
     // Confined to the thread running the current slice (successive slices are ordered).
     private long busyWaitEpoch = -1;
     private long busyWaitProgress = -1;
     private final IdleIterations iterations = new IdleIterations();
-    /**
-     * From the start of an event processing to its ending (resumed or abandoned) or the program's
-     * death: false says that {@link #events} has no reaction running or ending, without reading it.
-     * Every step boundary and loop iteration asks; in lock-step, this field saves an agent-step the
-     * cache line of another object.
-     */
-    private boolean reactionsUnderway;
 
     Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
             Mission mission) {
@@ -531,23 +515,6 @@ public final class Agent extends MemberAgent implements AgentContext {
     }
 
     @Override
-    public String messageOf(Event event) {
-        return events.messageOf(event);
-    }
-
-    @Override
-    public boolean endReaction() {
-        if (!events.isReacting()) {
-            throw new IllegalStateException(describe() + ": endReaction outside a reaction");
-        }
-        if (!events.endReaction()) {
-            redirectToNextReaction();
-            return false;
-        }
-        return true;
-    }
-
-    @Override
     public boolean resumeInterrupted() {
         ReactionRun ended = events.takeEnding();
         reactionsUnderway = false;
@@ -558,14 +525,6 @@ public final class Agent extends MemberAgent implements AgentContext {
         statementPc = ended.statementPc();
         statementIsLoop = ended.statementIsLoop();
         return completeBoundary(ended.barrierDue() ? barrierDue() : null);
-    }
-
-    @Override
-    public void clearEvents() {
-        if (!events.isReacting()) {
-            throw new IllegalStateException(describe() + ": clearEvents outside a reaction");
-        }
-        events.clear(dropped);
     }
 
     @Override
@@ -718,41 +677,8 @@ public final class Agent extends MemberAgent implements AgentContext {
         emitter.raise(systemEvent, message);
     }
 
-    /** Perceives an occurrence (§8): from any thread, never blocks; wakes a parked busy-wait (§5). */
-    void perceive(EventOccurrence occurrence) {
-        events.perceive(occurrence);
-        eventsPerceived = true;
-        // A stale ticket (the agent has woken since, or parks elsewhere) is ignored by unpark.
-        long ticket = busyWaitTicket;
-        if (ticket != 0) {
-            unpark(ticket);
-        }
-    }
-
-    /**
-     * Step 1 of a boundary (§5, §8): takes every occurrence perceived so far and, if any has a
-     * reaction, saves where the boundary continues and redirects the program to the first
-     * reaction. Returns whether it did; the boundary call then returns {@code false}.
-     */
-    private boolean startReactions(boolean barrierDue) {
-        // An occurrence whose flag this does not see yet is perceived after this boundary.
-        if (!eventsPerceived) {
-            return false;
-        }
-        eventsPerceived = false;
-        if (events.nothingPerceived()) {
-            return false;
-        }
-        if (events.start(chainInnermostFirst(), program.pc(), barrierDue, statementPc, statementIsLoop, dropped) == null) {
-            return false;
-        }
-        reactionsUnderway = true;
-        progress++;
-        redirectToNextReaction();
-        return true;
-    }
-
-    private void redirectToNextReaction() {
+    @Override
+    protected void redirectToNextReaction() {
         ReactionRun processing = events.reacting();
         ReactionPlan.Step step = processing.next();
         Reaction reaction = step.reaction();
@@ -764,35 +690,14 @@ public final class Agent extends MemberAgent implements AgentContext {
         redirected = true;
     }
 
-    private void traceDropped(EventOccurrence occurrence) {
+    @Override
+    protected void traceDropped(EventOccurrence occurrence) {
         mission.trace().record(new TraceEvent.EventDropped(now(), id, occurrence.event().name(), source()));
     }
 
     /** The mission clock, for trace timestamps. */
     private long now() {
         return mission.scheduler().nanoTime();
-    }
-
-    /** The processing's ending is a break, restart or reelect: nothing is underway any more. */
-    private void abandonEnding() {
-        events.abandonEnding();
-        reactionsUnderway = false;
-    }
-
-    /** A reaction runs in one go (§8): from its start to {@link #endReaction()}, no block operation or boundary. */
-    private void requireNoReactionRunning(String what) {
-        if (reactionsUnderway && events.isReacting()) {
-            throw new IllegalStateException(describe() + ": " + what + " inside a reaction");
-        }
-    }
-
-    /** Neither in a reaction, nor between the last one's end and its ending (resume, break, …). */
-    private void requireOutsideReaction(String what) {
-        requireNoReactionRunning(what);
-        if (reactionsUnderway && events.isEnding()) {
-            throw new IllegalStateException(describe() + ": " + what
-                    + " after endReaction(): a reaction ends with resumeInterrupted, break, restart or reelect");
-        }
     }
 
 
