@@ -20,12 +20,12 @@ import masl.runtime.event.EventOccurrence;
 import masl.runtime.event.EventPlanner;
 import masl.runtime.event.ReactionPlan;
 import masl.runtime.event.ReactionRun;
-import masl.runtime.event.ReactingAgent;
 import masl.runtime.invocation.Countermeasures;
 import masl.runtime.invocation.InvocationServing;
 import masl.runtime.invocation.Invoker;
 import masl.runtime.invocation.PendingInvocation;
 import masl.runtime.invocation.Permeability;
+import masl.runtime.invocation.ServingAgent;
 import masl.runtime.invocation.PrimitiveCalls;
 import masl.runtime.scheduling.RunState;
 import masl.runtime.scheduling.Scheduler;
@@ -68,23 +68,11 @@ import masl.runtime.trace.TraceEvent;
  * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
  * friend packages), and may change without notice.
  */
-public final class Agent extends ReactingAgent implements AgentContext {
+public final class Agent extends ServingAgent implements AgentContext {
 
     public final AgentImplementation implementation;
-    private final Permeability permeability;
-    private final InvocationServing invocations;
     private final Invoker invoker;
     private final Emitter emitter;
-    // Made once: the hot paths that take them allocate nothing.
-    private final BooleanSupplier servable;
-    private final BooleanSupplier attentive;
-    /**
-     * Set after an invocation is queued; cleared by the agent's own boundary before it serves its
-     * queue, and set again if some stay queued. A boundary, or the end of a slice, that finds it
-     * clear reads no queue: the queue is objects of their own, cache lines an agent-step would
-     * otherwise fetch for nothing.
-     */
-    private volatile boolean invocationsQueued;
 
     // Confined to the thread running the current slice (successive slices are ordered).
     private long busyWaitEpoch = -1;
@@ -93,12 +81,8 @@ public final class Agent extends ReactingAgent implements AgentContext {
 
     Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
             Mission mission) {
-        super(id, name, program, mission);
+        super(id, name, program, mission, type, mission.coordinator(), mission.trace());
         this.implementation = implementation;
-        this.permeability = new Permeability(type, this, mission.coordinator());
-        this.invocations = new InvocationServing(this, permeability, mission.trace(), this::now);
-        this.servable = invocations::hasServable;
-        this.attentive = invocations::isAttentive;
         PrivateSide side = new PrivateSide();
         this.invoker = new Invoker(this, permeability, side);
         this.emitter = new Emitter(this, side);
@@ -166,74 +150,6 @@ public final class Agent extends ReactingAgent implements AgentContext {
             run.reschedule();
             mission.scheduler().schedule(this);
         }
-    }
-
-    /**
-     * Ends the current slice, running or {@code serving}, {@code → PARKED} unless an unpark came
-     * meanwhile (false), then serves the invocations queued while the slice ran, now that the agent
-     * is blocked. Parked in {@code wait(state)}, the agent is idle for the deadlock watchdog even
-     * with invocations queued (its state may allow none of them), so serving one is a wake-up:
-     * pending from before the agent turns {@code PARKED} until it is {@code SERVING} (see
-     * {@link DeadlockWatchdog}).
-     */
-    private boolean endSliceParked(boolean serving) {
-        // Only the agent's own program makes it attentive, in a wait(state)'s park: no wait can begin
-        // during this call.
-        boolean attentiveNow = parkAttends && invocations.isAttentive();
-        if (attentiveNow) {
-            mission.outsideWakeUpStarted();
-        }
-        try {
-            if (!run.park(serving)) {
-                return false;
-            }
-            serveIfPending();
-            return true;
-        } finally {
-            if (attentiveNow) {
-                mission.outsideWakeUpEnded();
-            }
-        }
-    }
-
-    /**
-     * The agent's own boundary serves what is queued (MASL §5). An invocation queued concurrently
-     * whose flag this does not see yet counts as queued after the boundary: its submitter then
-     * finds the agent running, and the end of the slice serves it ({@link #serveIfPending}).
-     */
-    private void serveQueuedInvocations() {
-        if (invocationsQueued) {
-            invocationsQueued = false;
-            invocations.serveAll();
-            if (!invocations.nothingQueued()) {
-                // Kept for later: those wait(state) does not allow.
-                invocationsQueued = true;
-            }
-        }
-    }
-
-    /**
-     * Schedules a serving slice if invocations wait and the agent is blocked or done. The flag is
-     * read after the agent turned {@code PARKED} or {@code DONE}: a submitter that found it running
-     * had set the flag before it looked.
-     */
-    private void serveIfPending() {
-        if (invocationsQueued && run.claimServing(servable)) {
-            mission.scheduler().schedule(this);
-        }
-    }
-
-    /**
-     * Idle, for the deadlock watchdog: it runs nothing until it is woken. Parked (waiting for someone
-     * else) or done, with no invocation queued (a queued one is always served soon: by a serving
-     * slice, or by the agent at its next boundary); parked in {@code wait(state)}, even with
-     * invocations queued, which its state may not allow. The queue is read first: the state read
-     * after it then says whether the agent was idle at that instant, as nothing the watchdog waits
-     * out queues an invocation uncounted (see {@link DeadlockWatchdog}).
-     */
-    boolean isIdle() {
-        boolean nothingQueued = invocations.nothingQueued();
-        return run.isIdle(nothingQueued, attentive);
     }
 
 
@@ -573,67 +489,14 @@ public final class Agent extends ReactingAgent implements AgentContext {
         return invoker.writeAttribute(owner, attribute, write);
     }
 
-    /** Whether the current state lets an agent outside the mission read {@code attribute} (its r bit for o). */
-    boolean othersMayRead(String attribute) {
-        return Permeability.allows(permeability.current(), permeability.attributeId(attribute),
-                PermeabilityState.Requester.OTHER, PermeabilityState.READ);
-    }
-
-    /** This agent's permeability: its type, current state and what that state allows. */
-    public Permeability permeability() {
-        return permeability;
-    }
-
     @Override
     public void setAcceptState(String name) {
         invoker.setAcceptState(name);
     }
 
     @Override
-    public String getAcceptState() {
-        return permeability.currentName();
-    }
-
-    String acceptStateName() {
-        return permeability.currentName();
-    }
-
-    @Override
     public String getAcceptState(AgentImplementation agent) {
         return invoker.getAcceptState(agent);
-    }
-
-    @Override
-    public boolean waitFor(String state) {
-        return waitFor(state, -1);
-    }
-
-    @Override
-    public boolean waitFor(String state, long ms) {
-        atCallBefore();
-        progress++;
-        PermeabilityState attentiveTo = permeability.find(state).orElse(null);
-        if (attentiveTo == null) {
-            uncaughtException(new IllegalArgumentException("no permeability state " + state));
-            return yieldIfSliceUsed();
-        }
-        if (invocations.serveFirstAllowedBy(attentiveTo)) {
-            return yieldIfSliceUsed();
-        }
-        long ticket = prepareToPark();
-        invocations.attend(attentiveTo, ticket);
-        parkAttends = true;
-        if (ms >= 0) {
-            mission.outsideWakeUpStarted();
-            mission.scheduler().scheduleAfter(ms, () -> {
-                if (invocations.stopAttending(ticket)) {
-                    unpark(ticket);
-                }
-                mission.outsideWakeUpEnded();
-            });
-        }
-        // The slice ends PARKED and then serves what the state allows (serveIfPending).
-        return false;
     }
 
     // ---- runtime side --------------------------------------------------------------------------
@@ -648,8 +511,7 @@ public final class Agent extends ReactingAgent implements AgentContext {
     void submitInvocation(PendingInvocation invocation) {
         // Queueing one for an idle agent wakes it, for the deadlock watchdog (Mission): counted first.
         mission.countSchedule();
-        invocations.add(invocation);
-        invocationsQueued = true;
+        queue(invocation);
         serveIfPending();
         mission.changes().advance();
     }
@@ -663,10 +525,9 @@ public final class Agent extends ReactingAgent implements AgentContext {
      */
     void submitInvocationServingInline(PendingInvocation invocation) {
         mission.countSchedule();
-        invocations.add(invocation);
-        invocationsQueued = true;
+        queue(invocation);
         // Once the mission has ended, an invocation is never run: its scheduler would not run a serving slice either.
-        if (!mission.hasEnded() && run.claimServing(servable)) {
+        if (!mission.hasEnded() && claimServing()) {
             serveWhileBlocked();
         }
         mission.changes().advance();

@@ -271,7 +271,7 @@ public final class Mission {
      * @throws IndexOutOfBoundsException if no agent has that proxy id
      */
     public String acceptState(int proxyId) {
-        return agents.get(proxyId).acceptStateName();
+        return agents.get(proxyId).getAcceptState();
     }
 
     /**

@@ -6,6 +6,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.LongSupplier;
 import masl.runtime.Agent;
 import masl.runtime.descriptor.PermeabilityState;
+import masl.runtime.scheduling.ScheduledAgent;
 import masl.runtime.trace.Trace;
 import masl.runtime.trace.TraceEvent;
 
@@ -31,12 +32,12 @@ public final class InvocationServing {
     private final AtomicLong attentiveTicket = new AtomicLong();
     /** The state of the pending {@code wait(state)}; read only while {@link #attentiveTicket} is set. */
     private volatile PermeabilityState attentiveState;
-    private final Agent callee;
+    private final ScheduledAgent callee;
     private final Permeability permeability;
     private final Trace trace;
     private final LongSupplier clock;
 
-    public InvocationServing(Agent callee, Permeability permeability, Trace trace, LongSupplier clock) {
+    public InvocationServing(ScheduledAgent callee, Permeability permeability, Trace trace, LongSupplier clock) {
         this.callee = callee;
         this.permeability = permeability;
         this.trace = trace;

@@ -8,6 +8,7 @@ import masl.runtime.descriptor.PermeabilityState.Requester;
 import masl.runtime.descriptor.PermeabilityState;
 import masl.runtime.descriptor.Primitive;
 import masl.runtime.entry.EntryCoordinator;
+import masl.runtime.entry.MemberAgent;
 
 /**
  * One agent's permeability (MASL §11): its type's states and the current one, and what the
@@ -22,7 +23,7 @@ import masl.runtime.entry.EntryCoordinator;
 public final class Permeability {
 
     private final AgentType type;
-    private final Agent owner;
+    private final MemberAgent owner;
     private final EntryCoordinator coordinator;
     private volatile PermeabilityState current;
 
@@ -31,7 +32,7 @@ public final class Permeability {
      * @param owner the agent
      * @param coordinator whose lock guards the memberships that decide the requester's relation
      */
-    public Permeability(AgentType type, Agent owner, EntryCoordinator coordinator) {
+    public Permeability(AgentType type, MemberAgent owner, EntryCoordinator coordinator) {
         this.type = type;
         this.owner = owner;
         this.coordinator = coordinator;
