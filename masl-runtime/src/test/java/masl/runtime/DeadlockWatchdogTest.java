@@ -18,6 +18,7 @@ import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.TestAgent;
+import masl.runtime.testing.Watching;
 import masl.runtime.testing.TestTypes;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -337,20 +338,6 @@ class DeadlockWatchdogTest {
               else { while (.signal(1) == 0) {} a0.measure(); }
             }
             """);
-
-    /** An agent whose {@code signal} answers whether {@code parked} holds yet. */
-    private static final class Watching extends TestAgent {
-        private final BooleanSupplier parked;
-
-        Watching(BooleanSupplier parked) {
-            this.parked = parked;
-        }
-
-        @Override
-        public int signal(int value) {
-            return parked.getAsBoolean() ? value : 0;
-        }
-    }
 
     @Test
     void aWaitNoQueuedInvocationCanEndIsADeadlock() throws InterruptedException {

@@ -11,6 +11,7 @@ import masl.runtime.testing.Driver;
 import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
+import masl.runtime.testing.Watching;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -51,20 +52,6 @@ class InvocationServingTest {
               .logln("served " + a1.getProxyID());
             }
             """);
-
-    /** An agent whose {@code signal} answers whether {@code finished} holds yet. */
-    private static final class Watching extends TestAgent {
-        private final BooleanSupplier finished;
-
-        Watching(BooleanSupplier finished) {
-            this.finished = finished;
-        }
-
-        @Override
-        public int signal(int value) {
-            return finished.getAsBoolean() ? value : 0;
-        }
-    }
 
     @ParameterizedTest
     @EnumSource(Driver.class)
