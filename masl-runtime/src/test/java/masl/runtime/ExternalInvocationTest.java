@@ -4,14 +4,16 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.StringWriter;
+import java.time.Duration;
+import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.atomic.AtomicReferenceArray;
-import masl.runtime.testing.CompactProgram;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
+import masl.runtime.testing.Watching;
 import masl.runtime.trace.JsonLinesTrace;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -89,111 +91,41 @@ class ExternalInvocationTest {
     }
 
     /**
-     * Agent 0 calls agent 1 while agent 1 is stuck at the synchronisation barrier of {@code pair},
-     * waiting for agent 2, which busy-waits until that call has been answered: only serving on the
-     * callee's behalf lets the mission end.
-     * <pre>
-     * asynchronous entry main (true) {
-     *   shared int looping = 0; shared int served = 0; shared int arrived = 0;
-     *   arrived++; while (arrived &lt; 3) {}            // pair's first wave is the whole team
-     *   synchronous entry pair (me != 0) {
-     *     .nop();
-     *     if (me == 1) .nop();                        // then stuck at the barrier
-     *     else { while (served == 0) {} .nop(); }     // sets looping = 1 as a test signal
-     *   }
-     *   if (me == 0) {
-     *     wait until looping == 1 and agent 1 is parked;
-     *     .logln("served " + a1.getProxyID()); served = 1;
-     *   }
-     * }
-     * </pre>
-     * Written by hand: agent 0 calls only once agent 1 is parked ({@code Agent.isIdle}), which no
-     * MASL program can observe.
+     * Agent 0 calls agent 1 while agent 1 is stuck at a barrier of {@code pair}, waiting for agent
+     * 2, which busy-waits until that call has been answered: only serving on the callee's behalf lets
+     * the mission end. Agent 0 spins until agent 2 loops and agent 1 is parked ({@code signal(1)}
+     * answers 1 once agent 1 is idle).
      */
-    static final class StuckCallee extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
-        static final SharedDeclaration<Integer> LOOPING = MAIN.declareShared("looping", 0);
-        static final SharedDeclaration<Integer> SERVED = MAIN.declareShared("served", 0);
-        static final SharedDeclaration<Integer> ARRIVED = MAIN.declareShared("arrived", 0);
-        static final EntryDefinition PAIR = MAIN.child("pair", Mode.SYNCHRONOUS);
-
-        private final AtomicReferenceArray<TestAgent> population;
-        private final AtomicReferenceArray<AgentContext> contexts;
-        private CompletableFuture<Integer> call;
-
-        StuckCallee(TestAgent self, AtomicReferenceArray<TestAgent> population,
-                AtomicReferenceArray<AgentContext> contexts) {
-            super(self);
-            this.population = population;
-            this.contexts = contexts;
-            population.set(self.getProxyID(), self);
-        }
-
-        @Override
-        @SuppressWarnings("fallthrough") // resumption points fall through into the next one
-        protected void resume(AgentContext ctx) {
-            int me = self.getProxyID();
-            while (true) {
-                switch (pc) {
-                    case 0:
-                        contexts.set(me, ctx);
-                        if (!arrive(ctx, MAIN, true, 20, 12)) return;
-                        continue;
-                    case 20:
-                        ctx.shared(ARRIVED).getAndUpdate(arrived -> arrived + 1);
-                        if (!step(ctx, 21)) return;
-                        continue;
-                    case 21: if (!busyWait(ctx, ctx.shared(ARRIVED).get() < 3, 1)) return; continue;
-                    case 1: if (!arrive(ctx, PAIR, me != 0, 2, 6)) return; continue;
-                    case 2: self.nop(); if (!step(ctx, 3)) return; continue;
-                    case 3:
-                        if (me == 1) {
-                            self.nop();
-                            if (!step(ctx, 5)) return;
-                            continue;
-                        }
-                        ctx.shared(LOOPING).set(1);
-                        pc = 4;
-                    case 4: if (!busyWait(ctx, ctx.shared(SERVED).get() == 0, 41)) return; continue;
-                    case 41: self.nop(); if (!step(ctx, 5)) return; continue;
-                    case 5: if (!leave(ctx, PAIR, 6)) return; continue;
-                    case 6: if (!endOf(ctx, PAIR.sequence(), 7)) return; continue;
-                    case 7:
-                        if (me != 0) {
-                            pc = 11;
-                            continue;
-                        }
-                        if (ctx.shared(LOOPING).get() == 0 || !((Agent) contexts.get(1)).isIdle()) {
-                            if (!loop(ctx, 7)) return;
-                            continue;
-                        }
-                        TestAgent callee = population.get(1);
-                        call = ctx.invoke(callee, "getProxyID", -1, callee::getProxyID);
-                        pc = 8;
-                        if (!ctx.await(call)) return;
-                    case 8:
-                        self.logln("served " + call.join());
-                        ctx.shared(SERVED).set(1);
-                        if (!step(ctx, 11)) return;
-                        continue;
-                    case 11: if (!leave(ctx, MAIN, 12)) return; continue;
-                    case 12: if (!endOf(ctx, MAIN.sequence(), 13)) return; continue;
-                    case 13: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
+    private static final MaslProgram STUCK_CALLEE = MaslProgram.of("stuck.masl", 3, """
+            asynchronous entry main (true) {
+              shared int looping = 0;
+              shared int served = 0;
+              shared int arrived = 0;
+              arrived++;
+              while (arrived < 3) {}
+              synchronous entry pair (.getProxyID() != 0) {
+                .nop();
+                if (.getProxyID() == 1) .nop();
+                else { looping = 1; while (served == 0) {} .nop(); }
+              }
+              if (.getProxyID() == 0) {
+                while (looping == 0 || .signal(1) == 0) {}
+                .logln("served " + a1.getProxyID());
+                served = 1;
+              }
             }
-        }
-    }
+            """);
 
     @ParameterizedTest
     @EnumSource(Driver.class)
-    void aCalleeStuckAtASynchronisationBarrierServesItsCaller(Driver driver) {
+    void aCalleeStuckAtASynchronisationBarrierServesItsCaller(Driver driver) throws InterruptedException {
         for (int run = 0; run < Missions.REPETITIONS; run++) {
-            AtomicReferenceArray<TestAgent> population = new AtomicReferenceArray<>(3);
-            AtomicReferenceArray<AgentContext> contexts = new AtomicReferenceArray<>(3);
-            String journal = Missions.run(driver, StuckCallee.MAIN, 3,
-                    self -> new StuckCallee(self, population, contexts)).journal();
-            assertEquals("served 1\n", journal);
+            List<TestAgent> agents = new ArrayList<>();
+            AtomicReference<Mission> mission = new AtomicReference<>();
+            BooleanSupplier calleeParked = () -> mission.get().agentOf(agents.get(1)).isIdle();
+            mission.set(STUCK_CALLEE.newMission(MaslProgram.recording(() -> new Watching(calleeParked), agents))
+                    .scheduler(driver.newScheduler()).build());
+            assertEquals("served 1\n", mission.get().run(Duration.ofSeconds(20)).requireCompleted().journal());
         }
     }
 }

@@ -4,11 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.time.Duration;
 import java.util.concurrent.atomic.AtomicReference;
-import masl.runtime.descriptor.AgentType;
-import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.TestAgent;
-import masl.runtime.testing.TestTypes;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -23,53 +21,44 @@ import org.junit.jupiter.params.provider.EnumSource;
 @Timeout(120)
 class OutsideRequesterTest {
 
-    static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SCALAR);
-
     /**
-     * Written by hand: the request from outside is submitted within the agent's instruction, and
-     * the agent logs its state in {@code nothing}, where its own {@code .log} would be denied.
+     * {@code signal(0)} submits the request, of zero duration; the step boundary of the first
+     * {@code setAcceptState} serves it in that state; the agent logs in {@code default}.
      */
-    static final class Requesting extends CompactProgram {
-        private final String state;
+    private static final String REQUESTING = """
+            scalar entry main (true) {
+              .signal(0);
+              setAcceptState("%1$s");
+              setAcceptState("default");
+              .log("%1$s: ");
+            }
+            """;
+
+    /** An agent whose {@code signal} submits a request for its own {@code nop} from outside the mission. */
+    private static final class Requesting extends TestAgent {
         private final AtomicReference<Mission> mission;
 
-        Requesting(TestAgent self, String state, AtomicReference<Mission> mission) {
-            super(self);
-            this.state = state;
+        Requesting(AtomicReference<Mission> mission) {
             this.mission = mission;
         }
 
         @Override
-        protected void resume(AgentContext ctx) {
-            while (true) {
-                switch (pc) {
-                    case 0: if (!arrive(ctx, MAIN, true, 1, 4)) return; continue;
-                    case 1: ctx.setAcceptState(state); if (!step(ctx, 2)) return; continue;
-                    case 2:
-                        mission.get().submitInvocation(0, "nop", () -> self.log("ran "), () -> self.log("denied "));
-                        self.log(ctx.getAcceptState() + ": ");
-                        if (!step(ctx, 3)) return;
-                        continue;
-                    case 3: if (!leave(ctx, MAIN, 4)) return; continue;
-                    case 4: if (!endOf(ctx, MAIN.sequence(), 5)) return; continue;
-                    case 5: ctx.finish(); return;
-                    default: throw new IllegalStateException("pc " + pc);
-                }
-            }
+        public int signal(int value) {
+            mission.get().submitInvocation(0, "nop", () -> log("ran "), () -> log("denied "));
+            return value;
         }
     }
 
     @ParameterizedTest
     @EnumSource(Driver.class)
     void aRequestFromOutsideIsFilteredAsOther(Driver driver) throws InterruptedException {
-        AgentType type = TestTypes.testAgent();
         StringBuilder journals = new StringBuilder();
         for (String state : new String[] {"x1", "default", "x6", "nothing"}) {
             AtomicReference<Mission> mission = new AtomicReference<>();
-            mission.set(Mission.builder().main(MAIN).scheduler(driver.newScheduler())
-                    .agent("a0", new TestAgent(), type, self -> new Requesting(self, state, mission)).build());
+            mission.set(MaslProgram.of("outside-" + state + ".masl", 1, REQUESTING.formatted(state))
+                    .newMission(() -> new Requesting(mission)).scheduler(driver.newScheduler()).build());
             journals.append(mission.get().run(Duration.ofSeconds(20)).requireCompleted().journal()).append('|');
         }
-        assertEquals("x1: ran |default: ran |x6: denied |nothing: denied |", journals.toString());
+        assertEquals("ran x1: |ran default: |denied x6: |denied nothing: |", journals.toString());
     }
 }
