@@ -20,6 +20,7 @@ import masl.runtime.scheduling.Scheduler;
 import masl.runtime.scheduling.ThreadPerAgentScheduler;
 import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.Driver;
+import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
 import org.junit.jupiter.api.Test;
@@ -167,7 +168,7 @@ class InlineServingTest {
 
     private static Runnable denial() {
         return () -> {
-            throw new AssertionError("an agent without a type denies nothing");
+            throw new AssertionError("an agent without a type, or in state default, denies nothing");
         };
     }
 
@@ -194,27 +195,31 @@ class InlineServingTest {
         assertEquals("released\n", ended.journal());
     }
 
-    /** Written by hand: the invocation is submitted from inside the program's slice, between two runtime calls. */
+    /** The agent's {@code nop} submits an invocation while the agent runs; the step boundary after it serves it. */
+    private static final MaslProgram RUNNING = MaslProgram.of("running.masl", 1, """
+            scalar entry main (true) { .nop(); .log("boundary"); }
+            """);
+
+    /** An agent whose {@code nop} submits an invocation of itself, as the JADE bridge does. */
+    private static final class Submitting extends TestAgent {
+        private final AtomicReference<Mission> mission;
+
+        Submitting(AtomicReference<Mission> mission) {
+            this.mission = mission;
+        }
+
+        @Override
+        public void nop() {
+            log("before ");
+            mission.get().serveOrQueueInvocation(0, "nop", () -> log("served "), denial());
+            log("after ");
+        }
+    }
+
     @Test
     void aRunningAgentServesItAtItsNextBoundaryOnItsOwnThread() throws InterruptedException {
         AtomicReference<Mission> mission = new AtomicReference<>();
-        mission.set(Mission.builder().scheduler(new ThreadPerAgentScheduler())
-                .agent("a", new TestAgent(), self -> new CompactProgram(self) {
-                    @Override
-                    protected void resume(AgentContext ctx) {
-                        if (pc == 0) {
-                            self.log("before ");
-                            mission.get().serveOrQueueInvocation(0, "nop", () -> self.log("served "), denial());
-                            self.log("after ");
-                            pc = 1;
-                            if (!ctx.stepBoundary()) {
-                                return;
-                            }
-                        }
-                        self.log("boundary");
-                        ctx.finish();
-                    }
-                }).build());
+        mission.set(RUNNING.newMission(() -> new Submitting(mission)).scheduler(new ThreadPerAgentScheduler()).build());
 
         MissionOutcome outcome = mission.get().run(TIMEOUT);
 
