@@ -12,9 +12,9 @@ import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
 import masl.bench.jade.AclPingPong;
 import masl.bench.jade.BridgePingPong;
-import masl.jade.JadeException;
-import masl.jade.JadeOptions;
-import masl.jade.JadePlatform;
+import masl.jade.platform.JadeException;
+import masl.jade.platform.JadeOptions;
+import masl.jade.platform.JadePlatform;
 
 /**
  * {@code gradle bench}: runs MASL and its baselines side by side in one JVM and prints tables of

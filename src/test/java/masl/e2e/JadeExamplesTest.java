@@ -4,8 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.Arrays;
 import java.util.List;
-import masl.jade.JadePlatform;
-import masl.jade.Readiness;
+import masl.jade.platform.JadePlatform;
+import masl.jade.platform.Readiness;
 import masl.testing.jade.JadePlatformExtension;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;

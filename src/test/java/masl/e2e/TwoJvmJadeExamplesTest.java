@@ -12,7 +12,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.regex.Pattern;
 import masl.cli.Main;
-import masl.jade.JadeThreads;
+import masl.jade.platform.JadeThreads;
 import masl.testing.jade.SecondJvm;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;

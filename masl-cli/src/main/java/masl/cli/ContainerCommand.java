@@ -3,11 +3,11 @@ package masl.cli;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.time.Duration;
-import masl.jade.JadeException;
-import masl.jade.JadeOptions;
-import masl.jade.MaslContainer;
-import masl.jade.MissionSecret;
-import masl.jade.SecretFile;
+import masl.jade.placement.MaslContainer;
+import masl.jade.platform.JadeException;
+import masl.jade.platform.JadeOptions;
+import masl.jade.trust.MissionSecret;
+import masl.jade.trust.SecretFile;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.descriptor.DescriptorLoader;
 
@@ -19,7 +19,7 @@ import masl.runtime.descriptor.DescriptorLoader;
  * waited for for {@value #JOIN_SECONDS} s. Standard output shows each shared event the coordinator
  * sends ({@code masl-event {"event": …}}) and, at the end, the bodies hosted
  * ({@code masl-ended hosted b,d}); standard error, once the bodies are placed, the line
- * {@code masl: container ready: name=C host=H port=P platform=… agents=b,d} ({@link masl.jade.Readiness}); exit 0 once the mission ended, 2 if {@code --timeout} elapsed first, the
+ * {@code masl: container ready: name=C host=H port=P platform=… agents=b,d} ({@link masl.jade.platform.Readiness}); exit 0 once the mission ended, 2 if {@code --timeout} elapsed first, the
  * platform cannot be joined, or the coordinator or the main container disappeared (noticed within a second), or the platform shut
  * down, whether or not bodies were placed here.
  * It obeys only the platform's coordinator, and only messages signed with the secret {@code masl run}

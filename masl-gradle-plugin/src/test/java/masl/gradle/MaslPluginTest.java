@@ -77,7 +77,7 @@ class MaslPluginTest {
     void maslRunInsideJadePrintsTheSameJournal() {
         BuildResult result = gradle(project, "-q", "maslRun", "-Pmission=team", "-Pplatform=jade").build();
 
-        // Standard error says once where the platform accepts containers (masl.jade.Readiness).
+        // Standard error says once where the platform accepts containers (masl.jade.platform.Readiness).
         String readiness = "(?m)^masl: platform ready: host=127\\.0\\.0\\.1 port=\\d+ platform=\\S+\n";
         assertEquals("Hi team\n", result.getOutput().replaceFirst(readiness, ""), result.getOutput());
     }

@@ -8,7 +8,7 @@ import masl.jade.acl.Reply;
 import masl.runtime.AgentImplementation;
 
 /** Runs a request's primitive and makes its answer: {@code INFORM} with the result, or {@code FAILURE}. */
-final class Answers {
+public final class Answers {
 
     private Answers() {
     }
@@ -18,7 +18,7 @@ final class Answers {
      * answering the coordinator), the answer also carries the journal text the primitive wrote,
      * read once it has returned; without, it is the plain answer any FIPA agent gets.
      */
-    static ACLMessage run(ACLMessage request, PrimitiveTable.Call call, AgentImplementation target,
+    public static ACLMessage run(ACLMessage request, PrimitiveTable.Call call, AgentImplementation target,
             CharSequence journal) {
         Object result;
         try {
@@ -40,7 +40,7 @@ final class Answers {
     }
 
     /** The {@code REFUSE} of a request that the permeability of {@code agent} denies to others. */
-    static ACLMessage refusal(ACLMessage request, String agent, String primitive) {
+    public static ACLMessage refusal(ACLMessage request, String agent, String primitive) {
         return AclInvocations.reply(request, Reply.Kind.REFUSED,
                 JsonContent.refusal("the permeability of " + agent + " denies others invoking " + primitive));
     }

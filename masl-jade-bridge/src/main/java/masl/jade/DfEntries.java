@@ -6,19 +6,20 @@ import jade.domain.FIPAAgentManagement.Property;
 import jade.domain.FIPAAgentManagement.ServiceDescription;
 import jade.domain.FIPANames;
 import masl.jade.acl.AclInvocations;
+import masl.jade.placement.MaslContainer;
 import masl.runtime.descriptor.Primitive;
 
 /** What the bridge's agents register with the DF. */
-final class DfEntries {
+public final class DfEntries {
 
     /** DF service type of a MASL agent's type; the service's name is the type's short name. */
     static final String TYPE_SERVICE = "masl-agent";
     /** DF service type of each primitive; the service's name is the primitive's name. */
-    static final String PRIMITIVE_SERVICE = "masl-primitive";
+    public static final String PRIMITIVE_SERVICE = "masl-primitive";
     /** DF service type of a container hosting bodies ({@link MaslContainer}); named after the container. */
-    static final String CONTAINER_SERVICE = "masl-container";
+    public static final String CONTAINER_SERVICE = "masl-container";
     /** DF service type of the coordinator of a mission spanning containers. */
-    static final String COORDINATOR_SERVICE = "masl-coordinator";
+    public static final String COORDINATOR_SERVICE = "masl-coordinator";
 
     private DfEntries() {
     }
@@ -55,7 +56,7 @@ final class DfEntries {
     }
 
     /** One service of {@code serviceType} named {@code name}: a search template too. */
-    static DFAgentDescription service(AID agent, String serviceType, String name) {
+    public static DFAgentDescription service(AID agent, String serviceType, String name) {
         DFAgentDescription description = new DFAgentDescription();
         if (agent != null) {
             description.setName(agent);

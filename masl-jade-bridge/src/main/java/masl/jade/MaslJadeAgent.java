@@ -7,6 +7,10 @@ import java.util.concurrent.CountDownLatch;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
 import masl.jade.acl.EventContent;
+import masl.jade.outside.AttributeQueries;
+import masl.jade.outside.EventSubscribers;
+import masl.jade.outside.OutsideCalls;
+import masl.jade.placement.CoordinatorAgent;
 import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 
@@ -49,7 +53,7 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
     }
 
     @Override
-    Behaviour requestServer() {
+    protected Behaviour requestServer() {
         return new RequestServer();
     }
 

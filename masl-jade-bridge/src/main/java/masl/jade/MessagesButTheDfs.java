@@ -12,13 +12,13 @@ import java.util.function.Consumer;
  * events: the DF calls the agent makes itself ({@code DFService.register}, {@code search}) and an
  * {@link AMSSubscriber} wait for those in its queue.
  */
-final class MessagesButTheDfs extends CyclicBehaviour {
+public final class MessagesButTheDfs extends CyclicBehaviour {
     private static final long serialVersionUID = 1L;
 
     private final transient MessageTemplate notFromTheDf;
     private final transient Consumer<ACLMessage> taker;
 
-    MessagesButTheDfs(Agent agent, Consumer<ACLMessage> taker) {
+    public MessagesButTheDfs(Agent agent, Consumer<ACLMessage> taker) {
         super(agent);
         this.notFromTheDf = MessageTemplate.not(MessageTemplate.or(MessageTemplate.MatchSender(agent.getDefaultDF()),
                 MessageTemplate.or(MessageTemplate.MatchConversationId(AMSSubscriber.PLATFORM_EVENTS),

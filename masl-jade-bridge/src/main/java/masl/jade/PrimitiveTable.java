@@ -11,6 +11,7 @@ import masl.jade.acl.Argument;
 import masl.jade.acl.ContentException;
 import masl.jade.acl.InvocationRequest;
 import masl.jade.acl.JsonValues;
+import masl.jade.platform.JadeException;
 import masl.runtime.AgentImplementation;
 import masl.runtime.descriptor.AgentType;
 import masl.runtime.descriptor.Primitive;
@@ -21,7 +22,7 @@ import masl.runtime.descriptor.Primitive;
  * request naming anything else, or giving arguments the method cannot take, is not understood.
  * Immutable.
  */
-final class PrimitiveTable {
+public final class PrimitiveTable {
 
     private final AgentType type;
     private final Map<String, Binding> primitives = new LinkedHashMap<>();
@@ -30,7 +31,7 @@ final class PrimitiveTable {
     }
 
     /** A request bound to its method, with its arguments converted: ready to run. */
-    record Call(Primitive primitive, Method method, Object[] args) {
+    public record Call(Primitive primitive, Method method, Object[] args) {
 
         /**
          * Runs the primitive on {@code target} (ignored for a static one).
@@ -50,7 +51,7 @@ final class PrimitiveTable {
      * @throws JadeException if a primitive the descriptor declares has no public method of that name
      *                       and number of parameters in {@code implementation}
      */
-    PrimitiveTable(AgentType type, Class<? extends AgentImplementation> implementation) {
+    public PrimitiveTable(AgentType type, Class<? extends AgentImplementation> implementation) {
         this.type = type;
         for (Primitive primitive : type.primitives()) {
             Method method = Arrays.stream(implementation.getMethods())
@@ -63,16 +64,16 @@ final class PrimitiveTable {
         }
     }
 
-    AgentType type() {
+    public AgentType type() {
         return type;
     }
 
-    List<Primitive> primitives() {
+    public List<Primitive> primitives() {
         return primitives.values().stream().map(Binding::primitive).toList();
     }
 
     /** The methods bound to the primitives, in the order of {@link #primitives()}. */
-    List<Method> methods() {
+    public List<Method> methods() {
         return primitives.values().stream().map(Binding::method).toList();
     }
 
@@ -82,7 +83,7 @@ final class PrimitiveTable {
      *
      * @throws ContentException positioned at the primitive's name or the faulty argument
      */
-    Call bind(InvocationRequest request) throws ContentException {
+    public Call bind(InvocationRequest request) throws ContentException {
         Binding binding = primitives.get(request.primitive());
         if (binding == null) {
             throw new ContentException("unknown primitive \"" + request.primitive() + "\": " + type.shortName()

@@ -14,7 +14,7 @@ import masl.jade.acl.ContentException;
  * primitives ({@link DfEntries#maslAgent}) while it lives, serving requests with the behaviour its
  * subclass gives. The launcher waits on {@code ready}, then checks {@link #registrationFailure()}.
  */
-abstract class RegisteredMaslAgent extends Agent {
+public abstract class RegisteredMaslAgent extends Agent {
     private static final long serialVersionUID = 1L;
 
     private final transient PrimitiveTable primitives;
@@ -22,18 +22,18 @@ abstract class RegisteredMaslAgent extends Agent {
     private transient volatile Thread thread;
     private transient volatile FIPAException registrationFailure;
 
-    RegisteredMaslAgent(PrimitiveTable primitives, CountDownLatch ready) {
+    public RegisteredMaslAgent(PrimitiveTable primitives, CountDownLatch ready) {
         this.primitives = primitives;
         this.ready = ready;
     }
 
     /** The agent's type's primitives, bound to its implementation. */
-    final PrimitiveTable table() {
+    protected final PrimitiveTable table() {
         return primitives;
     }
 
     /** The cyclic behaviour that reads this agent's messages. */
-    abstract Behaviour requestServer();
+    protected abstract Behaviour requestServer();
 
     @Override
     protected final void setup() {
@@ -64,7 +64,7 @@ abstract class RegisteredMaslAgent extends Agent {
      * malformed request, an unknown primitive or unusable arguments are answered
      * {@code NOT_UNDERSTOOD} here.
      */
-    final PrimitiveTable.Call requestedCall(ACLMessage message) {
+    protected final PrimitiveTable.Call requestedCall(ACLMessage message) {
         if (message.getPerformative() == ACLMessage.NOT_UNDERSTOOD) {
             return null;
         }
@@ -80,18 +80,18 @@ abstract class RegisteredMaslAgent extends Agent {
      * Sends an answer with this agent as its sender, set here: JADE's {@code send} finds a missing
      * sender by catching a {@code NullPointerException}, a cost on every answer otherwise.
      */
-    final void answer(ACLMessage reply) {
+    protected final void answer(ACLMessage reply) {
         reply.setSender(getAID());
         send(reply);
     }
 
     /** Why the DF refused the registration, or null if it accepted it. */
-    final FIPAException registrationFailure() {
+    public final FIPAException registrationFailure() {
         return registrationFailure;
     }
 
     /** The agent's own JADE thread (set once it has started). */
-    final Thread thread() {
+    public final Thread thread() {
         return thread;
     }
 }

@@ -5,8 +5,12 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
-import masl.testing.jade.SecondJvm;
+import masl.jade.placement.MaslContainer;
+import masl.jade.platform.JadeOptions;
+import masl.jade.platform.JadePlatform;
+import masl.jade.trust.MissionSecret;
 import masl.runtime.MissionProgram;
+import masl.testing.jade.SecondJvm;
 
 /**
  * Run in a second JVM by the tests of missions spanning containers: joins the platform at

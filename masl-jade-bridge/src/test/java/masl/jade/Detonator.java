@@ -7,7 +7,7 @@ package masl.jade;
 public final class Detonator extends RuntimeException {
     private static final long serialVersionUID = 1L;
 
-    static final String MARK = "masl.jade.test.detonated";
+    public static final String MARK = "masl.jade.test.detonated";
 
     static {
         System.setProperty(MARK, "yes");

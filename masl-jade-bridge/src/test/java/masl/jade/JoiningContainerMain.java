@@ -5,6 +5,9 @@ import jade.core.Agent;
 import jade.core.behaviours.OneShotBehaviour;
 import jade.lang.acl.ACLMessage;
 import java.util.concurrent.CountDownLatch;
+import masl.jade.platform.JadeOptions;
+import masl.jade.platform.JadePlatform;
+import masl.jade.platform.TwoJvmTest;
 
 /**
  * Run in a second JVM by {@link TwoJvmTest}: joins the platform at {@code host port}, says hello to

@@ -1,5 +1,8 @@
 package masl.jade;
 
+import masl.jade.platform.JadeOptions;
+import masl.jade.platform.JadePlatform;
+
 /**
  * Run in a second JVM by the tests of a coordinator that dies: starts a main container on a free
  * loopback port, prints {@code port P}, and stays until its standard input closes or it is killed.

@@ -15,7 +15,7 @@ public class ServiceAgent extends TestAgent {
         }
     }
 
-    static volatile Gate gate = new Gate();
+    public static volatile Gate gate = new Gate();
 
     /** Others may read it (QUERY_REF). */
     public int battery = 80;

@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.Function;
+import masl.jade.platform.JadePlatform;
 import masl.runtime.AgentContext;
 import masl.runtime.AgentProgram;
 import masl.runtime.EntryDefinition;

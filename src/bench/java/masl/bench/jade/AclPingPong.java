@@ -12,9 +12,9 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicLong;
-import masl.jade.AgentDeletion;
-import masl.jade.JadeOptions;
-import masl.jade.JadePlatform;
+import masl.jade.platform.AgentDeletion;
+import masl.jade.platform.JadeOptions;
+import masl.jade.platform.JadePlatform;
 
 /**
  * The invocation benchmark's baseline: raw JADE {@code REQUEST}/{@code INFORM} round trips per second between

@@ -22,7 +22,7 @@ final class Pinger extends Agent {
 
     /** How long agents may take to start, and pingers to finish beyond their window. */
     private static final Duration SLACK = Duration.ofSeconds(90);
-    /** How long a measurement waits for its agents to be gone, deleted one by one ({@link masl.jade.AgentDeletion}). */
+    /** How long a measurement waits for its agents to be gone, deleted one by one ({@link masl.jade.platform.AgentDeletion}). */
     static final Duration AGENTS_GONE_WITHIN = Duration.ofSeconds(30);
 
     /** What all pingers of one measurement share: start signals, the count, the timing. */

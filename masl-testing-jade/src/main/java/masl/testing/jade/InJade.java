@@ -2,7 +2,7 @@ package masl.testing.jade;
 
 import java.time.Duration;
 import masl.jade.JadeLauncher;
-import masl.jade.JadePlatform;
+import masl.jade.platform.JadePlatform;
 import masl.runtime.MissionOutcome;
 import masl.runtime.descriptor.DescriptorLoader;
 import masl.runtime.trace.Trace;

@@ -4,9 +4,9 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Collectors;
-import masl.jade.JadeOptions;
-import masl.jade.JadePlatform;
-import masl.jade.JadeThreads;
+import masl.jade.platform.JadeOptions;
+import masl.jade.platform.JadePlatform;
+import masl.jade.platform.JadeThreads;
 import masl.testing.MissionPlatform;
 import org.junit.jupiter.api.extension.AfterAllCallback;
 import org.junit.jupiter.api.extension.AfterEachCallback;
@@ -86,7 +86,7 @@ public final class JadePlatformExtension
     /**
      * The platform of the class (or of the test), started by the first call.
      *
-     * @throws masl.jade.JadeException if JADE cannot start it; the message says why
+     * @throws masl.jade.platform.JadeException if JADE cannot start it; the message says why
      * @throws IllegalStateException if called outside the tests it serves
      */
     public synchronized JadePlatform platform() {

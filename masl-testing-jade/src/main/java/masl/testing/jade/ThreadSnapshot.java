@@ -3,7 +3,7 @@ package masl.testing.jade;
 import java.time.Duration;
 import java.util.List;
 import java.util.Set;
-import masl.jade.JadeThreads;
+import masl.jade.platform.JadeThreads;
 
 /**
  * The threads alive at one moment, to tell which threads a test started and left behind: those alive
