@@ -195,9 +195,12 @@ public final class ContainerHost extends Agent {
     }
 
     private void take(ACLMessage message) {
-        if (message.getPerformative() == ACLMessage.FAILURE && message.getSender().equals(getAMS())
-                && ALIVE.equals(message.getConversationId())) {
-            if (ended.getCount() > 0) {
+        if (message.getSender() != null && message.getSender().equals(getAMS())) {
+            // The AMS says a message to the coordinator (a check, a deployed agent's) was undeliverable;
+            // it is never answered, lest it answer back.
+            boolean toCoordinator = ALIVE.equals(message.getConversationId())
+                    || CoordinatorAgent.DEPLOYED.equals(message.getConversationId());
+            if (message.getPerformative() == ACLMessage.FAILURE && toCoordinator && ended.getCount() > 0) {
                 lost = placed ? "the mission's coordinator is gone (its JVM died or it left the platform)"
                         : "the platform's main container is gone";
                 stopTeam(lost);

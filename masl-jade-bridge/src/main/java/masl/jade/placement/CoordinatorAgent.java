@@ -148,6 +148,24 @@ public final class CoordinatorAgent extends Agent {
         this.deployed = taker;
     }
 
+    /**
+     * The {@code reply-with} of a coordination message to a container's agent {@code receiver} (local
+     * name): the AMS's {@code FAILURE} when it cannot be delivered names it in its {@code in-reply-to},
+     * which tells whose container is gone ({@link #deployedReceiver}).
+     */
+    static String deployedReplyWith(String receiver, long number) {
+        return DEPLOYED + ">" + receiver + ">" + number;
+    }
+
+    /** The receiver a {@link #deployedReplyWith} names; null if {@code replyWith} is none. */
+    static String deployedReceiver(String replyWith) {
+        if (replyWith == null || !replyWith.startsWith(DEPLOYED + ">")) {
+            return null;
+        }
+        int end = replyWith.lastIndexOf('>');
+        return end <= DEPLOYED.length() ? null : replyWith.substring(DEPLOYED.length() + 1, end);
+    }
+
     /** Stops waiting for the answer to {@code request}: one that comes later answers nothing. Any thread. */
     public void forget(ACLMessage request) {
         answers.fail(request.getReplyWith(), new CancellationException("no longer waited for"));
@@ -186,6 +204,10 @@ public final class CoordinatorAgent extends Agent {
             } else {
                 refuse(message, refusal);
             }
+        } else if (message.getPerformative() == ACLMessage.FAILURE && message.getSender() != null
+                && message.getSender().equals(getAMS()) && deployedReceiver(message.getInReplyTo()) != null) {
+            // A deployed agent's message its container can no longer take: the container is gone.
+            unreachable.accept(deployedReceiver(message.getInReplyTo()));
         } else if (message.getPerformative() == ACLMessage.INFORM && DEPLOYED.equals(message.getConversationId())) {
             String refusal = channel.refusal(message);
             if (refusal == null) {

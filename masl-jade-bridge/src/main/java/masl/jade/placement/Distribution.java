@@ -18,6 +18,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import masl.jade.Answers;
 import masl.jade.JadeLauncher;
@@ -92,6 +93,7 @@ public final class Distribution {
     }
 
     private volatile Deployed deployed = new Deployed(Map.of(), null, null, List.of());
+    private final AtomicLong deployedMessages = new AtomicLong();
 
     /** What a relayed request needs: the mission, each agent's name, primitives and implementation, the time limit. */
     private record Served(Mission mission, List<String> names, List<PrimitiveTable> tables,
@@ -163,7 +165,10 @@ public final class Distribution {
         return message -> {
             Deployed deployment = deployed;
             AID container = containers.get(deployment.containerOfAgent().get(deployment.names().get(proxyId)));
-            coordinator.postSigned(inform(container, CoordinatorAgent.DEPLOYED, message.toString()));
+            ACLMessage inform = inform(container, CoordinatorAgent.DEPLOYED, message.toString());
+            inform.setReplyWith(CoordinatorAgent.deployedReplyWith(container.getLocalName(),
+                    deployedMessages.incrementAndGet()));
+            coordinator.postSigned(inform);
         };
     }
 
