@@ -23,7 +23,7 @@ final class CommandLine {
             "compile", Set.of("--agent-path", "-d", "--quiet"),
             "run", Set.of("--agent-path", "--threads", "--quiet", "--seed", "--timeout", "--call-timeout", "--trace",
                     "--trace-limit", "--platform", "--main-host", "--main-port", "--sim", "--out", "--place", "--port",
-                    "--secret-file", "--no-cache"),
+                    "--deploy", "--secret-file", "--no-cache"),
             "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout", "--secret-file"),
             "timeline", Set.of("-o"),
             "lsp", Set.of("--agent-path"));
@@ -56,6 +56,7 @@ final class CommandLine {
     Integer mainPort;
     String scenarioFile;
     String place;
+    String deploy;
     Integer port;
     String containerName;
     String secretFile;
@@ -138,6 +139,7 @@ final class CommandLine {
             case "--main-port" -> mainPort = port(option, value);
             case "--port" -> port = port(option, value);
             case "--place" -> place = value;
+            case "--deploy" -> deploy = value;
             case "--name" -> containerName = value;
             case "--secret-file" -> secretFile = value;
             default -> throw new UsageException("unknown option " + option);

@@ -14,8 +14,9 @@ import masl.runtime.descriptor.DescriptorLoader;
 /**
  * {@code masl container --main-host H --main-port P --name C}: joins a JADE platform as container
  * {@code C}, hosts the bodies of the agents that a {@code masl run --platform jade --place …} places
- * on it (their implementations' primitives run here, their programs in the coordinator's JVM), and
- * ends when the coordinator says the mission ended. The main container may start later: it is
+ * on it (their implementations' primitives run here, their programs in the coordinator's JVM), runs
+ * the programs of those a {@code --deploy …} deploys on it (translated here, {@link ContainerTranslator}),
+ * and ends when the coordinator says the mission ended. The main container may start later: it is
  * waited for for {@value #JOIN_SECONDS} s. Standard output shows each shared event the coordinator
  * sends ({@code masl-event {"event": …}}) and, at the end, the bodies hosted
  * ({@code masl-ended hosted b,d}); standard error, once the bodies are placed, the line
@@ -49,7 +50,8 @@ final class ContainerCommand {
         DescriptorLoader descriptors = new DescriptorLoader(AgentPath.parse(line.agentPath));
         Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
         long deadline = System.nanoTime() + timeout.toNanos();
-        try (MaslContainer container = join(line, descriptors)) {
+        try (ContainerTranslator translator = new ContainerTranslator(AgentPath.parse(line.agentPath));
+                MaslContainer container = join(line, descriptors, translator)) {
             if (container.awaitBodies(timeout)) {
                 err.println(container.readiness());
                 err.flush();
@@ -66,7 +68,7 @@ final class ContainerCommand {
             }
             if (container.lostPlatform().isPresent()) {
                 err.println("masl: container " + line.containerName + ": " + container.lostPlatform().get()
-                        + (container.hostedAgents().isEmpty() ? "" : "; its bodies were deleted"));
+                        + (container.hostedAgents().isEmpty() ? "" : "; its agents were stopped"));
                 return Masl.MISSION_FAILED;
             }
             out.println("masl-ended hosted " + String.join(",", container.hostedAgents()));
@@ -88,7 +90,8 @@ final class ContainerCommand {
      * last failure is reported in one line. The port is not probed with a bare connection: JADE
      * would log that as an error.
      */
-    private MaslContainer join(CommandLine line, DescriptorLoader descriptors) throws InterruptedException {
+    private MaslContainer join(CommandLine line, DescriptorLoader descriptors, ContainerTranslator translator)
+            throws InterruptedException {
         long deadline = System.nanoTime() + Duration.ofSeconds(JOIN_SECONDS).toNanos();
         while (true) {
             try {
@@ -97,7 +100,7 @@ final class ContainerCommand {
                         event -> out.println("masl-event " + event.getContent()), MissionSecret.Source.file(
                                 line.secretFile != null ? Path.of(line.secretFile)
                                         : SecretFile.defaultFor(Path.of(""), line.mainPort)),
-                        refusal -> err.println("masl: container " + line.containerName + ": " + refusal));
+                        refusal -> err.println("masl: container " + line.containerName + ": " + refusal), translator);
             } catch (JadeException notYet) {
                 if (System.nanoTime() - deadline > 0) {
                     throw notYet;

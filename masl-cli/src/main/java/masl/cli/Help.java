@@ -27,7 +27,8 @@ final class Help {
                 masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE] [--quiet]
                         [--trace-limit SIZE] [--call-timeout MS] [--platform inproc|jade] [--no-cache]
                         [--main-host HOST --main-port PORT | --port PORT]
-                        [--place AGENT=CONTAINER,... | --place FILE] [--secret-file FILE]
+                        [--place AGENT=CONTAINER,... | --place FILE] [--deploy AGENT=CONTAINER,...]
+                        [--secret-file FILE]
                 masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH] [--quiet]
                         [--trace-limit SIZE]
                 """, "masl run FILE [OPTION]... | masl run --sim SCENARIO [OPTION]...", """
@@ -36,13 +37,15 @@ final class Help {
                 with --sim, the mission the scenario names runs on its simulated robots; trajectories,
                 events, trace, journal and a picture go to --out (default: NAME.out beside NAME.scenario.xml)
                 """, List.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--trace-limit",
-                "--no-cache", "--quiet", "--platform", "--main-host", "--port", "--place", "--secret-file", "--sim", "--out")));
+                "--no-cache", "--quiet", "--platform", "--main-host", "--port", "--place", "--deploy", "--secret-file", "--sim",
+                "--out")));
         COMMANDS.put("container", new Command("""
                 masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
                         [--timeout SECONDS] [--secret-file FILE]
                 """, "masl container --main-host HOST --main-port PORT --name CONTAINER [OPTION]...", """
                 join a JADE platform as container CONTAINER and host the bodies (the primitives) of the
-                agents a run --place puts there; their programs run in the run's JVM; ends with the mission
+                agents a run --place puts there, their programs running in the run's JVM; and run the
+                programs of the agents a run --deploy puts there, translated here; ends with the mission
                 """, List.of("--main-host", "--name", "--agent-path", "--timeout", "--secret-file")));
         COMMANDS.put("compile", new Command("""
                 masl compile FILE -d DIR [--agent-path PATH] [--quiet]
@@ -125,8 +128,14 @@ final class Help {
                                     with --platform jade: run these agents' bodies in the containers named (started
                                     with masl container), their programs in this JVM; other agents stay here
                 """);
+        OPTIONS.put("--deploy", """
+                --deploy AGENT=CONTAINER,... (*=C1+C2: every agent not named, spread over C1, C2 in turn)
+                                    with --platform jade: run these agents' programs in the containers named
+                                    (masl container), which translate the program themselves; the mission's
+                                    blocks, barriers, shared variables and events stay in this JVM
+                """);
         OPTIONS.put("--secret-file", """
-                --secret-file FILE  with --place (and for masl container): where run writes a fresh secret for the
+                --secret-file FILE  with --place or --deploy (and for masl container): where run writes a fresh secret for the
                                     mission (a new owner-only file, deleted at its end; an existing file is refused)
                                     and its containers read it; they obey only messages signed with it
                                     (default: .masl-mission-secret-PORT in this folder, PORT the main container's)

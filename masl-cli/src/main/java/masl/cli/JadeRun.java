@@ -2,12 +2,19 @@ package masl.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.nio.file.DirectoryStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
+import java.util.TreeMap;
 import masl.jade.JadeLauncher;
+import masl.jade.placement.DeployedSource;
+import masl.jade.placement.Deployment;
 import masl.jade.placement.Placement;
 import masl.jade.platform.JadeException;
 import masl.jade.platform.JadeOptions;
@@ -20,13 +27,15 @@ import masl.runtime.MissionProgram;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.descriptor.DescriptorLoader;
 import masl.translator.MissionLoader;
+import masl.translator.TranslationKey;
 import masl.translator.source.SourceFile;
 
 /**
  * {@code masl run --platform jade}: runs a translated mission inside JADE through {@link JadeLauncher},
  * in a new main container on loopback, or in a container joining the platform at
  * {@code --main-host}/{@code --main-port}; with {@code --place}, the bodies of the agents named run in
- * the containers named ({@code masl container}), their programs here. The journal, timeout, trace,
+ * the containers named ({@code masl container}), their programs here; with {@code --deploy}, their
+ * programs too, translated there from the source sent (the mission itself stays here). The journal, timeout, trace,
  * signals and outcome are those of an in-process run; a platform that cannot start or be joined, or a
  * container that does not join, ends the run as a failed mission. Once the platform accepts containers,
  * one line on standard error says where ({@link Readiness#platform}).
@@ -37,6 +46,8 @@ final class JadeRun {
     private final DescriptorLoader descriptors;
     private final JadeOptions options;
     private final Map<String, String> placement;
+    private final Map<String, String> deployment;
+    private final DeployedSource deployedSource;
     private final JournalOutput journal;
     /** {@code --secret-file}, or null: {@link SecretFile#defaultFor} the platform. */
     private final Path secretFile;
@@ -65,10 +76,12 @@ final class JadeRun {
         this.options = line.mainHost != null ? JadeOptions.join(line.mainHost, line.mainPort)
                 : line.port != null ? JadeOptions.mainContainer().withPort(line.port) : JadeOptions.mainContainer();
         this.placement = line.place == null ? Map.of() : placement(line.place, loaded);
+        this.deployment = line.deploy == null ? Map.of() : deployment(line.deploy, loaded, placement.keySet());
+        this.deployedSource = deployment.isEmpty() ? null : deployedSource(source);
         this.journal = journal;
-        if (line.secretFile != null && placement.isEmpty()) {
-            throw new UsageException("--secret-file is where the containers of --place find the mission's secret:"
-                    + " give it with --place");
+        if (line.secretFile != null && placement.isEmpty() && deployment.isEmpty()) {
+            throw new UsageException("--secret-file is where the containers of --place and --deploy find the mission's"
+                    + " secret: give it with --place or --deploy");
         }
         this.secretFile = line.secretFile == null ? null : Path.of(line.secretFile);
         this.callTimeout = line.callTimeoutMillis == null ? null : Duration.ofMillis(line.callTimeoutMillis);
@@ -93,6 +106,38 @@ final class JadeRun {
         return placement;
     }
 
+    /** {@code --deploy}: agents the program declares, not placed, to containers. */
+    private static Map<String, String> deployment(String option, MissionLoader loaded, Set<String> placed)
+            throws UsageException {
+        try {
+            return Deployment.parse(option, loaded.program().agents().stream().map(MissionProgram.AgentSpec::name).toList(),
+                    placed);
+        } catch (IllegalArgumentException bad) {
+            throw new UsageException(bad.getMessage());
+        }
+    }
+
+    /**
+     * What the containers of {@code --deploy} translate themselves: the program, the descriptors beside it
+     * (the {@code .xml} files of its folder), and the key of this masl's translation of them.
+     */
+    private static DeployedSource deployedSource(SourceFile source) throws UsageException {
+        Map<String, String> descriptors = new TreeMap<>();
+        Path folder = source.folder() == null ? Path.of("") : source.folder();
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(folder, "*.xml")) {
+            for (Path file : files) {
+                if (Files.isRegularFile(file)) {
+                    descriptors.put(file.getFileName().toString(), Files.readString(file));
+                }
+            }
+        } catch (IOException | UncheckedIOException unreadable) {
+            throw new UsageException("cannot read the descriptors beside " + source.name() + " to send them to the"
+                    + " containers of --deploy: " + unreadable.getMessage());
+        }
+        String name = Path.of(source.name()).getFileName().toString();
+        return new DeployedSource(name, source.text(), descriptors, TranslationKey.of(name, source.text(), descriptors));
+    }
+
     /**
      * Runs the mission; a signal stops it once its agents exist ({@link StopOnSignal}), and so does a
      * journal or a trace that cannot be written.
@@ -102,6 +147,7 @@ final class JadeRun {
                 .types(spec -> descriptors.loadByClassName(spec.typeClassName()))
                 .implementations(loaded::newImplementation)
                 .place(placement)
+                .deploy(deployment, deployedSource)
                 .journal(journal)
                 .problems(problem -> err.println("masl: " + problem))
                 .trace(trace.trace())
@@ -116,7 +162,8 @@ final class JadeRun {
             launcher.callTimeout(callTimeout);
         }
         try (JadePlatform platform = JadePlatform.start(options)) {
-            Optional<SecretFile> shared = placement.isEmpty() ? Optional.empty() : Optional.of(shareSecret(platform, launcher));
+            Optional<SecretFile> shared = placement.isEmpty() && deployment.isEmpty() ? Optional.empty()
+                    : Optional.of(shareSecret(platform, launcher));
             try {
                 err.println(Readiness.platform(platform));
                 err.flush();

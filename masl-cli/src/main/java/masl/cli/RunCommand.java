@@ -49,8 +49,9 @@ final class RunCommand {
         if (!line.platform.equals("jade") && (line.mainHost != null || line.mainPort != null)) {
             throw new UsageException("--main-host and --main-port join a JADE platform: give them with --platform jade");
         }
-        if (!line.platform.equals("jade") && (line.place != null || line.port != null || line.secretFile != null)) {
-            throw new UsageException("--place, --port and --secret-file are for a JADE platform: give them with"
+        if (!line.platform.equals("jade") && (line.place != null || line.deploy != null || line.port != null
+                || line.secretFile != null)) {
+            throw new UsageException("--place, --deploy, --port and --secret-file are for a JADE platform: give them with"
                     + " --platform jade");
         }
         try (StopOnSignal signals = new StopOnSignal(err)) {

@@ -99,9 +99,22 @@ class JadeRunTest {
                 "--main-port", "1099").status(), "--port starts a main container, --main-* join one");
         Run secretAlone = Run.of("run", program, "--platform", "jade", "--secret-file", "s");
         assertEquals(64, secretAlone.status());
-        assertTrue(secretAlone.err().startsWith("masl: --secret-file is where the containers of --place find the"
-                + " mission's secret: give it with --place\n"), secretAlone.err());
+        assertTrue(secretAlone.err().startsWith("masl: --secret-file is where the containers of --place and --deploy"
+                + " find the mission's secret: give it with --place or --deploy\n"), secretAlone.err());
         assertEquals(64, Run.of("run", program, "--secret-file", "s").status(), "--secret-file needs --platform jade");
+    }
+
+    @Test
+    void aDeploymentThatDoesNotFitTheProgramIsBadUsageWithItsPosition() throws IOException {
+        String program = write("two.masl", HEADER + "scalar entry main (true) { .nop(); }\n");
+        Run undeclared = Run.of("run", program, "--platform", "jade", "--deploy", "a=c2,zed=c3");
+        assertEquals(64, undeclared.status());
+        assertTrue(undeclared.err().startsWith("masl: --deploy:1:6: error: zed is not an agent of the program (it"
+                + " declares a, b)\n"), undeclared.err());
+        Run both = Run.of("run", program, "--platform", "jade", "--place", "a=c2", "--deploy", "*=c3,a=c3");
+        assertEquals(64, both.status());
+        assertTrue(both.err().startsWith("masl: --deploy:1:6: error: a is placed with --place"), both.err());
+        assertEquals(64, Run.of("run", program, "--deploy", "*=c2").status(), "--deploy needs --platform jade");
     }
 
     /** A file named as the secret's is the user's: the mission does not start, and the file is as it was. */

@@ -53,6 +53,12 @@ public final class SecondJvm implements AutoCloseable {
         return output();
     }
 
+    /** Waits until the JVM ends by itself, within a minute (failing the test if not); its exit status. */
+    public int awaitExit() throws Exception {
+        assertTrue(process.waitFor(END_WITHIN_SECONDS, TimeUnit.SECONDS), "the second JVM did not end:\n" + output());
+        return process.exitValue();
+    }
+
     /** Kills the JVM at once, as a crash would, and waits until it has ended. */
     public void kill() throws InterruptedException {
         process.destroyForcibly();
