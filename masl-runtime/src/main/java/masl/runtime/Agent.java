@@ -1,33 +1,23 @@
 package masl.runtime;
 
-import java.util.ArrayList;
-import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CompletionStage;
-import java.util.function.BooleanSupplier;
-import java.util.function.Consumer;
 import java.util.function.Supplier;
 import masl.runtime.descriptor.AgentType;
-import masl.runtime.descriptor.PermeabilityState;
 import masl.runtime.entry.Entry;
 import masl.runtime.entry.EntryCoordinator;
-import masl.runtime.entry.Membership;
-import masl.runtime.entry.SynchronisationBarrier;
-import masl.runtime.entry.Wave;
+import masl.runtime.entry.MemberAgent;
 import masl.runtime.event.Emitter;
 import masl.runtime.event.EventOccurrence;
-import masl.runtime.event.EventPlanner;
-import masl.runtime.event.ReactionPlan;
-import masl.runtime.event.ReactionRun;
+import masl.runtime.event.ReactingAgent;
 import masl.runtime.invocation.Countermeasures;
-import masl.runtime.invocation.InvocationServing;
 import masl.runtime.invocation.Invoker;
 import masl.runtime.invocation.PendingInvocation;
 import masl.runtime.invocation.Permeability;
-import masl.runtime.invocation.ServingAgent;
 import masl.runtime.invocation.PrimitiveCalls;
+import masl.runtime.invocation.ServingAgent;
 import masl.runtime.scheduling.RunState;
+import masl.runtime.scheduling.ScheduledAgent;
 import masl.runtime.scheduling.Scheduler;
 import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.TraceEvent;
@@ -35,53 +25,47 @@ import masl.runtime.trace.TraceEvent;
 /**
  * A MASL agent at run time: an active object with its own program counter (in its
  * {@link AgentProgram}), memberships, event and invocation queues, run slice by slice by the
- * mission's {@link Scheduler}. It is the {@link AgentContext} its program calls, and ties together
- * four state machines, each a class of its own:
+ * mission's {@link Scheduler}. It is the {@link AgentContext} its program calls. Its state is in
+ * layers, superclasses each of its package, so that an agent-step in lock-step reads the fields of
+ * one object (docs/decisions.md, "An agent in layers"):
  *
  * <ul>
- * <li><b>Scheduling</b> ({@link RunState}): {@code SCHEDULED → RUNNING → PARKED → SCHEDULED}, with
- * park tickets; a slice runs the program ({@link #runSlice}), a wait issues a ticket
- * ({@link #prepareToPark()}) and whoever ends it calls {@link #unpark(long)} with it. An
- * invocation queued for a parked or finished agent turns it {@code SERVING}: a slice then serves
- * it on the agent's behalf without running its program (MASL §5).</li>
- * <li><b>Events</b> ({@link EventPlanner}, MASL §8): emitters push occurrences from any thread and
- * unpark the agent if it is parked in a busy-wait (§5). At a step boundary or loop iteration the
- * agent plans the reactions; if there are any, it <em>redirects</em> its program: it saves
- * {@code pc} (where the interrupted boundary continues), sets {@code pc} to the first reaction's
- * code, and the boundary call returns {@code false}; the slice then calls {@code resume} again at
- * once. Each reaction ends with {@link #endReaction()}, which redirects to the next one, or lets
- * the last one apply its ending (§8: the last reaction decides): {@link #resumeInterrupted()}, or
- * a break, restart or reelect. What the agent emits and raises goes through its {@link Emitter}.</li>
- * <li><b>Invocations</b> ({@link InvocationServing}, MASL §9): an external invocation waits in the
- * callee's queue until the callee's next boundary, or a serving slice, serves it; in
- * {@code wait(state)} the agent is attentive and serves only what that state allows.
- * Invocations between the mission's agents ({@link #invoke}) are served by a scheduled slice, so
+ * <li><b>Scheduling</b> ({@link ScheduledAgent}, {@link RunState}): {@code SCHEDULED → RUNNING →
+ * PARKED → SCHEDULED}, with park tickets; a slice runs the program ({@link #runSlice}), a wait
+ * issues a ticket ({@link #prepareToPark()}) and whoever ends it calls {@link #unpark(long)} with
+ * it. An invocation queued for a parked or finished agent turns it {@code SERVING}: a slice then
+ * serves it on the agent's behalf without running its program (MASL §5).</li>
+ * <li><b>Blocks</b> ({@link MemberAgent}): the memberships and the barrier arrival, which the
+ * {@link EntryCoordinator} changes.</li>
+ * <li><b>Events</b> ({@link ReactingAgent}, MASL §8): emitters push occurrences from any thread and
+ * unpark the agent if it is parked in a busy-wait (§5). At a boundary the agent plans the
+ * reactions and <em>redirects</em> its program to the first one; each ends with
+ * {@link #endReaction()}, and the last one applies its ending (§8: the last reaction decides):
+ * {@link #resumeInterrupted()}, or a break, restart or reelect. What the agent emits and raises
+ * goes through its {@link Emitter}.</li>
+ * <li><b>Invocations</b> ({@link ServingAgent}, MASL §9, §11): an external invocation waits in
+ * the callee's queue until the callee's next boundary, or a serving slice, serves it, if its
+ * {@link Permeability} lets the requester in; in {@code wait(state)} the agent serves only what
+ * that state allows. Invocations between the mission's agents are served by a scheduled slice, so
  * that the order of slices stays the scheduler's (a seeded run replays); one from outside the
  * mission may be served inline ({@link #submitInvocationServingInline}, the JADE bridge's FIPA
- * requests), on the submitting thread, in the same {@code SERVING} state.</li>
- * <li><b>Permeability</b> ({@link Permeability}, MASL §11): the current state, and whether it
- * lets a requester invoke a primitive or read or write an attribute, decided when it is served;
- * with the countermeasures armed by launches ({@link Countermeasures}). What the agent requests of
- * others (invocations, launches, attributes, its accept state) is its {@link Invoker}'s.</li>
+ * requests). What the agent requests of others (invocations, launches, attributes, its accept
+ * state, the {@link Countermeasures} its launches arm) is its {@link Invoker}'s.</li>
+ * <li><b>Boundaries</b> ({@link SteppingAgent}, MASL §5): where these meet, in their order.</li>
  * </ul>
  *
  * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
  * friend packages), and may change without notice.
  */
-public final class Agent extends ServingAgent implements AgentContext {
+public final class Agent extends SteppingAgent implements AgentContext {
 
     public final AgentImplementation implementation;
     private final Invoker invoker;
     private final Emitter emitter;
 
-    // Confined to the thread running the current slice (successive slices are ordered).
-    private long busyWaitEpoch = -1;
-    private long busyWaitProgress = -1;
-    private final IdleIterations iterations = new IdleIterations();
-
     Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
             Mission mission) {
-        super(id, name, program, mission, type, mission.coordinator(), mission.trace());
+        super(id, name, program, mission, type);
         this.implementation = implementation;
         PrivateSide side = new PrivateSide();
         this.invoker = new Invoker(this, permeability, side);
@@ -152,7 +136,6 @@ public final class Agent extends ServingAgent implements AgentContext {
         }
     }
 
-
     /**
      * Something escaped from the program (an {@code Error}, or an exception outside the calls the
      * translator guards): the agent's program is over. It fires its armed countermeasures and leaves
@@ -177,8 +160,6 @@ public final class Agent extends ServingAgent implements AgentContext {
         serveIfPending();
     }
 
-
-
     /**
      * Reads the state a slice of this agent reads first, bringing it into the calling core's cache.
      * A thread about to wake and run a batch of agents calls it on each of them first: their cache
@@ -193,144 +174,11 @@ public final class Agent extends ServingAgent implements AgentContext {
                 + (suspended ? 1 : 0) + (int) progress + (int) run.pendingTicket();
     }
 
-
     // ---- AgentContext --------------------------------------------------------------------------
 
     @Override
     public int proxyId() {
         return id;
-    }
-
-    @Override
-    public boolean stepBoundary() {
-        atCallBefore();
-        requireOutsideReaction("a step boundary");
-        progress++;
-        iterations.stepped(program.pc());
-        SynchronisationBarrier barrier = barrierDue();
-        if (startReactions(barrier != null)) {
-            return false;
-        }
-        return completeBoundary(barrier);
-    }
-
-    /** Steps 2 and 3 of a step boundary (§5): pending invocations, then the barrier if one is due (null: none). */
-    private boolean completeBoundary(SynchronisationBarrier barrier) {
-        serveQueuedInvocations();
-        if (barrier != null && !mission.coordinator().arriveAtBarrier(this, barrier)) {
-            return false;
-        }
-        return yieldIfSliceUsed();
-    }
-
-    @Override
-    public boolean endOfChild(EntryDefinition block) {
-        atCallBefore();
-        requireAtLevelOf(block.parent(), block);
-        requireOutsideReaction("the end of " + block.name());
-        progress++;
-        iterations.stepped(program.pc());
-        SynchronisationBarrier barrier = barrierDue();
-        if (startReactions(barrier != null)) {
-            return false;
-        }
-        return completeBoundary(barrier);
-    }
-
-    @Override
-    public boolean endOfSequence(ESequence sequence) {
-        atCallBefore();
-        requireAtLevelOf(sequence.parent(), sequence);
-        requireOutsideReaction("the end of an e-sequence");
-        progress++;
-        if (startReactions(false)) {
-            return false;
-        }
-        return completeBoundary(null);
-    }
-
-    @Override
-    public boolean loopIteration() {
-        atLoopHead();
-        progress++;
-        if (reactionsUnderway && events.isReacting()) {
-            return yieldIfSliceUsed();
-        }
-        SynchronisationBarrier barrier = idleStepDue();
-        if (startReactions(barrier != null)) {
-            return false;
-        }
-        return completeBoundary(barrier);
-    }
-
-    @Override
-    public boolean busyWaitIteration() {
-        atLoopHead();
-        if (!events.isReacting()) {
-            SynchronisationBarrier barrier = idleStepDue();
-            if (barrier != null) {
-                return idleBusyWaitStep(barrier);
-            }
-            // Reactions assign locals: running them is progress, so the next iteration does not park.
-            if (startReactions(false)) {
-                return false;
-            }
-            serveQueuedInvocations();
-        }
-        long epoch = mission.changes().current();
-        if (epoch == busyWaitEpoch && progress == busyWaitProgress) {
-            parkInBusyWait(epoch);
-            return false;
-        }
-        busyWaitEpoch = epoch;
-        busyWaitProgress = progress;
-        return yieldIfSliceUsed();
-    }
-
-    /**
-     * The barrier the iteration ending here meets as an instruction of its own (§5): that of the
-     * innermost block, if it is synchronous and the iteration ran no instruction; else null.
-     */
-    private SynchronisationBarrier idleStepDue() {
-        return iterations.endIteration(program.pc()) ? barrierDue() : null;
-    }
-
-    /**
-     * An iteration of a busy-wait that ran no instruction, in a synchronous block: one instruction
-     * (§5), so events, invocations, then the barrier. Unless the step would change nothing: if
-     * nothing the agent can observe has changed since its previous busy-wait iteration, it ran no
-     * instruction or reaction since, and no other participant has arrived at the barrier in this
-     * phase, the agent parks until a change or an arrival, and iterates again then. A lone member
-     * would otherwise trip its own barrier again and again on a core of its own, and members that
-     * all wait so would trip it for each other; parked, they are idle for the deadlock watchdog. Its
-     * arrival only comes later in the phase: the others wait for it as for a member still running
-     * its instruction, and their first arrival wakes it.
-     */
-    private boolean idleBusyWaitStep(SynchronisationBarrier barrier) {
-        if (startReactions(true)) {
-            return false;
-        }
-        serveQueuedInvocations();
-        long epoch = mission.changes().current();
-        if (epoch == busyWaitEpoch && progress == busyWaitProgress && !barrier.hasArrivals()) {
-            barrier.wakeOnArrival(this, parkInBusyWait(epoch));
-            return false;
-        }
-        busyWaitEpoch = epoch;
-        busyWaitProgress = progress;
-        return completeBoundary(barrier);
-    }
-
-    /** Parks the agent until something it can observe changes (§5); returns the park's ticket. */
-    private long parkInBusyWait(long epoch) {
-        long ticket = mission.changes().parkUntilChanged(this, epoch);
-        busyWaitPark = true;
-        busyWaitTicket = ticket;
-        // An emitter that pushed before the ticket was published has not woken us: wake ourselves.
-        if (!events.isReacting() && !events.nothingPerceived()) {
-            unpark(ticket);
-        }
-        return ticket;
     }
 
     @Override
@@ -383,38 +231,6 @@ public final class Agent extends ServingAgent implements AgentContext {
     }
 
     @Override
-    public boolean sleep(long ms) {
-        atCallBefore();
-        progress++;
-        if (ms <= 0) {
-            return yieldIfSliceUsed();
-        }
-        long ticket = prepareToPark();
-        mission.outsideWakeUpStarted();
-        mission.scheduler().scheduleAfter(ms, () -> {
-            unpark(ticket);
-            mission.outsideWakeUpEnded();
-        });
-        return false;
-    }
-
-    @Override
-    public boolean await(CompletionStage<?> result) {
-        atCallBefore();
-        CompletableFuture<?> future = result.toCompletableFuture();
-        if (future.isDone()) {
-            return yieldIfSliceUsed();
-        }
-        long ticket = prepareToPark();
-        mission.outsideWakeUpStarted();
-        future.whenComplete((value, failure) -> {
-            unpark(ticket);
-            mission.outsideWakeUpEnded();
-        });
-        return false;
-    }
-
-    @Override
     public void emit(Event event) {
         emit(event, "");
     }
@@ -428,19 +244,6 @@ public final class Agent extends ServingAgent implements AgentContext {
     public void uncaughtException(Throwable thrown) {
         atCurrentCase();
         emit(Event.UNCAUGHT_EXCEPTION, RemotePrimitiveException.classNameOf(thrown));
-    }
-
-    @Override
-    public boolean resumeInterrupted() {
-        ReactionRun ended = events.takeEnding();
-        reactionsUnderway = false;
-        if (ended == null) {
-            throw new IllegalStateException(describe() + ": resume without a reaction that just ended");
-        }
-        program.jump(ended.interruptedPc());
-        statementPc = ended.statementPc();
-        statementIsLoop = ended.statementIsLoop();
-        return completeBoundary(ended.barrierDue() ? barrierDue() : null);
     }
 
     @Override
@@ -536,49 +339,6 @@ public final class Agent extends ServingAgent implements AgentContext {
     /** Makes this agent perceive a system event ({@link Emitter#raise}); safe from any thread. */
     void raise(Event systemEvent, String message) {
         emitter.raise(systemEvent, message);
-    }
-
-    @Override
-    protected void redirectToNextReaction() {
-        ReactionRun processing = events.reacting();
-        ReactionPlan.Step step = processing.next();
-        Reaction reaction = step.reaction();
-        mission.trace().record(new TraceEvent.EventReacted(now(), id,
-                step.occurrence().event().name(), reaction.block().name(), reaction.isDefault(),
-                sourceOf(processing.statementPc(), processing.statementIsLoop())));
-        program.jump(program.reactionPc(reaction));
-        suspended = true;
-        redirected = true;
-    }
-
-    @Override
-    protected void traceDropped(EventOccurrence occurrence) {
-        mission.trace().record(new TraceEvent.EventDropped(now(), id, occurrence.event().name(), source()));
-    }
-
-    /** The mission clock, for trace timestamps. */
-    private long now() {
-        return mission.scheduler().nanoTime();
-    }
-
-
-
-    /**
-     * The MASL statement the agent is at ({@code "e6.masl:14: synchronous entry turn (…)"}), or null
-     * if its program does not say: the last statement of the case making the current call (a loop's
-     * own statement at its head), or of the nearest case before it that has one.
-     */
-    @Override
-    public String source() {
-        return sourceOf(statementPc, statementIsLoop);
-    }
-
-    private String sourceOf(int statement, boolean loopHead) {
-        String source = loopHead ? program.sourceAt(statement) : program.sourceOfCallIn(statement);
-        for (int pc = statement - 1; source == null && pc >= 0 && pc > statement - 4; pc--) {
-            source = program.sourceOfCallIn(pc);
-        }
-        return source;
     }
 
     @Override

@@ -4,7 +4,6 @@ import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.LongSupplier;
-import masl.runtime.Agent;
 import masl.runtime.descriptor.PermeabilityState;
 import masl.runtime.scheduling.ScheduledAgent;
 import masl.runtime.trace.Trace;

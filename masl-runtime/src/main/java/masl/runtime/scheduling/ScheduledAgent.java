@@ -1,5 +1,7 @@
 package masl.runtime.scheduling;
 
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionStage;
 import masl.runtime.AgentProgram;
 import masl.runtime.Mission;
 
@@ -7,7 +9,8 @@ import masl.runtime.Mission;
  * The scheduling side of an agent ({@code masl.runtime.Agent}): its {@link RunState}, the park in
  * progress and its kind, the bookkeeping of the current slice and the statement the agent is at.
  * The layers of an agent are superclasses, each of its package (this one, then
- * {@code entry.MemberAgent}, {@code event.ReactingAgent}, {@code invocation.ServingAgent}), not
+ * {@code entry.MemberAgent}, {@code event.ReactingAgent}, {@code invocation.ServingAgent}, then the
+ * boundaries that tie them, {@code SteppingAgent}, under {@code Agent} itself), not
  * objects it points to: an agent-step in lock-step reads fields of all of them, and one object
  * keeps them in the cache lines of one object, with no load of another's address on the way.
  *
@@ -138,6 +141,38 @@ public abstract class ScheduledAgent implements AgentTask {
     /** Parked in a busy-wait: waiting for a change, which an outside invocation is. */
     public final boolean isParkedInBusyWait() {
         return run.isParked() && busyWaitPark;
+    }
+
+    /** {@code sleep(ms)} (AgentContext): parks the agent until {@code ms} have passed. */
+    public final boolean sleep(long ms) {
+        atCallBefore();
+        progress++;
+        if (ms <= 0) {
+            return yieldIfSliceUsed();
+        }
+        long ticket = prepareToPark();
+        mission.outsideWakeUpStarted();
+        mission.scheduler().scheduleAfter(ms, () -> {
+            unpark(ticket);
+            mission.outsideWakeUpEnded();
+        });
+        return false;
+    }
+
+    /** Parks the agent until {@code result} is complete (AgentContext). */
+    public final boolean await(CompletionStage<?> result) {
+        atCallBefore();
+        CompletableFuture<?> future = result.toCompletableFuture();
+        if (future.isDone()) {
+            return yieldIfSliceUsed();
+        }
+        long ticket = prepareToPark();
+        mission.outsideWakeUpStarted();
+        future.whenComplete((value, failure) -> {
+            unpark(ticket);
+            mission.outsideWakeUpEnded();
+        });
+        return false;
     }
 
     /** Its program is over: no slice runs it again. */

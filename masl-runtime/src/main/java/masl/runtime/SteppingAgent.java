@@ -1,0 +1,224 @@
+package masl.runtime;
+
+import masl.runtime.descriptor.AgentType;
+import masl.runtime.entry.SynchronisationBarrier;
+import masl.runtime.event.EventOccurrence;
+import masl.runtime.event.ReactionPlan;
+import masl.runtime.event.ReactionRun;
+import masl.runtime.invocation.ServingAgent;
+import masl.runtime.trace.TraceEvent;
+
+/**
+ * The boundaries of an agent's program (MASL §5, §8): step boundaries, the end of a block or
+ * e-sequence, loop iterations and busy-waits, where the layers of the agent meet. Each boundary
+ * takes, in this order, the events perceived ({@link #startReactions}: if any has a reaction, the
+ * program is redirected to it and the boundary goes on when the reactions end,
+ * {@link #resumeInterrupted()}), the invocations queued ({@link #serveQueuedInvocations()}), then
+ * the barrier of the agent's synchronous block ({@code EntryCoordinator.arriveAtBarrier}), and
+ * yields if the slice has run its steps. It also knows which MASL statement the agent is at, for
+ * the trace. {@link Agent} is the rest of the agent's {@link AgentContext}; this layer is apart so
+ * that the boundary's order reads in one place.
+ *
+ * <p>Confined to the agent's slices, but for what the layers below say of themselves.
+ */
+abstract class SteppingAgent extends ServingAgent implements AgentContext {
+
+    // Confined to the thread running the current slice (successive slices are ordered).
+    private long busyWaitEpoch = -1;
+    private long busyWaitProgress = -1;
+    /** Which loop iterations ran no instruction; a restart or reelect in {@link Agent} resets it. */
+    final IdleIterations iterations = new IdleIterations();
+
+    SteppingAgent(int id, String name, AgentProgram program, Mission mission, AgentType type) {
+        super(id, name, program, mission, type, mission.coordinator(), mission.trace());
+    }
+
+    /** This agent as the coordinator and the barriers know it: it is the only subclass. */
+    private Agent self() {
+        return (Agent) this;
+    }
+
+    @Override
+    public final boolean stepBoundary() {
+        atCallBefore();
+        return instructionEnded("a step boundary");
+    }
+
+    /** The boundary after an instruction (§5), {@code what} for the error of one inside a reaction. */
+    private boolean instructionEnded(String what) {
+        requireOutsideReaction(what);
+        progress++;
+        iterations.stepped(program.pc());
+        SynchronisationBarrier barrier = barrierDue();
+        if (startReactions(barrier != null)) {
+            return false;
+        }
+        return completeBoundary(barrier);
+    }
+
+    /** Steps 2 and 3 of a step boundary (§5): pending invocations, then the barrier if one is due (null: none). */
+    private boolean completeBoundary(SynchronisationBarrier barrier) {
+        serveQueuedInvocations();
+        if (barrier != null && !mission.coordinator().arriveAtBarrier(self(), barrier)) {
+            return false;
+        }
+        return yieldIfSliceUsed();
+    }
+
+    @Override
+    public final boolean endOfChild(EntryDefinition block) {
+        atCallBefore();
+        requireAtLevelOf(block.parent(), block);
+        return instructionEnded("the end of " + block.name());
+    }
+
+    @Override
+    public final boolean endOfSequence(ESequence sequence) {
+        atCallBefore();
+        requireAtLevelOf(sequence.parent(), sequence);
+        requireOutsideReaction("the end of an e-sequence");
+        progress++;
+        if (startReactions(false)) {
+            return false;
+        }
+        return completeBoundary(null);
+    }
+
+    @Override
+    public final boolean loopIteration() {
+        atLoopHead();
+        progress++;
+        if (reactionsUnderway && events.isReacting()) {
+            return yieldIfSliceUsed();
+        }
+        SynchronisationBarrier barrier = idleStepDue();
+        if (startReactions(barrier != null)) {
+            return false;
+        }
+        return completeBoundary(barrier);
+    }
+
+    @Override
+    public final boolean busyWaitIteration() {
+        atLoopHead();
+        if (!events.isReacting()) {
+            SynchronisationBarrier barrier = idleStepDue();
+            if (barrier != null) {
+                return idleBusyWaitStep(barrier);
+            }
+            // Reactions assign locals: running them is progress, so the next iteration does not park.
+            if (startReactions(false)) {
+                return false;
+            }
+            serveQueuedInvocations();
+        }
+        long epoch = mission.changes().current();
+        if (epoch == busyWaitEpoch && progress == busyWaitProgress) {
+            parkInBusyWait(epoch);
+            return false;
+        }
+        busyWaitEpoch = epoch;
+        busyWaitProgress = progress;
+        return yieldIfSliceUsed();
+    }
+
+    /**
+     * The barrier the iteration ending here meets as an instruction of its own (§5): that of the
+     * innermost block, if it is synchronous and the iteration ran no instruction; else null.
+     */
+    private SynchronisationBarrier idleStepDue() {
+        return iterations.endIteration(program.pc()) ? barrierDue() : null;
+    }
+
+    /**
+     * An iteration of a busy-wait that ran no instruction, in a synchronous block: one instruction
+     * (§5), so events, invocations, then the barrier. Unless the step would change nothing: if
+     * nothing the agent can observe has changed since its previous busy-wait iteration, it ran no
+     * instruction or reaction since, and no other participant has arrived at the barrier in this
+     * phase, the agent parks until a change or an arrival, and iterates again then. A lone member
+     * would otherwise trip its own barrier again and again on a core of its own, and members that
+     * all wait so would trip it for each other; parked, they are idle for the deadlock watchdog. Its
+     * arrival only comes later in the phase: the others wait for it as for a member still running
+     * its instruction, and their first arrival wakes it.
+     */
+    private boolean idleBusyWaitStep(SynchronisationBarrier barrier) {
+        if (startReactions(true)) {
+            return false;
+        }
+        serveQueuedInvocations();
+        long epoch = mission.changes().current();
+        if (epoch == busyWaitEpoch && progress == busyWaitProgress && !barrier.hasArrivals()) {
+            barrier.wakeOnArrival(self(), parkInBusyWait(epoch));
+            return false;
+        }
+        busyWaitEpoch = epoch;
+        busyWaitProgress = progress;
+        return completeBoundary(barrier);
+    }
+
+    /** Parks the agent until something it can observe changes (§5); returns the park's ticket. */
+    private long parkInBusyWait(long epoch) {
+        long ticket = mission.changes().parkUntilChanged(self(), epoch);
+        busyWaitPark = true;
+        busyWaitTicket = ticket;
+        // An emitter that pushed before the ticket was published has not woken us: wake ourselves.
+        if (!events.isReacting() && !events.nothingPerceived()) {
+            unpark(ticket);
+        }
+        return ticket;
+    }
+
+    @Override
+    public final boolean resumeInterrupted() {
+        ReactionRun ended = events.takeEnding();
+        reactionsUnderway = false;
+        if (ended == null) {
+            throw new IllegalStateException(describe() + ": resume without a reaction that just ended");
+        }
+        program.jump(ended.interruptedPc());
+        statementPc = ended.statementPc();
+        statementIsLoop = ended.statementIsLoop();
+        return completeBoundary(ended.barrierDue() ? barrierDue() : null);
+    }
+
+    @Override
+    protected final void redirectToNextReaction() {
+        ReactionRun processing = events.reacting();
+        ReactionPlan.Step step = processing.next();
+        Reaction reaction = step.reaction();
+        mission.trace().record(new TraceEvent.EventReacted(now(), id,
+                step.occurrence().event().name(), reaction.block().name(), reaction.isDefault(),
+                sourceOf(processing.statementPc(), processing.statementIsLoop())));
+        program.jump(program.reactionPc(reaction));
+        suspended = true;
+        redirected = true;
+    }
+
+    @Override
+    protected final void traceDropped(EventOccurrence occurrence) {
+        mission.trace().record(new TraceEvent.EventDropped(now(), id, occurrence.event().name(), source()));
+    }
+
+    /** The mission clock, for trace timestamps. */
+    long now() {
+        return mission.scheduler().nanoTime();
+    }
+
+    /**
+     * The MASL statement the agent is at ({@code "e6.masl:14: synchronous entry turn (…)"}), or null
+     * if its program does not say: the last statement of the case making the current call (a loop's
+     * own statement at its head), or of the nearest case before it that has one.
+     */
+    @Override
+    public final String source() {
+        return sourceOf(statementPc, statementIsLoop);
+    }
+
+    private String sourceOf(int statement, boolean loopHead) {
+        String source = loopHead ? program.sourceAt(statement) : program.sourceOfCallIn(statement);
+        for (int pc = statement - 1; source == null && pc >= 0 && pc > statement - 4; pc--) {
+            source = program.sourceOfCallIn(pc);
+        }
+        return source;
+    }
+}
