@@ -388,9 +388,9 @@ public final class Bench {
                 + LOCK_STEP_WARM_UPS + " warm-up runs;");
         System.out.println("   then steps per second of process CPU time over those runs (every thread of the JVM, start-up included),");
         System.out.println("   which other jobs on the machine change much less than elapsed time");
-        System.out.printf(Locale.ROOT, "%8s | %12s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s || %12s | %12s | %11s || %11s%n",
+        System.out.printf(Locale.ROOT, "%8s | %12s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s || %12s | %12s | %11s | %9s || %11s%n",
                 "N", "MASL (pool)", "2-thr pool", "thr+Phaser", "MASL thr", "MASL/pool", "MASL/threads",
-                "MASL cpu", "pool cpu", "MASL/pool", "MASON Sched", "MASON Seq", "MASL/MASON", "core RTT ns");
+                "MASL cpu", "pool cpu", "MASL/pool", "MASON Sched", "MASON Seq", "MASL/MASON", "MASL/Seq", "core RTT ns");
         for (int agents : options.sizes) {
             long distanceBefore = CoreDistance.roundTripNanos();
             List<LockStepRun> runs = new ArrayList<>(List.of(masl, pool, mason, masonSequence));
@@ -423,15 +423,16 @@ public final class Bench {
             double maslCpu = stepsPerCpuSecond(stepsOf.get(masl.name()), cpuTimes.get(masl.name()));
             double poolCpu = stepsPerCpuSecond(stepsOf.get(pool.name()), cpuTimes.get(pool.name()));
             long distanceAfter = CoreDistance.roundTripNanos();
-            System.out.printf(Locale.ROOT, "%8d | %12s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s || %12s | %12s | %11s || %11s%n",
+            System.out.printf(Locale.ROOT, "%8d | %12s | %12s | %12s | %12s | %10s | %12s || %12s | %12s | %10s || %12s | %12s | %11s | %9s || %11s%n",
                     agents, rate(maslRate), rate(poolRate), rate(threadRate), rate(maslThreadRate), ratio(maslRate, poolRate),
                     ratio(maslRate, threadRate), rate(maslCpu), rate(poolCpu), ratio(maslCpu, poolCpu),
-                    rate(masonRate), rate(sequenceRate), ratio(maslRate, masonRate),
+                    rate(masonRate), rate(sequenceRate), ratio(maslRate, masonRate), ratio(maslRate, sequenceRate),
                     distance(distanceBefore) + "/" + distance(distanceAfter));
         }
         System.out.printf(Locale.ROOT, "   (thr+Phaser: hand-written, a platform thread per agent on a Phaser; MASL thr: MASL's thread-per-agent"
                 + " driver, masl run --threads; neither run above N=%d;%n    MASON Sched: MASON 14, each agent scheduleRepeating;"
-                + " MASON Seq: one Sequence on one thread, the floor; goal: MASL/MASON >= 2x at N=1000 and 10000;%n"
+                + " MASON Seq: one Sequence on one thread, the floor, and MASL/Seq MASL's distance to it;%n"
+                + "    goal: MASL/MASON >= 2x at N=1000 and 10000;%n"
                 + "    core RTT: a round trip between two threads through one word before/after the row (CoreDistance): above"
                 + " about 150 ns the two CPUs are far apart, and two-worker lock-step runs slower)%n%n",
                 options.threadLimit);
