@@ -85,6 +85,20 @@ public final class Agent extends SteppingAgent implements AgentContext {
             mission.agentFailed(this, new IllegalStateException(describe() + " scheduled in state " + run.describeState()));
             return;
         }
+        runProgram();
+    }
+
+    @Override
+    public boolean runSliceWoken(long ticket) {
+        if (!run.resumeParked(ticket)) {
+            return false;
+        }
+        runProgram();
+        return true;
+    }
+
+    /** The slice of a running agent: its program until it suspends or finishes, then where it goes. */
+    private void runProgram() {
         stepsThisSlice = 0;
         try {
             do {

@@ -15,7 +15,8 @@ import masl.runtime.scheduling.SliceRun;
  * <p>Arrivals at one barrier collect in arrival order; an arrival at another barrier flushes those
  * first. An agent whose arrival waits here is parked, and stays a participant: nothing but its own
  * program removes a participant that is not held by an entry or exit barrier, so the phase cannot
- * trip without it, and the arrival counts in the phase it was made in. The flush that completes the
+ * trip without it, and the arrival counts in the phase it was made in, in which the agent is marked
+ * as arrived when it comes here ({@link SynchronisationBarrier#markArrival}). The flush that completes the
  * phase trips it, as a membership change does, waking every arrived agent.
  *
  * <p>Deadlock watchdog (the mission's {@code DeadlockWatchdog}): from the first arrival held to the end of the flush, a
@@ -31,10 +32,11 @@ final class ArrivalCombiner implements SliceRun.Deferred {
     private static final int MAX_CAPACITY = 256;
     /**
      * Chunks each thread should publish per phase ({@link #slicesPerFlush}): enough for a thread
-     * with nothing left to take a share of another's, few enough that their publications, each a
-     * handful of atomic updates of words every thread writes, cost little per agent.
+     * with nothing left to take a share of another's, few enough that their publications and the
+     * trip's hand-over of each, a handful of cache lines both threads write, cost little per step
+     * even where the cores are far apart (about a microsecond for each line that crosses).
      */
-    static final int CHUNKS_PER_THREAD = 4;
+    static final int CHUNKS_PER_THREAD = 2;
     /**
      * The participants from which a chunk's wake-up warms its agents first ({@link Agent#warmUp}):
      * below, the state of the agents a core ran is still in its cache, and the reads only cost.
@@ -48,6 +50,8 @@ final class ArrivalCombiner implements SliceRun.Deferred {
     private final Mission mission;
     private final SliceRun run;
     private SynchronisationBarrier barrier;
+    /** The phase of {@link #barrier} the held arrivals count in. */
+    private int phase;
     /** The arrivals held, in arrival order, in {@code held[0]} to {@code held[count - 1]}; a new array for each chunk. */
     private Agent[] held;
     private int count;
@@ -76,10 +80,13 @@ final class ArrivalCombiner implements SliceRun.Deferred {
             // Before the agent turns PARKED: the watchdog must not take it for idle for good.
             mission.outsideWakeUpStarted();
             barrier = at;
+            // Participants that have not arrived keep the phase from tripping: it is theirs until published.
+            phase = at.phase();
             held = new Agent[Math.max(FIRST_CAPACITY, Math.min(expected, MAX_CAPACITY))];
         } else if (count == held.length) {
             held = Arrays.copyOf(held, 2 * count);
         }
+        at.markArrival(agent, phase);
         held[count++] = agent;
     }
 
@@ -91,6 +98,7 @@ final class ArrivalCombiner implements SliceRun.Deferred {
         SynchronisationBarrier arrivedAt = barrier;
         published = arrivedAt;
         ArrivalChunk chunk = new ArrivalChunk(held, count, run, mission, participants >= WARM_FROM);
+        chunk.phase = phase;
         barrier = null;
         held = null;
         count = 0;

@@ -128,19 +128,15 @@ public final class SynchronisationBarrier {
     /**
      * The arrivals of a chunk's participants at once, as {@link #arrive} on each in turn, but with
      * one publication: the chunk goes on a stack of its own, whole, and the trip lets it go whole.
-     * Each agent has issued the ticket of its park. Returns the phase they completed, or -1.
+     * Each agent has issued the ticket of its park, and was marked as arrived here in
+     * {@code chunk.phase} when its arrival was held ({@link #markArrival}). Returns the phase they
+     * completed, or -1.
      */
     int arriveAll(ArrivalChunk chunk) {
-        // Participants that have not arrived keep the phase from tripping: it is theirs until published.
-        int phase = phase(state.get());
-        chunk.phase = phase;
-        for (int i = 0; i < chunk.count; i++) {
-            Agent agent = chunk.arrival(i);
-            // Read before written: a reference stored into an agent costs G1 a card mark (see ArrivalChunk).
-            if (agent.arrivedAt != this) {
-                agent.arrivedAt = this;
-            }
-            agent.arrivalPhase = phase;
+        int phase = chunk.phase;
+        if (phase(state.get()) != phase) {
+            throw new IllegalStateException(describe(state.get()) + ": a chunk of " + chunk.count + " held in phase "
+                    + phase + ", which tripped without it");
         }
         ArrivalChunk top;
         do {
@@ -153,6 +149,25 @@ public final class SynchronisationBarrier {
                     + phase + ", which tripped without it");
         }
         return completedPhase(next);
+    }
+
+    /**
+     * Marks {@code agent}, a participant whose arrival is held to be published in a chunk, as
+     * arrived in {@code phase}, the current one, which cannot move on before the chunk is counted:
+     * its arrival is missing until then. Marked while the arrival is held, when the agent's state is
+     * still in the holding thread's cache, rather than by a second pass over the chunk.
+     */
+    void markArrival(Agent agent, int phase) {
+        // Read before written: a reference stored into an agent costs G1 a card mark (see ArrivalChunk).
+        if (agent.arrivedAt != this) {
+            agent.arrivedAt = this;
+        }
+        agent.arrivalPhase = phase;
+    }
+
+    /** The current phase; no lock. */
+    int phase() {
+        return phase(state.get());
     }
 
     /** Counts {@code count} arrivals in the current phase, pushed already; returns the state after. */
@@ -286,6 +301,7 @@ public final class SynchronisationBarrier {
         for (ArrivalChunk chunk = inPublicationOrder(chunks.getAndSet(null)); chunk != null; ) {
             ArrivalChunk following = chunk.below;
             chunk.below = null;
+            chunk.wave = participants;
             letChunkGo.accept(chunk);
             chunk = following;
         }

@@ -12,4 +12,14 @@ public interface AgentTask {
      * the runtime never schedules an agent again before that call has returned.
      */
     void runSlice();
+
+    /**
+     * Ends the park {@code ticket} of the agent and runs its slice at once, on the calling thread,
+     * which holds a pending wake-up for it (see {@link WokenBatch}): true if it did; false, and
+     * nothing changed, if the agent is not parked with that ticket. By default false: the caller
+     * then wakes it as any other.
+     */
+    default boolean runSliceWoken(long ticket) {
+        return false;
+    }
 }

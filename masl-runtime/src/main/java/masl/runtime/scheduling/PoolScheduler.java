@@ -46,6 +46,16 @@ import java.util.concurrent.locks.LockSupport;
  * worker the pool adds meanwhile; one counted above {@link #workers} once it returns ends when it
  * next runs out of work.
  *
+ * <p><b>Passes.</b> A lock-step block runs as data-parallel passes: a trip lets its wave go as the
+ * batches its workers published ({@link WokenBatch}), each worker runs its own in one loop
+ * ({@link WokenBatch#run}: each agent woken straight into its slice, its arrival held by the
+ * worker's run), and publishes what arrived once, at the end; the last publication trips the
+ * barrier. So a step crosses between the cores a few times per batch, not per agent: each worker
+ * publishes about {@code ArrivalCombiner.CHUNKS_PER_THREAD} batches per step, and the batches of a
+ * wave shorter than {@value #SHARED_FROM} agents are all run by the worker that let them go
+ * ({@link #scheduleWoken}), one worker when the pass is too short to share. An agent that blocks,
+ * reacts or leaves the block leaves the pass for the ordinary path and rejoins at a later trip.
+ *
  * <p><b>Runs of slices.</b> Each worker is a {@link SliceRun}: its slices may defer their
  * arrivals at barriers to it ({@link #currentRun}). A runner flushes it after every
  * {@value #CHUNK} to {@value #MAX_SLICES_PER_FLUSH} slices, as its deferred work asks
@@ -67,7 +77,7 @@ public final class PoolScheduler implements Scheduler {
      * The most slices a runner runs between two flushes of its run, whatever its deferred work asks
      * ({@link SliceRun.Deferred#slicesPerFlush}): the longest an arrival it holds waits for it.
      */
-    private static final int MAX_SLICES_PER_FLUSH = 256;
+    private static final int MAX_SLICES_PER_FLUSH = 4_096;
     /** How long a runner that ran out of work waits for another runner's trip before it stops. */
     private static final long SPIN_NANOS = 100_000;
     /**
@@ -75,6 +85,13 @@ public final class PoolScheduler implements Scheduler {
      * agents its slices make runnable go to the common queue again, behind those waiting there.
      */
     private static final int HAND_OVERS = CHUNK;
+    /**
+     * The wave from which the batches a trip lets go are shared among the workers, each run by its
+     * home worker: those of a shorter wave are all run by the thread that let them go, since
+     * handing a batch to another core costs a few cache-line crossings (up to a few microseconds
+     * where the cores are far apart), more than that core would save by running its share.
+     */
+    private static final int SHARED_FROM = 8 * CHUNK;
 
     private final ForkJoinPool pool;
     private final int workers;
@@ -206,7 +223,12 @@ public final class PoolScheduler implements Scheduler {
         boolean counted = true;
         try {
             while (!shutDown) {
-                runUntilEmpty(self);
+                self.inRun = true;
+                try {
+                    runUntilEmpty(self);
+                } finally {
+                    self.inRun = false;
+                }
                 if (leaveIfSurplus()) {
                     counted = false;
                     return;
@@ -375,11 +397,7 @@ public final class PoolScheduler implements Scheduler {
 
     /** Wakes the agents of a batch this runner has taken and runs their slices; returns how many. */
     private int runWoken(Worker self, WokenBatch batch) {
-        int slices = batch.wake();
-        for (int i = 0; i < slices; i++) {
-            runSlice(self, batch.runnable(i));
-        }
-        return slices;
+        return batch.run(self);
     }
 
     /** Runs one slice of {@code agent} on {@code self}, which knows meanwhile whose slice it runs; returns 1. */
@@ -407,10 +425,19 @@ public final class PoolScheduler implements Scheduler {
     /**
      * Queues the batch on its home worker, whose runner takes it first (the agents' state is still
      * in that core's cache), or on the common queue if it has no home. A home whose worker has
-     * ended is closed, and what comes to it moves on to the common queue.
+     * ended is closed, and what comes to it moves on to the common queue. A batch of a wave shorter
+     * than {@value #SHARED_FROM} agents let go by a runner's own slices or flush stays with that
+     * runner, whatever its home.
      */
     @Override
     public void scheduleWoken(WokenBatch batch) {
+        Worker worker = ownWorker();
+        if (worker != null && worker.inRun && batch.wave() < SHARED_FROM) {
+            // Too short a pass to share: the runner that tripped runs it before it goes idle, and
+            // wakes no other, which would only steal it.
+            worker.run.homeQueue.add(batch);
+            return;
+        }
         SliceRun home = batch.home();
         if (home != null) {
             home.homeQueue.add(batch);
@@ -503,11 +530,13 @@ public final class PoolScheduler implements Scheduler {
     }
 
     /** A worker of one scheduler's pool: lets {@link Blocking} find the runner it runs, and its run of slices. */
-    private static final class Worker extends ForkJoinWorkerThread {
+    private static final class Worker extends ForkJoinWorkerThread implements WokenBatch.Slices {
         final PoolScheduler scheduler;
         final SliceRun run = new SliceRun();
         /** Set by whoever takes the worker off the idle list to wake it. */
         volatile boolean woken;
+        /** Whether its runner is in {@link #runUntilEmpty}, and so takes what comes to its home queue before it goes idle. */
+        boolean inRun;
         /** Blocking calls ({@link Blocking}) the worker is in: its runner is not counted meanwhile. */
         int blockedCalls;
         /** The agent whose slice the worker runs, null between slices. */
@@ -525,6 +554,21 @@ public final class PoolScheduler implements Scheduler {
         void wake() {
             woken = true;
             LockSupport.unpark(this);
+        }
+
+        @Override
+        public void slice(AgentTask agent) {
+            runSlice(this, agent);
+        }
+
+        @Override
+        public boolean wokenSlice(AgentTask agent, long ticket) {
+            running = agent;
+            try {
+                return agent.runSliceWoken(ticket);
+            } finally {
+                running = null;
+            }
         }
 
         /**

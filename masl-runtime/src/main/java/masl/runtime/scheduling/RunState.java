@@ -205,6 +205,19 @@ public final class RunState {
     }
 
     /**
+     * Ends the park {@code ticket} straight into a slice, {@code PARKED → RUNNING}, for a thread that
+     * runs the slice itself at once and holds a pending wake-up for the agent (a pass over the
+     * agents a barrier trip let go): one update where an {@link #unpark} and the slice's
+     * {@link #startSlice} take two. False, and no change, unless the agent is parked with that ticket
+     * (serving meanwhile, or that park has ended): the caller then ends the park as {@code unpark}
+     * does. Counted for the deadlock watchdog as an unpark is, by the caller, before.
+     */
+    public boolean resumeParked(long ticket) {
+        long parked = ticket << STATE_BITS | PARKED;
+        return word == parked && WORD.compareAndSet(this, parked, (long) RUNNING);
+    }
+
+    /**
      * Ends the park that issued {@code ticket}, unless it has ended already: true if the agent went
      * {@code PARKED → SCHEDULED} and the caller must hand it to the scheduler; false if that park
      * had ended (a stale or repeated ticket), or if the agent's slice, running or serving, notes the

@@ -32,4 +32,35 @@ public interface WokenBatch {
 
     /** The run of slices that ran the batch's agents last, where they are best run again; null if none. */
     SliceRun home();
+
+    /**
+     * How many agents the trip that let the batch go let go in all, this batch's among them: a
+     * scheduler shares the batches of a long wave among its threads, and runs those of a short one
+     * where they were let go.
+     */
+    int wave();
+
+    /**
+     * Wakes the batch's agents and runs the slice of each that is runnable, on the calling thread,
+     * in the order they were let go; returns how many slices it ran. Called once, instead of
+     * {@link #wake}, by a thread that runs the batch itself. By default wakes them all, then runs
+     * them; a batch may instead wake each agent straight into its slice
+     * ({@link Slices#wokenSlice}).
+     */
+    default int run(Slices slices) {
+        int runnable = wake();
+        for (int i = 0; i < runnable; i++) {
+            slices.slice(runnable(i));
+        }
+        return runnable;
+    }
+
+    /** How the thread running a batch runs one slice, so that it knows meanwhile whose slice it runs. */
+    interface Slices {
+        /** Runs the slice of a runnable agent. */
+        void slice(AgentTask agent);
+
+        /** {@link AgentTask#runSliceWoken}: ends the park {@code ticket} and runs the slice, or false. */
+        boolean wokenSlice(AgentTask agent, long ticket);
+    }
 }

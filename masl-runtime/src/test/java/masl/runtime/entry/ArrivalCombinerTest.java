@@ -57,7 +57,7 @@ class ArrivalCombinerTest {
     }
 
     @Test
-    void aRunIsAskedToFlushFourChunksPerThreadOfTheParticipantsOfItsLatestBarrier() {
+    void aRunIsAskedToFlushTwoChunksPerThreadOfTheParticipantsOfItsLatestBarrier() {
         assertEquals(SliceRun.DEFAULT_SLICES_PER_FLUSH, combiner.slicesPerFlush(2), "nothing published yet");
         for (int i = 0; i < 997; i++) {
             barrier.addParticipant();
@@ -65,8 +65,8 @@ class ArrivalCombinerTest {
         combiner.arrive(agents[0], barrier);
         assertEquals(SliceRun.DEFAULT_SLICES_PER_FLUSH, combiner.slicesPerFlush(2), "held, not published");
         assertTrue(combiner.flush());
-        assertEquals(1_000 / (4 * 2), combiner.slicesPerFlush(2));
-        assertEquals(1_000 / 4, combiner.slicesPerFlush(1));
+        assertEquals(1_000 / (2 * 2), combiner.slicesPerFlush(2));
+        assertEquals(1_000 / 2, combiner.slicesPerFlush(1));
     }
 
     @Test

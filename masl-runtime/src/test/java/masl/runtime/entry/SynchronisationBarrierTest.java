@@ -165,9 +165,14 @@ class SynchronisationBarrierTest {
         assertThrows(IllegalStateException.class, () -> barrier.arriveAll(chunk(agents[1], agents[2])));
     }
 
-    /** A chunk of agents given in arrival order, as an ArrivalCombiner makes it. */
+    /** A chunk of agents given in arrival order, each marked as arrived in the current phase, as an ArrivalCombiner makes it. */
     private ArrivalChunk chunk(Agent... inArrivalOrder) {
-        return new ArrivalChunk(inArrivalOrder.clone(), inArrivalOrder.length, null, mission, true);
+        ArrivalChunk chunk = new ArrivalChunk(inArrivalOrder.clone(), inArrivalOrder.length, null, mission, true);
+        chunk.phase = barrier.phase();
+        for (Agent agent : inArrivalOrder) {
+            barrier.markArrival(agent, chunk.phase);
+        }
+        return chunk;
     }
 
     private void participants(int count) {

@@ -18,8 +18,9 @@ import org.junit.jupiter.api.Timeout;
  * The pool's run queues and runs of slices, on one worker, where the order of slices is the
  * queues': a wave is one item that keeps its place, a worker's home batches come first, an agent a
  * slice makes runnable runs right after it (32 in a row at most), and what slices defer to the run
- * is done after as many slices as it asks (32 to 256), when the queue is empty, and before a slice
- * blocks; and on two, where a busy worker's home batch is not left waiting.
+ * is done after as many slices as it asks (32 to 4,096), when the queue is empty, and before a slice
+ * blocks; and on two, where a busy worker's home batch is not left waiting, and the batch of a short
+ * wave stays with the worker whose slice let it go.
  */
 @Timeout(60)
 class PoolSchedulerTest {
@@ -68,8 +69,8 @@ class PoolSchedulerTest {
     }
 
     @Test
-    void theRunIsFlushedAfterNoMoreThan256Slices() throws InterruptedException {
-        assertFlushedEvery(256, flushesOf(1_000, 10_000, true));
+    void theRunIsFlushedAfterNoMoreThan4096Slices() throws InterruptedException {
+        assertFlushedEvery(4_096, flushesOf(10_000, 100_000, true));
     }
 
     /**
@@ -172,6 +173,28 @@ class PoolSchedulerTest {
             assertTrue(busyDone.await(20, TimeUnit.SECONDS));
         } finally {
             gateOpen.countDown();
+            two.shutdown();
+        }
+    }
+
+    @Test
+    void aBatchOfAShortWaveLetGoByASliceRunsOnThatSlicesWorkerWhateverItsHome() throws InterruptedException {
+        PoolScheduler two = new PoolScheduler(2);
+        try {
+            List<Thread> threads = new CopyOnWriteArrayList<>();
+            CountDownLatch batchRan = new CountDownLatch(1);
+            SliceRun noWorkersRun = new SliceRun();
+            two.schedule(task(0, () -> {
+                threads.add(Thread.currentThread());
+                two.scheduleWoken(batch(noWorkersRun, task(1, () -> {
+                    threads.add(Thread.currentThread());
+                    batchRan.countDown();
+                })));
+            }));
+
+            assertTrue(batchRan.await(20, TimeUnit.SECONDS), "the batch ran");
+            assertEquals(threads.get(0), threads.get(1), "on the worker that let it go");
+        } finally {
             two.shutdown();
         }
     }
@@ -287,6 +310,11 @@ class PoolSchedulerTest {
             @Override
             public SliceRun home() {
                 return home;
+            }
+
+            @Override
+            public int wave() {
+                return tasks.length;
             }
         };
     }

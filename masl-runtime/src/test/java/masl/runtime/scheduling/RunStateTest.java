@@ -38,6 +38,34 @@ class RunStateTest {
     }
 
     @Test
+    void aPassEndsTheParkOfThePendingTicketStraightIntoASlice() {
+        long ticket = runningWithTicket();
+        assertTrue(run.park(false));
+
+        assertFalse(run.resumeParked(ticket + 1), "another ticket");
+        assertTrue(run.isParked());
+        assertTrue(run.resumeParked(ticket));
+        assertEquals(0, run.pendingTicket());
+        assertFalse(run.isParked());
+        assertFalse(run.unpark(ticket), "that park has ended");
+        long next = run.issueTicket();
+        assertTrue(run.park(false), "the slice runs as one its scheduler started");
+        assertEquals(next, run.pendingTicket());
+    }
+
+    @Test
+    void aPassLeavesAnAgentBeingServedToItsServingSlice() {
+        long ticket = runningWithTicket();
+        assertTrue(run.park(false));
+        assertTrue(run.claimServing(() -> true));
+
+        assertFalse(run.resumeParked(ticket));
+        assertTrue(run.isServing());
+        assertFalse(run.unpark(ticket), "noted for the serving slice, which schedules the program");
+        assertFalse(run.park(true), "woken while served");
+    }
+
+    @Test
     void aStaleTicketEndsNoLaterPark() {
         long first = runningWithTicket();
         assertTrue(run.park(false));
