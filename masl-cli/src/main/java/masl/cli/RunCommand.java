@@ -169,7 +169,7 @@ final class RunCommand {
             err.println("masl: " + platform.getMessage());
             return Masl.MISSION_FAILED;
         }
-        if (outcome.failure().orElse(null) instanceof MissionOutOfMemory) {
+        if (outcome.status() == MissionOutcome.Status.FAILED && outcome.failure().orElse(null) instanceof MissionOutOfMemory) {
             err.println("masl: the mission ran out of memory: its data outgrew the heap's "
                     + MissionOutOfMemory.heapLimitMiB() + " MiB (java -Xmx, in JAVA_OPTS or MASL_OPTS, sets it)");
             err.println(outcome.report().stripTrailing());

@@ -362,8 +362,8 @@ public final class Agent extends SteppingAgent implements AgentContext {
     }
 
     @Override
-    protected boolean memoryExhausted() {
-        return mission.memoryExhausted();
+    protected boolean halted() {
+        return mission.halted();
     }
 
     /** The agent's private side its {@link Invoker} and {@link Emitter} need: kept off the public one. */

@@ -79,6 +79,8 @@ public final class Mission {
     /** Wake-ups counted and pending, for the deadlock watchdog. */
     private final WakeUps wakeUps;
     private final DeadlockWatchdog watchdog;
+    /** Made with the mission: when it is written, the heap may have no room. */
+    private final MissionEnd end;
     /** {@link #run} has seen the end (whatever it was) and is stopping the scheduler. */
     private volatile boolean over;
     /** Asynchronous primitives running: the mission completes when they and every program are over. */
@@ -106,6 +108,7 @@ public final class Mission {
         running = new AtomicInteger(agents.size());
         coordinator.addAgents(agents);
         watchdog = new DeadlockWatchdog(agents, wakeUps, running, builder.openToOutsideInvocations);
+        end = new MissionEnd(agents, coordinator, trace, scheduler::nanoTime);
         MemoryReserve.hold();
     }
 
@@ -146,27 +149,16 @@ public final class Mission {
         } finally {
             MemoryReserve.forget(outOfMemory);
         }
+        // Decided: the agents park at their next yield, so that none takes the room the end is written
+        // in, and what fails from now on does not change the outcome.
         over = true;
-        trace.record(new TraceEvent.MissionEnded(scheduler.nanoTime(), status.name().toLowerCase(Locale.ROOT),
-                status == MissionOutcome.Status.STOPPED ? stopReason : null));
-        String report = status == MissionOutcome.Status.COMPLETED ? "" : report();
+        halted = true;
+        Throwable cause = failure.get() != null ? failure.get() : firstDeath.get();
+        String report = end.write(status, stopReason);
         scheduler.shutdown();
         primitiveCalls.shutdownNow();
         journal.flush();
-        Throwable cause = failure.get() != null ? failure.get() : firstDeath.get();
         return new MissionOutcome(status, journal.text(), Optional.ofNullable(cause), report);
-    }
-
-    /** One line per agent: its program counter and chain of blocks, for failure reports. */
-    private String report() {
-        return coordinator.query(() -> {
-            StringBuilder report = new StringBuilder();
-            for (Agent agent : agents) {
-                report.append(agent.describe()).append(": ").append(agent.memberships.isEmpty()
-                        ? "in no block" : agent.memberships.toString()).append('\n');
-            }
-            return report.toString();
-        });
     }
 
     /**
@@ -198,19 +190,19 @@ public final class Mission {
 
     /** Made before it is needed: when it is, the heap has no room. */
     private final MissionOutOfMemory heapExhausted = new MissionOutOfMemory();
-    /** The heap was exhausted: agents stop at their next yield, allocating no more. */
-    private volatile boolean memoryExhausted;
+    /** The heap was exhausted, or the mission's end decided: agents stop at their next yield, allocating no more. */
+    private volatile boolean halted;
     /** The heap is exhausted ({@link MemoryReserve}): the mission fails at once. */
     private final Runnable outOfMemory = () -> {
-        memoryExhausted = true;
+        halted = true;
         if (failure.compareAndSet(null, heapExhausted)) {
             ended.countDown();
         }
     };
 
-    /** Whether the heap was exhausted while the mission ran: its agents run no more. */
-    boolean memoryExhausted() {
-        return memoryExhausted;
+    /** Whether its agents run no more: the heap was exhausted, or the mission's end is decided. */
+    boolean halted() {
+        return halted;
     }
 
     /** Stops the mission from outside: {@link #run} returns {@link MissionOutcome.Status#STOPPED}. */

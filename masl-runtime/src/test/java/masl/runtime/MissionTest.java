@@ -8,13 +8,16 @@ import java.io.StringWriter;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.regex.Pattern;
+import masl.runtime.scheduling.PoolScheduler;
 import masl.runtime.testing.Driver;
 import masl.runtime.testing.MaslProgram;
 import masl.runtime.testing.Missions;
 import masl.runtime.testing.TestAgent;
 import masl.runtime.trace.LeaveCause;
 import masl.runtime.trace.MemoryTrace;
+import masl.runtime.trace.Trace;
 import masl.runtime.trace.TraceEvent;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -85,6 +88,37 @@ class MissionTest {
         Mission mission = ENDLESS.newMission(TestAgent::new).scheduler(driver.newScheduler()).build();
         MissionOutcome outcome = mission.run(Duration.ofMillis(300));
         assertEquals(MissionOutcome.Status.TIMED_OUT, outcome.status());
+        assertTrue(Pattern.compile("agent a0 \\(0\\) at pc \\d+ \\(endless.masl:4: .*\\): \\[main\\]").matcher(outcome.report()).find(),
+                outcome.report());
+    }
+
+    /**
+     * The timeout of a mission whose data fills the heap: writing its end finds no room the first
+     * time, as when the heap is exhausted, and is written again in the room of the reserve.
+     */
+    @Test
+    void aMissionTimedOutWithTheHeapFullStillRecordsItsEndAndReports() throws InterruptedException {
+        MemoryTrace recorded = new MemoryTrace();
+        AtomicBoolean heapFull = new AtomicBoolean(true);
+        Trace fullAtTheEnd = event -> {
+            if (event instanceof TraceEvent.MissionEnded && heapFull.getAndSet(false)) {
+                throw new OutOfMemoryError("Java heap space");
+            }
+            recorded.record(event);
+        };
+        PoolScheduler scheduler = new PoolScheduler();
+        MissionOutcome outcome;
+        try {
+            outcome = ENDLESS.newMission(TestAgent::new).scheduler(scheduler).trace(fullAtTheEnd).build()
+                    .run(Duration.ofMillis(300));
+        } catch (OutOfMemoryError escaped) {
+            // JUnit would end the whole run on it: an assertion's failure instead, the agent stopped.
+            scheduler.shutdown();
+            throw new AssertionError("the mission's end found no room, and the mission gave up", escaped);
+        }
+        assertEquals(MissionOutcome.Status.TIMED_OUT, outcome.status());
+        assertEquals(List.of("timed_out"), recorded.events(TraceEvent.MissionEnded.class).stream()
+                .map(TraceEvent.MissionEnded::status).toList());
         assertTrue(Pattern.compile("agent a0 \\(0\\) at pc \\d+ \\(endless.masl:4: .*\\): \\[main\\]").matcher(outcome.report()).find(),
                 outcome.report());
     }

@@ -79,8 +79,8 @@ public abstract class ScheduledAgent implements AgentTask {
      */
     public abstract String source();
 
-    /** Whether the mission failed for want of memory: then no agent goes on. */
-    protected abstract boolean memoryExhausted();
+    /** Whether the mission's end is decided, or it failed for want of memory: then no agent goes on. */
+    protected abstract boolean halted();
 
     /** Issues the ticket of a park: the caller (this agent's own slice) then returns {@code false}. */
     public final long prepareToPark() {
@@ -183,14 +183,14 @@ public abstract class ScheduledAgent implements AgentTask {
 
     /** Counts a step of the slice; at the slice's end, parks the agent and wakes it at once (the scheduler's turn). */
     protected final boolean yieldIfSliceUsed() {
-        if (++stepsThisSlice < mission.scheduler().stepsPerSlice() && !memoryExhausted()) {
+        if (++stepsThisSlice < mission.scheduler().stepsPerSlice() && !halted()) {
             return true;
         }
         long ticket = prepareToPark();
-        if (!memoryExhausted()) {
+        if (!halted()) {
             unpark(ticket);
         }
-        // else parked for good: the mission failed for want of memory, which this agent would take
+        // else parked for good: the mission has ended, or failed for want of memory, which this agent would take
         return false;
     }
 
