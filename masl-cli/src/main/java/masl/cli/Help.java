@@ -160,7 +160,8 @@ final class Help {
     private static final String EXIT_STATUS = """
             exit status: 0 success, 1 errors in the program or its descriptors, 2 the mission failed,
                          deadlocked or timed out, or its journal or trace could not be written, 64 bad usage,
-                         70 internal error, 130 or 143 stopped by Ctrl-C or SIGTERM
+                         70 internal error, 71 out of memory before the mission ran, 74 an output could
+                         not be written, 130 or 143 stopped by Ctrl-C or SIGTERM
             """;
 
     private Help() {

@@ -8,6 +8,7 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import masl.runtime.MissionOutOfMemory;
 import masl.runtime.descriptor.AgentPath;
 import masl.translator.cache.CompiledMissionCache;
 import masl.translator.compile.GeneratedCodeException;
@@ -15,10 +16,11 @@ import masl.translator.diagnostics.Suggestions;
 import masl.translator.source.SourceFile;
 
 /**
- * The {@code masl} command. Exit statuses (components.md): 0 success, 1 errors in the program or its
- * descriptors, 2 the mission failed (deadlock, crash, timeout, lost journal), 64 bad usage, 70 an
- * internal error (a bug of masl, reported as one, never as a stack trace); a run Ctrl-C or SIGTERM
- * stops ends with the JVM's 130 or 143 ({@link StopOnSignal}).
+ * The {@code masl} command. Exit statuses (language reference §15): 0 success, 1 errors in the
+ * program or its descriptors, 2 the mission failed (deadlock, crash, timeout, lost journal), 64 bad
+ * usage, 70 an internal error (a bug of masl, reported as one, never as a stack trace), 71 out of
+ * memory before a mission ran (translating a program too large for the heap), 74 an output that
+ * cannot be written; a run Ctrl-C or SIGTERM stops ends with the JVM's 130 or 143 ({@link StopOnSignal}).
  */
 public final class Masl {
 
@@ -27,6 +29,10 @@ public final class Masl {
     static final int MISSION_FAILED = 2;
     static final int USAGE = 64;
     static final int INTERNAL_ERROR = 70;
+    /** sysexits' EX_OSERR: the JVM's heap is too small for the work, which is no bug of masl. */
+    static final int OUT_OF_MEMORY = 71;
+    /** sysexits' EX_IOERR: an output file or folder cannot be written. */
+    static final int CANNOT_WRITE = 74;
 
     private final InputStream in;
     private final PrintStream out;
@@ -124,10 +130,36 @@ public final class Masl {
             err.println("masl: internal error: the Java generated for this program does not compile; please report it"
                     + " with the program" + savedReport(bug));
             return INTERNAL_ERROR;
-        } catch (RuntimeException | StackOverflowError | OutOfMemoryError | LinkageError bug) {
+        } catch (OutOfMemoryError exhausted) {
+            return outOfMemory();
+        } catch (RuntimeException | StackOverflowError | LinkageError bug) {
+            if (causedByOutOfMemory(bug)) {
+                return outOfMemory();
+            }
             err.println("masl: internal error, please report it with the program that caused it: " + bug);
             return INTERNAL_ERROR;
         }
+    }
+
+    /**
+     * The heap ran out before any mission did (a mission's own exhaustion fails it, status 2): the
+     * program, or the trace drawn, is too large for the heap the JVM was given.
+     */
+    private int outOfMemory() {
+        err.println("masl: out of memory: the heap's " + MissionOutOfMemory.heapLimitMiB() + " MiB is too small for"
+                + " this input (java -Xmx, in JAVA_OPTS or MASL_OPTS, sets it)");
+        return OUT_OF_MEMORY;
+    }
+
+    /** javac, run in memory, may report the heap's exhaustion wrapped in an exception of its own. */
+    private static boolean causedByOutOfMemory(Throwable failure) {
+        Throwable cause = failure.getCause();
+        for (int depth = 0; cause != null && depth < 16; depth++, cause = cause.getCause()) {
+            if (cause instanceof OutOfMemoryError) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private int dispatch(CommandLine line, Progress progress) throws UsageException, SourceFile.NotUtf8 {
@@ -170,7 +202,12 @@ public final class Masl {
         if (loaded == null) {
             return PROGRAM_ERRORS;
         }
-        Path folder = Path.of(line.outputFolder);
+        Path folder;
+        try {
+            folder = Path.of(line.outputFolder);
+        } catch (InvalidPathException bad) {
+            throw new UsageException("not a folder name: " + line.outputFolder);
+        }
         Map<Path, String> files = new LinkedHashMap<>();
         loaded.translation().javaSources().forEach((name, text) -> files.put(folder.resolve(name.replace('.', '/') + ".java"), text));
         CommandInputs inputs = CommandInputs.ofProgram(source, agentPath);
@@ -182,9 +219,9 @@ public final class Masl {
             try {
                 Files.createDirectories(file.getParent());
                 Files.writeString(file, unit.getValue());
-            } catch (IOException | InvalidPathException cannotWrite) {
-                err.println("masl: cannot write " + file + ": " + cannotWrite.getMessage());
-                return USAGE;
+            } catch (IOException cannotWrite) {
+                err.println("masl: cannot write the Java source " + file + ": " + OutputFolder.reason(cannotWrite));
+                return CANNOT_WRITE;
             }
         }
         return OK;

@@ -30,7 +30,8 @@ import masl.translator.source.SourceFile;
  * trajectory picture are written to {@code --out}, by default the folder {@code NAME.out} next to
  * the scenario file {@code NAME.scenario.xml}. Folders holding the scenario's descriptor files are
  * searched for descriptors before {@code --agent-path}. An output folder that cannot be written is
- * reported before anything runs; a signal stops the mission and the output is still written.
+ * reported before anything runs, and fails the run (status 2) as a trace that cannot be written
+ * does; a signal stops the mission and the output is still written.
  */
 final class SimRun {
 
@@ -87,8 +88,9 @@ final class SimRun {
         refuseOverwritingInputs(output, scenarioFile, scenario, source, agentPath).refuseJournalOverwriting(out);
         String unwritable = OutputFolder.cannotWrite(output);
         if (unwritable != null) {
+            // A run whose output cannot be written fails, as one whose trace cannot (RunCommand).
             err.println("masl: cannot write the simulation's output to " + output + ": " + unwritable);
-            return Masl.USAGE;
+            return Masl.MISSION_FAILED;
         }
         JournalOutput journal = new JournalOutput(out);
         try (StopOnSignal signals = new StopOnSignal(err)) {
@@ -96,6 +98,7 @@ final class SimRun {
                     .withJournal(progress.journal(journal))
                     .withOutput(output)
                     .withTraceLimit(line.traceLimit)
+                    .whenWarned(warnings -> new DiagnosticPrinter(Map.of()).print(warnings, err))
                     .withTimeout(line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds))
                     .whenReady(mission -> {
                         journal.whenFailed(() -> mission.stop(RunCommand.JOURNAL_LOST));
@@ -113,6 +116,9 @@ final class SimRun {
                 result = new ScenarioRunner(seeded(scenario, line.seed)).run(loaded.loader().program(), options);
             } finally {
                 progress.end();
+            }
+            if (result.traceCut()) {
+                err.println("masl: " + TraceOutput.cutAt(output.resolve(ScenarioRunner.TRACE), line.traceLimit));
             }
             return report(result, scenario, output, signals, journal);
         } catch (ScenarioException doesNotFit) {

@@ -50,7 +50,8 @@ final class TimelineCommand {
         try {
             Files.writeString(page, html, StandardCharsets.UTF_8);
         } catch (IOException unwritable) {
-            throw new UsageException(line.outputFile + ": cannot be written (" + unwritable.getMessage() + ")");
+            err.println("masl: cannot write the page " + page + ": " + OutputFolder.reason(unwritable));
+            return Masl.CANNOT_WRITE;
         }
         return Masl.OK;
     }

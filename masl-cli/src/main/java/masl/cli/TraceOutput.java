@@ -112,8 +112,11 @@ final class TraceOutput {
 
     /** What standard error says of a trace cut at its limit, if it was. */
     Optional<String> cut() {
-        return trace != null && trace.wasCut()
-                ? Optional.of("the trace " + file + " was cut at its limit of " + limit + " bytes (--trace-limit)")
-                : Optional.empty();
+        return trace != null && trace.wasCut() ? Optional.of(cutAt(file, limit)) : Optional.empty();
+    }
+
+    /** What standard error says of the trace {@code file} cut at {@code limit} bytes: a plain run's, or a simulation's {@code trace.jsonl}. */
+    static String cutAt(Object file, long limit) {
+        return "the trace " + file + " was cut at its limit of " + limit + " bytes (--trace-limit)";
     }
 }

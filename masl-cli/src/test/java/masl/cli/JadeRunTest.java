@@ -92,7 +92,7 @@ class JadeRunTest {
                 + " declares a, b)\n"), undeclared.err());
         Run malformed = Run.of("run", program, "--platform", "jade", "--place", "a=c2,b");
         assertEquals(64, malformed.status());
-        assertTrue(malformed.err().startsWith("masl: --place:1:6: error: expected AGENT=CONTAINER, got 'b'\n"),
+        assertTrue(malformed.err().startsWith("masl: --place a=c2,b: column 6: error: expected AGENT=CONTAINER, got 'b'\n"),
                 malformed.err());
         assertEquals(64, Run.of("run", program, "--place", "a=c2").status(), "--place needs --platform jade");
         assertEquals(64, Run.of("run", program, "--platform", "jade", "--port", "1099", "--main-host", "h",

@@ -113,6 +113,25 @@ class SimRunTest {
         List<String> lines = Files.readAllLines(trace);
         assertTrue(lines.get(lines.size() - 1).matches("\\{\"nanos\":\\d+,\"event\":\"trace-cut\",\"limit\":4096}"),
                 lines.get(lines.size() - 1));
+        assertTrue(run.err().contains("masl: the trace " + trace + " was cut at its limit of 4096 bytes (--trace-limit)\n"),
+                "said as a plain run says it: " + run.err());
+    }
+
+    /** A world the simulator reads with a warning (it has no cone): said on standard error, positioned, and the run goes on. */
+    @Test
+    void theWarningsOfTheXodeFilesAreShownWithTheirPositions() throws IOException {
+        Path scenario = scenario(DRIVE);
+        Files.writeString(folder.resolve("floor.xode"), FLOOR.replace("</space>",
+                "  <geom name=\"c\"><cone radius=\"1\" length=\"2\"/></geom>\n</space>"));
+
+        Run run = Run.of("run", "--sim", scenario.toString(), "--quiet");
+
+        assertEquals(0, run.status(), run.err());
+        assertEquals("drove\n", run.out());
+        List<String> lines = run.err().lines().toList();
+        assertTrue(lines.get(0).matches(".*floor\\.xode:3:\\d+: warning: <cone>: ode4j has no cone: this geom is skipped"),
+                run.err());
+        assertTrue(lines.contains("1 warning"), run.err());
     }
 
     @Test
@@ -162,10 +181,10 @@ class SimRunTest {
         Path file = Files.writeString(folder.resolve("taken"), "a file, not a folder");
         Path out = file.resolve("out");
         Run run = Run.of("run", "--sim", scenario.toString(), "--out", out.toString());
-        assertEquals(new Run(64, "", "masl: cannot write the simulation's output to " + out + ": Not a directory ("
+        assertEquals(new Run(2, "", "masl: cannot write the simulation's output to " + out + ": Not a directory ("
                 + out + ")\n"), run);
         Run taken = Run.of("run", "--sim", scenario.toString(), "--out", file.toString());
-        assertEquals(new Run(64, "", "masl: cannot write the simulation's output to " + file + ": " + file
+        assertEquals(new Run(2, "", "masl: cannot write the simulation's output to " + file + ": " + file
                 + " exists and is not a folder\n"), taken);
     }
 

@@ -35,13 +35,17 @@ final class MaslExit {
         return null;
     }
 
-    /** The statuses of the {@code masl} command, as its README lists them. */
-    private static String meaning(int status) {
+    /** The statuses of the {@code masl} command, as its README lists them (the Maven plug-in's {@code ExitStatus} says the same). */
+    static String meaning(int status) {
         return switch (status) {
-            case 1 -> "errors in the program or its descriptors";
-            case 2 -> "the mission failed, deadlocked, timed out or was stopped";
+            case 1 -> "errors in the program or its descriptors, or an agent class that cannot be made";
+            case 2 -> "the mission failed, deadlocked, timed out or was stopped, or its journal or trace could not be written";
             case 64 -> "masl was called wrongly";
             case 70 -> "an internal error of masl";
+            case 71 -> "out of memory before the mission ran: the program is too large for masl's heap";
+            case 74 -> "an output could not be written";
+            case 130 -> "stopped by Ctrl-C";
+            case 143 -> "stopped by SIGTERM";
             default -> "not one of masl's";
         };
     }

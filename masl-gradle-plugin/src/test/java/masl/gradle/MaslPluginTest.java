@@ -93,8 +93,8 @@ class MaslPluginTest {
         assertTrue(output.contains("masl: the same run again: gradle maslRun -Pmission=team -PcallTimeout=500 -Pseed=3\n"), output);
         assertTrue(output.contains("> mission team failed: the mission failed: "), output);
         assertTrue(output.contains("ArithmeticException"), output);
-        assertTrue(output.contains(" (masl exit status 2: the mission failed, deadlocked, timed out or was stopped);"
-                + " masl's report is above"), output);
+        assertTrue(output.contains(" (masl exit status 2: the mission failed, deadlocked, timed out or was stopped,"
+                + " or its journal or trace could not be written); masl's report is above"), output);
     }
 
     /**

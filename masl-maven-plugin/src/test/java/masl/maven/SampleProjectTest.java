@@ -74,8 +74,8 @@ class SampleProjectTest {
         assertTrue(output.contains("caused by java.lang.ArithmeticException: / by zero"), "masl's report:\n" + output);
         assertTrue(output.contains("masl: the same run again: mvn masl:run -Dmission=crash -Dseed=5\n"), "masl's replay hint:\n" + output);
         assertTrue(output.contains("mission crash failed: the mission failed: java.lang.IllegalStateException: agent a (0) at pc 2"
-                + " (crash.masl:5: .logln(\"half=\" + (1 / zero));) failed (masl exit status 2: the mission failed, deadlocked or timed out,"
-                + " or its journal or trace could not be written); masl's report is above\n"
+                + " (crash.masl:5: .logln(\"half=\" + (1 / zero));) failed (masl exit status 2: the mission failed, deadlocked, timed out"
+                + " or was stopped, or its journal or trace could not be written); masl's report is above\n"
                 + "[ERROR] The same run again: mvn masl:run -Dmission=crash -Dseed=5\n"), output);
     }
 

@@ -14,7 +14,7 @@ import masl.runtime.diagnostic.Diagnostic;
  * Where each MASL agent's body lives ({@code masl run --place}): {@code w1=c2,w3=c2} on the command
  * line, or a file of such pairs, one per line ({@code #} starts a comment). Agents not named stay
  * in the coordinator's container. A mistake is reported with its position
- * ({@code places.txt:3:4: error: …}, or {@code --place:1:7: error: …}).
+ * ({@code places.txt:3:4: error: …}, or {@code --place w1=c2,w2: column 7: error: …}).
  */
 public final class Placement {
 
@@ -30,7 +30,7 @@ public final class Placement {
             Map<String, String> placement = new LinkedHashMap<>();
             int column = 1;
             for (String pair : option.split(",", -1)) {
-                add(placement, pair, "--place", 1, column);
+                add(placement, pair, "--place " + option, 0, column);
                 column += pair.length() + 1;
             }
             return placement;
@@ -58,6 +58,7 @@ public final class Placement {
         return placement;
     }
 
+    /** @param where the file, or the option and its value ({@code line} 0: a value has columns only) */
     private static void add(Map<String, String> placement, String pair, String where, int line, int column) {
         int leading = pair.length() - pair.stripLeading().length();
         String text = pair.strip();

@@ -30,11 +30,11 @@ class PlacementTest {
 
     @Test
     void mistakesArePositioned() throws Exception {
-        assertEquals("--place:1:7: error: expected AGENT=CONTAINER, got 'w2'", message("w1=c2,w2"));
-        assertEquals("--place:1:10: error: 'c 2' is not a container name (letters, digits, '_', '.', '-')",
+        assertEquals("--place w1=c2,w2: column 7: error: expected AGENT=CONTAINER, got 'w2'", message("w1=c2,w2"));
+        assertEquals("--place w1=c2,w2=c 2: column 10: error: 'c 2' is not a container name (letters, digits, '_', '.', '-')",
                 message("w1=c2,w2=c 2"));
-        assertEquals("--place:1:7: error: w1 is placed twice", message("w1=c2,w1=c3"));
-        assertEquals("--place:1:1: error: '1w' is not an agent name", message("1w=c2"));
+        assertEquals("--place w1=c2,w1=c3: column 7: error: w1 is placed twice", message("w1=c2,w1=c3"));
+        assertEquals("--place 1w=c2: column 1: error: '1w' is not an agent name", message("1w=c2"));
         Path file = Files.writeString(folder.resolve("places.txt"), "w1=lab\n  w2 lab\n");
         assertEquals(file + ":2:3: error: expected AGENT=CONTAINER, got 'w2 lab'", message(file.toString()));
         assertEquals("cannot read placement file " + folder.resolve("none"),

@@ -14,8 +14,15 @@ class DiagnosticTest {
     void theHeadlineLeavesOutAPositionThatIsNotKnown() {
         assertEquals("a.masl:3:7: error: no", Diagnostic.error("a.masl", 3, 7, "no").headline());
         assertEquals("a.xml:3: error: no", Diagnostic.error("a.xml", 3, 0, "no").headline());
-        assertEquals("a.xml: error: no", Diagnostic.error("a.xml", 0, 5, "no").headline());
+        assertEquals("a.xml: error: no", Diagnostic.error("a.xml", 0, 0, "no").headline());
         assertEquals("w.xode:1:2: warning: odd", new Diagnostic("w.xode", 1, 2, Severity.WARNING, "odd").toString());
+    }
+
+    /** A command-line option's value is one line: its column is named as such, not as a file's line 1. */
+    @Test
+    void anOptionsValueIsPositionedByItsColumnAlone() {
+        assertEquals("--place a=c2,b: column 6: error: expected AGENT=CONTAINER",
+                Diagnostic.inOption("--place", "a=c2,b", 6, "expected AGENT=CONTAINER").headline());
     }
 
     @Test

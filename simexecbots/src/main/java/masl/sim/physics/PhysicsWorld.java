@@ -3,6 +3,7 @@ package masl.sim.physics;
 import java.time.Duration;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.NoSuchElementException;
@@ -14,6 +15,7 @@ import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Supplier;
+import masl.runtime.diagnostic.Diagnostic;
 import masl.sim.xode.LoadTarget;
 import masl.sim.xode.LoadedModel;
 import masl.sim.xode.OdeRuntime;
@@ -79,6 +81,8 @@ public final class PhysicsWorld implements AutoCloseable {
     private final Map<String, DBody> bodies = new ConcurrentHashMap<>();
     private final Map<String, DJoint> joints = new ConcurrentHashMap<>();
     private final Set<String> names = new HashSet<>();
+    /** The warnings of every document loaded, each once: robots sharing a body file share its warnings. */
+    private final Set<Diagnostic> warnings = new LinkedHashSet<>();
     /** Joints made by attachFixed, the only ones detach destroys. */
     private final Set<String> latches = new HashSet<>();
     private volatile long steps;
@@ -136,7 +140,18 @@ public final class PhysicsWorld implements AutoCloseable {
             names.addAll(model.bodies().keySet());
             names.addAll(model.joints().keySet());
             names.addAll(model.geoms().keySet());
+            model.warnings().forEach(warning -> warnings.add(warning.diagnostic()));
             return model;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** The warnings of the documents loaded so far (unknown elements, ignored scale…), each with its file, line and column. */
+    public List<Diagnostic> warnings() {
+        lock.lock();
+        try {
+            return List.copyOf(warnings);
         } finally {
             lock.unlock();
         }

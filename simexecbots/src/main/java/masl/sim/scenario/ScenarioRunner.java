@@ -101,6 +101,9 @@ public final class ScenarioRunner {
                 }
                 implementations.put(spec.name(), implementation);
             }
+            if (!world.warnings().isEmpty()) {
+                options.warned().accept(world.warnings());
+            }
             Simulation simulation = new Simulation(scenario, world, robots, recorder);
             binder.initialise(simulation);
             return runMission(program, options, simulation, implementations);
@@ -153,7 +156,7 @@ public final class ScenarioRunner {
         List<Path> files = options.output().isPresent()
                 ? writeOutput(options.output().get(), simulation, outcome, traceText.toString(), simulated)
                 : List.of();
-        return new SimulationResult(outcome, simulated, recorder, traceText.toString(), files);
+        return new SimulationResult(outcome, simulated, recorder, traceText.toString(), files, jsonTrace.wasCut());
     }
 
     private List<Path> writeOutput(Path folder, Simulation simulation, MissionOutcome outcome, String trace,

@@ -7,11 +7,12 @@ import masl.sim.output.RunRecorder;
 
 /**
  * The end of a scenario run: the mission's outcome (journal included), how much simulated time
- * passed, the recorded trajectories and events, the runtime trace as JSON lines, and the files
- * written (empty without an output folder).
+ * passed, the recorded trajectories and events, the runtime trace as JSON lines, the files
+ * written (empty without an output folder), and whether the trace was cut at its limit
+ * ({@link RunOptions#traceLimit()}).
  */
 public record SimulationResult(MissionOutcome outcome, double simulatedSeconds, RunRecorder recorder, String trace,
-        List<Path> files) {
+        List<Path> files, boolean traceCut) {
 
     public SimulationResult {
         files = List.copyOf(files);
