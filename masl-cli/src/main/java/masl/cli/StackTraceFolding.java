@@ -5,7 +5,9 @@ import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
+import java.util.Optional;
 import java.util.regex.Pattern;
+import masl.jade.platform.ContainerDepartures;
 
 /**
  * A standard error on which every stack trace is one line: its first (the exception and its
@@ -14,8 +16,9 @@ import java.util.regex.Pattern;
  * {@code printStackTrace} rather than through its log (a peer container whose JVM ended abruptly):
  * the {@code masl} command ({@link Main}) installs it as {@code System.err} so that those are one line
  * too (masl-jade-bridge's {@code JadeLog} makes JADE's log records one line; the CLI itself never
- * prints a stack trace). No JADE class is involved: an in-process run loads none. Thread-safe, as a
- * {@link PrintStream} is.
+ * prints a stack trace). What JADE prints so of a container that left abruptly is said in masl's
+ * words ({@link ContainerDepartures}). No JADE class is involved: an in-process run loads none.
+ * Thread-safe, as a {@link PrintStream} is.
  */
 final class StackTraceFolding extends OutputStream {
 
@@ -40,7 +43,13 @@ final class StackTraceFolding extends OutputStream {
         if (b == '\n') {
             // The patterns are ASCII: matching bytes as Latin-1 works for any charset that extends ASCII.
             String text = line.toString(StandardCharsets.ISO_8859_1).stripTrailing();
-            if (!CONTINUATION.matcher(text).matches()) {
+            // Only JADE's exceptions start so: no class of the bridge is loaded for other lines.
+            Optional<String> departure = text.startsWith("jade.") ? ContainerDepartures.inMaslWords(text) : Optional.empty();
+            if (departure.isPresent()) {
+                if (!departure.get().isEmpty()) {
+                    target.println(departure.get());
+                }
+            } else if (!CONTINUATION.matcher(text).matches()) {
                 target.write(line.toByteArray(), 0, line.size());
             }
             line.reset();

@@ -23,4 +23,16 @@ class StackTraceFoldingTest {
         assertEquals("before\njava.lang.IllegalStateException: connection lost\nafter, at the end\n",
                 bytes.toString(StandardCharsets.UTF_8));
     }
+
+    /** JADE's AMS removing a container twice prints a NotFoundException: the departure, in masl's words. */
+    @Test
+    void jadesNotFoundContainerIsTheContainersDepartureInMaslsWords() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream err = StackTraceFolding.around(new PrintStream(bytes, true, StandardCharsets.UTF_8));
+        err.println("jade.core.NotFoundException: No container named c7 was found");
+        err.println("\tat jade.core.MainContainerImpl.removeAllMTPs(MainContainerImpl.java:1210)");
+        err.println("after");
+        assertEquals("masl: container c7 left the platform (its JVM ended or its connection broke)\nafter\n",
+                bytes.toString(StandardCharsets.UTF_8));
+    }
 }

@@ -31,6 +31,7 @@ import masl.jade.deployment.ContainerLostException;
 import masl.jade.deployment.Coordination;
 import masl.jade.deployment.Wire;
 import masl.jade.outside.OutsideCalls;
+import masl.jade.platform.ContainerDepartures;
 import masl.jade.platform.JadeException;
 import masl.jade.platform.JadePlatform;
 import masl.jade.stub.StubClasses;
@@ -343,8 +344,12 @@ public final class Distribution {
             return;
         }
         if (!ending) {
-            System.err.println("masl: the container " + container + " is gone (its JVM ended or died): calls to "
-                    + String.join(", ", agents) + " now fail with uncaught_exception");
+            // The departure itself may have been said already, from what JADE logged of it.
+            System.err.println(ContainerDepartures.said(container)
+                    ? "masl: calls to " + String.join(", ", agents) + ", whose container " + container
+                            + " left, now fail with uncaught_exception"
+                    : "masl: the container " + container + " is gone (its JVM ended or died): calls to "
+                            + String.join(", ", agents) + " now fail with uncaught_exception");
         }
         Map<String, String> reasons = new LinkedHashMap<>();
         agents.forEach(agent -> reasons.put(agent, "the container " + container + " of agent " + agent + " is gone"));

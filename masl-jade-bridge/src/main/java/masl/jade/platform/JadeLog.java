@@ -3,6 +3,7 @@ package masl.jade.platform;
 import java.io.OutputStream;
 import java.io.PrintStream;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Supplier;
 import java.util.logging.Handler;
 import java.util.logging.Level;
@@ -14,6 +15,7 @@ import java.util.stream.Stream;
  * Where JADE's own log records go: one line each on standard error, {@code JADE <level>: <message>},
  * the first line of the message only and never a stack trace (JADE attaches one to most failures it
  * logs, which a user of {@code masl run} must not see). Records below the chosen level are dropped.
+ * What JADE logs of a container that left abruptly is said as masl says it ({@link ContainerDepartures}).
  */
 final class JadeLog {
 
@@ -72,8 +74,13 @@ final class JadeLog {
             }
             String message = record.getMessage() == null ? "" : record.getMessage().strip();
             int newline = message.indexOf('\n');
-            out.println("JADE " + record.getLevel().getName().toLowerCase() + ": "
-                    + (newline < 0 ? message : message.substring(0, newline)));
+            String first = newline < 0 ? message : message.substring(0, newline);
+            Optional<String> departure = ContainerDepartures.inMaslWords(first);
+            if (departure.isEmpty()) {
+                out.println("JADE " + record.getLevel().getName().toLowerCase() + ": " + first);
+            } else if (!departure.get().isEmpty()) {
+                out.println(departure.get());
+            }
         }
 
         @Override
