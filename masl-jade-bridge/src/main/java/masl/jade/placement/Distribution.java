@@ -11,6 +11,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
@@ -95,6 +96,8 @@ public final class Distribution {
 
     private volatile Deployed deployed = new Deployed(Map.of(), null, null, List.of());
     private final AtomicLong deployedMessages = new AtomicLong();
+    /** Whether the containers of deployed agents are still there, while the mission runs; null without any. */
+    private volatile ContainerWatch watch;
 
     /** What a relayed request needs: the mission, each agent's name, primitives and implementation, the time limit. */
     private record Served(Mission mission, List<String> names, List<PrimitiveTable> tables,
@@ -159,6 +162,8 @@ public final class Distribution {
             List<String> names) {
         deployed = new Deployed(Map.copyOf(containerOfAgent), source, coordination, List.copyOf(names));
         coordinator.deployedTo(this::takeDeployed);
+        watch = new ContainerWatch(coordinator, () -> containerOfAgent.values().stream().distinct()
+                .map(containers::get).filter(Objects::nonNull).toList());
     }
 
     /** The wire to the container running agent {@code proxyId}'s program: signed {@code INFORM}s. */
@@ -281,6 +286,9 @@ public final class Distribution {
      */
     public void end() throws InterruptedException {
         ending = true;
+        if (watch != null) {
+            watch.close();
+        }
         Map<String, AID> ended = new LinkedHashMap<>();
         for (Map.Entry<String, AID> container : containers.entrySet()) {
             try {
