@@ -376,8 +376,12 @@ public final class Distribution {
             return;
         }
         if (!ending) {
-            System.err.println("masl: the container " + container + " is gone (its JVM ended or died): its deployed"
-                    + " agents " + String.join(", ", agents) + " fail");
+            // The departure itself may have been said already, from what JADE logged of it.
+            System.err.println(ContainerDepartures.said(container)
+                    ? "masl: the deployed agents " + String.join(", ", agents) + ", whose container " + container
+                            + " left, fail"
+                    : "masl: the container " + container + " is gone (its JVM ended or died): its deployed agents "
+                            + String.join(", ", agents) + " fail");
         }
         deployment.coordination().lose(agents.stream().map(deployment.names()::indexOf).toList(),
                 "the container " + container + " is gone (its JVM ended or died)");
