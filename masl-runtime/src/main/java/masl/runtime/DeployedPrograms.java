@@ -1,6 +1,7 @@
 package masl.runtime;
 
 import java.util.List;
+import masl.runtime.descriptor.AgentType;
 
 /**
  * What the JADE bridge needs of generated programs to run an agent's program in another JVM than its
@@ -11,8 +12,11 @@ import java.util.List;
  */
 public final class DeployedPrograms {
 
-    /** A program's top-level block (null if it has none) and its agents' programs in proxy id order. */
-    public record Made(EntryDefinition main, List<AgentProgram> programs) {
+    /**
+     * A program's top-level block (null if it has none), its agents' programs in proxy id order, and
+     * their types (an element is null for an agent declared without one).
+     */
+    public record Made(EntryDefinition main, List<AgentProgram> programs, List<AgentType> types) {
     }
 
     private DeployedPrograms() {

@@ -499,7 +499,9 @@ public final class Mission {
         }
 
         DeployedPrograms.Made madeOutsideAMission() {
-            return new DeployedPrograms.Made(main, agents.stream().<AgentProgram>map(a -> a.program.apply(a.implementation)).toList());
+            return new DeployedPrograms.Made(main,
+                    agents.stream().<AgentProgram>map(a -> a.program.apply(a.implementation)).toList(),
+                    agents.stream().map(AgentDeclaration::type).toList());
         }
 
         /**

@@ -75,7 +75,10 @@ final class ContextCalls {
                 return bool(ctx.writeAttribute(agent(request, "owner"), text(request, "attribute"),
                         () -> coordination.run(id, call, null)));
             }
-            case "setAcceptState": ctx.setAcceptState(text(request, "state")); return null;
+            case "setAcceptState":
+                // The state it is now in: the container's copy of it (OwnPermeability) follows.
+                ctx.setAcceptState(text(request, "state"));
+                return text(ctx.getAcceptState());
             case "getAcceptState": {
                 int of = request.get("agent").intValue();
                 return text(of == id ? ctx.getAcceptState() : ctx.getAcceptState(agent(request, "agent")));

@@ -54,7 +54,8 @@ public final class DeployedTeam implements AutoCloseable {
         List<MissionProgram.AgentSpec> specs = program.agents();
         for (int id = 0; id < specs.size(); id++) {
             if (names.contains(specs.get(id).name())) {
-                hosted.put(id, new RemoteContext(id, made.programs().get(id), this));
+                hosted.put(id, new RemoteContext(id, made.programs().get(id),
+                        new OwnPermeability(made.types().get(id)), this));
             }
         }
     }

@@ -27,14 +27,17 @@ import masl.runtime.Label;
 import masl.runtime.RemotePrimitiveException;
 import masl.runtime.SharedDeclaration;
 import masl.runtime.SharedVariable;
+import masl.runtime.descriptor.PermeabilityState;
 import masl.runtime.entry.Entry;
 
 /**
  * The {@link AgentContext} of a deployed agent's program in its container. The program and the
  * Java code it hands over (its primitives' calls, attribute accesses, update functions) run here;
- * what the mission owns (blocks, barriers, waves, shared variables, events, permeability, the
- * agent's place in the journal) is a request to the mission, answered by the mission's runtime on
- * the thread running the agent's step there, so that the runtime's rules hold as in-process. Each
+ * its own primitives and attributes with no message when its own permeability state allows them
+ * ({@link OwnPermeability}). What the mission owns (blocks, barriers, waves, shared variables,
+ * events, others' permeability, the agent's place in the journal) is a request to the mission,
+ * answered by the mission's runtime on the thread running the agent's step there, so that the
+ * runtime's rules hold as in-process. Each
  * request carries the program's resumption point and each answer brings back the one the runtime
  * left (it redirects the program to reactions).
  */
@@ -48,14 +51,16 @@ final class RemoteContext implements AgentContext {
 
     private final int id;
     private final AgentProgram program;
+    private final OwnPermeability own;
     private final DeployedTeam team;
     private final BlockingQueue<ObjectNode> answers = new LinkedBlockingQueue<>();
     private final Map<Long, Mirror> mirrors = new ConcurrentHashMap<>();
     private final Map<CompletionStage<?>, Long> callOf = new IdentityHashMap<>();
 
-    RemoteContext(int id, AgentProgram program, DeployedTeam team) {
+    RemoteContext(int id, AgentProgram program, OwnPermeability own, DeployedTeam team) {
         this.id = id;
         this.program = program;
+        this.own = own;
         this.team = team;
     }
 
@@ -284,17 +289,39 @@ final class RemoteContext implements AgentContext {
         return (CompletableFuture<T>) future;
     }
 
+    /**
+     * Runs here, with no message, when the agent's own state allows it; a primitive that throws is
+     * then handed to the mission as a call that throws the same, so that the agent perceives
+     * {@code uncaught_exception} as in-process.
+     */
     @Override
-    @SuppressWarnings("unchecked")
     public <T> T invokeSelf(String primitive, T defaultValue, Callable<T> call) {
+        if (!own.letsInvoke(primitive)) {
+            return invokeSelfInTheMission(primitive, defaultValue, call);
+        }
+        try {
+            return call.call();
+        } catch (Exception thrown) {
+            return invokeSelfInTheMission(primitive, defaultValue, () -> {
+                throw thrown;
+            });
+        }
+    }
+
+    @SuppressWarnings("unchecked")
+    private <T> T invokeSelfInTheMission(String primitive, T defaultValue, Callable<T> call) {
         long number = team.callbacks().call(call);
         boolean ran = bool("invokeSelf", JSON.objectNode().put("primitive", primitive).put("call", number));
         return (T) team.callbacks().result(number, ran, defaultValue);
     }
 
+    /** The agent's own attribute is read here when its state allows it, as {@link #invokeSelf}. */
     @Override
     @SuppressWarnings("unchecked")
     public <T> T readAttribute(AgentImplementation owner, String attribute, T defaultValue, Supplier<T> read) {
+        if (proxyId(owner) == id && own.letsAccess(attribute, PermeabilityState.READ)) {
+            return read.get();
+        }
         long number = team.callbacks().call(read::get);
         boolean ran = bool("readAttribute",
                 JSON.objectNode().put("owner", proxyId(owner)).put("attribute", attribute).put("call", number));
@@ -303,6 +330,10 @@ final class RemoteContext implements AgentContext {
 
     @Override
     public boolean writeAttribute(AgentImplementation owner, String attribute, Runnable write) {
+        if (proxyId(owner) == id && own.letsAccess(attribute, PermeabilityState.WRITE)) {
+            write.run();
+            return true;
+        }
         long number = team.callbacks().call(() -> {
             write.run();
             return null;
@@ -315,7 +346,7 @@ final class RemoteContext implements AgentContext {
 
     @Override
     public void setAcceptState(String name) {
-        call("setAcceptState", JSON.objectNode().put("state", name));
+        own.nowIn(call("setAcceptState", JSON.objectNode().put("state", name)).textValue());
     }
 
     @Override
@@ -347,6 +378,9 @@ final class RemoteContext implements AgentContext {
     @Override
     public <T> CompletableFuture<T> launch(AgentImplementation callee, String primitive, T defaultValue,
             Callable<T> call, String countermeasure, Callable<?> countermeasureCall) {
+        if (proxyId(callee) == id) {
+            own.armed(primitive);
+        }
         long armed = team.callbacks().call(countermeasureCall);
         return queued("launch", callee, primitive, defaultValue, call,
                 JSON.objectNode().put("countermeasure", countermeasure).put("countermeasureCall", armed));
