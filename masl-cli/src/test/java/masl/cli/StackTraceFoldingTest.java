@@ -35,4 +35,22 @@ class StackTraceFoldingTest {
         assertEquals("masl: container c7 left the platform (its JVM ended or its connection broke)\nafter\n",
                 bytes.toString(StandardCharsets.UTF_8));
     }
+
+    /** On SIGTERM, JADE's resource manager prints the interrupt of its own terminator's sleep: dropped. */
+    @Test
+    void jadesOwnInterruptIsDroppedAndAnotherIsItsFirstLine() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream err = StackTraceFolding.around(new PrintStream(bytes, true, StandardCharsets.UTF_8));
+        err.println("java.lang.InterruptedException: sleep interrupted");
+        err.println("\tat java.base/java.lang.Thread.sleep(Native Method)");
+        err.println("\tat jade.core.FullResourceManager$2.run(FullResourceManager.java:175)");
+        err.println("before");
+        err.println("java.lang.InterruptedException: sleep interrupted");
+        err.println("\tat java.base/java.lang.Thread.sleep(Native Method)");
+        err.println("\tat masl.cli.Elsewhere.run(Elsewhere.java:1)");
+        err.println("java.lang.InterruptedException");
+        err.println("after");
+        assertEquals("before\njava.lang.InterruptedException: sleep interrupted\njava.lang.InterruptedException\nafter\n",
+                bytes.toString(StandardCharsets.UTF_8));
+    }
 }
