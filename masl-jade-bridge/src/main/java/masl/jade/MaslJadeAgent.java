@@ -6,11 +6,11 @@ import jade.lang.acl.ACLMessage;
 import java.util.concurrent.CountDownLatch;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
+import masl.jade.acl.Conversations;
 import masl.jade.acl.EventContent;
 import masl.jade.outside.AttributeQueries;
 import masl.jade.outside.EventSubscribers;
 import masl.jade.outside.OutsideCalls;
-import masl.jade.placement.CoordinatorAgent;
 import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 
@@ -29,7 +29,7 @@ import masl.runtime.Mission;
  * limit of calls from outside the mission ({@link OutsideCalls}), and the answer is {@code INFORM}
  * with its result or {@code FAILURE} with what it threw (or that it ran past the limit). A
  * {@code SUBSCRIBE} subscribes its sender to the mission's shared events, a {@code CANCEL} ends that
- * ({@link EventSubscribers}); an {@code INFORM} of conversation {@value CoordinatorAgent#EVENT}
+ * ({@link EventSubscribers}); an {@code INFORM} of conversation {@value Conversations#EVENT}
  * raises the shared event it names ({@link EventContent}); a {@code QUERY_REF} reads an attribute
  * ({@link AttributeQueries}).
  */
@@ -61,7 +61,7 @@ final class MaslJadeAgent extends RegisteredMaslAgent {
         if (subscribers.take(message, this)) {
             return;
         }
-        if (message.getPerformative() == ACLMessage.INFORM && CoordinatorAgent.EVENT.equals(message.getConversationId())) {
+        if (message.getPerformative() == ACLMessage.INFORM && Conversations.EVENT.equals(message.getConversationId())) {
             raise(message);
             return;
         }

@@ -1,6 +1,7 @@
 package masl.jade.external;
 
 import jade.core.AID;
+import jade.core.Agent;
 import jade.domain.DFService;
 import jade.domain.FIPAAgentManagement.DFAgentDescription;
 import jade.domain.FIPAAgentManagement.ServiceDescription;
@@ -96,7 +97,8 @@ public final class ExternalAgents {
         return externals.containsKey(proxyId);
     }
 
-    public ExternalAgentHost host(int proxyId) {
+    /** The JADE agent standing for external agent {@code proxyId}, whose threaded behaviour runs its program. */
+    public Agent host(int proxyId) {
         return externals.get(proxyId).host();
     }
 

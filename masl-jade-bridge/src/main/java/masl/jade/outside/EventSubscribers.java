@@ -7,8 +7,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import masl.jade.acl.AclInvocations;
+import masl.jade.acl.Conversations;
 import masl.jade.acl.JsonContent;
-import masl.jade.placement.CoordinatorAgent;
 import masl.runtime.Mission;
 import masl.runtime.trace.Trace;
 import masl.runtime.trace.TraceEvent;
@@ -16,7 +16,7 @@ import masl.runtime.trace.TraceEvent;
 /**
  * FIPA agents that asked a MASL agent, with a {@code SUBSCRIBE}, for the mission's shared events: each
  * shared event emitted afterwards is sent to them as an {@code INFORM} (conversation
- * {@value CoordinatorAgent#EVENT}, in reply to the subscription, JSON content
+ * {@value Conversations#EVENT}, in reply to the subscription, JSON content
  * {@code {"event": "go", "block": "main", "emitter": "leader", "message": "now"}}) by the agent they
  * subscribed with, until they send it a {@code CANCEL} or the mission ends. One mission; thread-safe.
  */
@@ -75,7 +75,7 @@ public final class EventSubscribers {
     private static void send(Subscription subscription, String content) {
         ACLMessage inform = subscription.subscribe().createReply();
         inform.setPerformative(ACLMessage.INFORM);
-        inform.setConversationId(CoordinatorAgent.EVENT);
+        inform.setConversationId(Conversations.EVENT);
         inform.setLanguage(AclInvocations.LANGUAGE);
         inform.setOntology(AclInvocations.ONTOLOGY);
         inform.setContent(content);

@@ -13,6 +13,7 @@ import masl.jade.MessagesButTheDfs;
 import masl.jade.PrimitiveTable;
 import masl.jade.RegisteredMaslAgent;
 import masl.jade.acl.AclInvocations;
+import masl.jade.acl.Conversations;
 import masl.jade.acl.JsonContent;
 import masl.jade.acl.Reply;
 import masl.jade.trust.MissionChannel;
@@ -30,7 +31,7 @@ import masl.runtime.AgentImplementation;
  * thread) and is answered with the result, or the exception, and the journal text it wrote
  * ({@link BodyJournal}), signed: the coordinator takes no answer that is not.
  * <li>A request from any other FIPA agent (or one merely claiming to be the coordinator) is read
- * here ({@code NOT_UNDERSTOOD} at once if malformed), then relayed to the coordinator ({@value CoordinatorAgent#RELAY}), which filters it
+ * here ({@code NOT_UNDERSTOOD} at once if malformed), then relayed to the coordinator ({@value Conversations#RELAY}), which filters it
  * by the agent's permeability state as an <em>other</em> when the agent serves it, as in-process,
  * and has it run here; its answer goes back to the requester with the requester's
  * {@code in-reply-to}.
@@ -94,7 +95,7 @@ final class BodyAgent extends RegisteredMaslAgent {
     private void relay(ACLMessage request) {
         ACLMessage relay = new ACLMessage(ACLMessage.REQUEST);
         relay.addReceiver(coordinator);
-        relay.setConversationId(CoordinatorAgent.RELAY);
+        relay.setConversationId(Conversations.RELAY);
         relay.setLanguage(AclInvocations.LANGUAGE);
         relay.setOntology(AclInvocations.ONTOLOGY);
         relay.setContent(request.getContent());

@@ -23,6 +23,7 @@ import masl.jade.MessagesButTheDfs;
 import masl.jade.PrimitiveTable;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
+import masl.jade.acl.Conversations;
 import masl.jade.acl.JsonContent;
 import masl.jade.acl.PlacementContent;
 import masl.jade.acl.Reply;
@@ -37,29 +38,22 @@ import masl.runtime.descriptor.AgentType;
 /**
  * The agent of a container that hosts bodies ({@link MaslContainer}), named
  * {@code masl-container-NAME} and registered with the DF as {@value DfEntries#CONTAINER_SERVICE}
- * {@code NAME}. It obeys the platform's {@value CoordinatorAgent#NAME} only, and only control
+ * {@code NAME}. It obeys the platform's {@value Conversations#COORDINATOR} only, and only control
  * messages signed with the mission's secret ({@link MissionSecret}); any other is refused, said in
- * one line, and changes nothing. {@value CoordinatorAgent#PLACE} (once) creates the bodies of
+ * one line, and changes nothing. {@value Conversations#PLACE} (once) creates the bodies of
  * the agents placed here ({@link BodyAgent}; {@code INFORM} once they exist and are registered,
- * {@code FAILURE} with the reason otherwise), {@value CoordinatorAgent#END} deletes them, answers,
- * and ends the container's mission. Shared events ({@code INFORM} {@value CoordinatorAgent#EVENT})
+ * {@code FAILURE} with the reason otherwise), {@value Conversations#END} deletes them, answers,
+ * and ends the container's mission. Shared events ({@code INFORM} {@value Conversations#EVENT})
  * go to the container's listener. It watches that the mission's coordinator (before one places
- * bodies here: the platform's AMS) can still be reached ({@link #ALIVE}): once a message to it
+ * bodies here: the platform's AMS) can still be reached ({@value Conversations#ALIVE}): once a message to it
  * comes back undeliverable, it deletes the bodies and ends the container's mission, saying why
  * ({@link #lost()}).
  */
-public final class ContainerHost extends Agent {
+final class ContainerHost extends Agent {
     private static final long serialVersionUID = 1L;
     private static final long BODIES_TIMEOUT_SECONDS = 30;
     /** How often the container checks that its coordinator (or the AMS) can still be reached. */
     private static final long ALIVE_PERIOD_MILLIS = 500;
-    /**
-     * The conversation of those checks: {@code INFORM}s nobody answers, but the MTS when undeliverable;
-     * and of the coordinator's {@code REQUEST}s asking whether this container is still there, which it
-     * answers {@code INFORM}.
-     */
-    static final String ALIVE = "masl-alive";
-
     private final transient String containerName;
     private final transient Function<String, AgentType> types;
     private final transient ClassLoader classes;
@@ -74,7 +68,7 @@ public final class ContainerHost extends Agent {
     private final transient List<BodyAgent> bodies = new ArrayList<>();
     private transient ExecutorService primitiveThreads;
     private final transient List<String> hosted = new CopyOnWriteArrayList<>();
-    /** The one agent whose control messages this container obeys: the platform's {@value CoordinatorAgent#NAME}. */
+    /** The one agent whose control messages this container obeys: the platform's {@value Conversations#COORDINATOR}. */
     private transient AID coordinator;
     private transient volatile boolean placed;
     /** Whether the bodies placed here exist and are registered. */
@@ -99,17 +93,13 @@ public final class ContainerHost extends Agent {
         this.types = types;
         this.classes = classes;
         this.events = events;
-        this.channel = MissionChannel.reading(agentName(containerName), secretSource);
+        this.channel = MissionChannel.reading(Conversations.containerAgent(containerName), secretSource);
         this.refusals = refusals;
-    }
-
-    public static String agentName(String containerName) {
-        return "masl-container-" + containerName;
     }
 
     @Override
     protected void setup() {
-        coordinator = new AID(CoordinatorAgent.NAME, AID.ISLOCALNAME);
+        coordinator = new AID(Conversations.COORDINATOR, AID.ISLOCALNAME);
         try {
             DFService.register(this, DfEntries.service(getAID(), DfEntries.CONTAINER_SERVICE, containerName));
         } catch (FIPAException e) {
@@ -131,7 +121,7 @@ public final class ContainerHost extends Agent {
 
     private ACLMessage aliveCheck() {
         ACLMessage check = new ACLMessage(ACLMessage.INFORM);
-        check.setConversationId(ALIVE);
+        check.setConversationId(Conversations.ALIVE);
         check.addReceiver(placed ? coordinator : getAMS());
         return check;
     }
@@ -198,8 +188,8 @@ public final class ContainerHost extends Agent {
         if (message.getSender() != null && message.getSender().equals(getAMS())) {
             // The AMS says a message to the coordinator (a check, a deployed agent's) was undeliverable;
             // it is never answered, lest it answer back.
-            boolean toCoordinator = ALIVE.equals(message.getConversationId())
-                    || CoordinatorAgent.DEPLOYED.equals(message.getConversationId());
+            boolean toCoordinator = Conversations.ALIVE.equals(message.getConversationId())
+                    || Conversations.DEPLOYED.equals(message.getConversationId());
             if (message.getPerformative() == ACLMessage.FAILURE && toCoordinator && ended.getCount() > 0) {
                 lost = placed ? "the mission's coordinator is gone (its JVM died or it left the platform)"
                         : "the platform's main container is gone";
@@ -222,16 +212,16 @@ public final class ContainerHost extends Agent {
 
     private static boolean isControl(ACLMessage message) {
         String conversation = message.getConversationId();
-        return message.getPerformative() == ACLMessage.REQUEST && (CoordinatorAgent.PLACE.equals(conversation)
-                || CoordinatorAgent.END.equals(conversation) || ALIVE.equals(conversation))
-                || message.getPerformative() == ACLMessage.INFORM && (CoordinatorAgent.EVENT.equals(conversation)
-                        || CoordinatorAgent.DEPLOYED.equals(conversation));
+        return message.getPerformative() == ACLMessage.REQUEST && (Conversations.PLACE.equals(conversation)
+                || Conversations.END.equals(conversation) || Conversations.ALIVE.equals(conversation))
+                || message.getPerformative() == ACLMessage.INFORM && (Conversations.EVENT.equals(conversation)
+                        || Conversations.DEPLOYED.equals(conversation));
     }
 
     /** A control message that passed {@link #refusal}: placement (once), end, a check, or an event. */
     private void obey(ACLMessage message) {
         switch (message.getConversationId()) {
-            case CoordinatorAgent.PLACE -> {
+            case Conversations.PLACE -> {
                 if (placed) {
                     refuse(message, "this container already hosts its mission's bodies", true);
                 } else {
@@ -242,7 +232,7 @@ public final class ContainerHost extends Agent {
                     }
                 }
             }
-            case CoordinatorAgent.DEPLOYED -> {
+            case Conversations.DEPLOYED -> {
                 DeployedTeam deployed = team;
                 if (deployed == null) {
                     refuse(message, "no agent is deployed here", true);
@@ -254,13 +244,13 @@ public final class ContainerHost extends Agent {
                     }
                 }
             }
-            case CoordinatorAgent.END -> {
+            case Conversations.END -> {
                 stopTeam("the mission has ended");
                 deleteBodies();
                 send(channel.sign(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)), getAID()));
                 endMission();
             }
-            case ALIVE -> send(channel.sign(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)),
+            case Conversations.ALIVE -> send(channel.sign(AclInvocations.reply(message, Reply.Kind.RESULT, JsonContent.result(null)),
                     getAID()));
             default -> events.accept(message);
         }
@@ -274,7 +264,7 @@ public final class ContainerHost extends Agent {
      */
     private String refusal(ACLMessage message) {
         if (!coordinator.equals(message.getSender())) {
-            return "only " + CoordinatorAgent.NAME + " controls a MASL container";
+            return "only " + Conversations.COORDINATOR + " controls a MASL container";
         }
         return channel.refusal(message);
     }
@@ -328,7 +318,7 @@ public final class ContainerHost extends Agent {
             if (deploy.isPresent()) {
                 deployedNames = deploy.get().agents();
                 team = DeployedTeams.make(deploy.get(), translator, containerName, message -> send(channel.sign(
-                        Distribution.inform(coordinator, CoordinatorAgent.DEPLOYED, message.toString()), getAID())));
+                        Conversations.inform(coordinator, Conversations.DEPLOYED, message.toString()), getAID())));
                 hosted.addAll(deployedNames);
             }
             bodiesReady = true;

@@ -9,10 +9,11 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
+import masl.jade.acl.Conversations;
 
 /**
  * While deployed agents' programs run, asks each of their containers every {@value #PERIOD_MILLIS} ms
- * whether it is still there ({@value ContainerHost#ALIVE}, signed): a deployed agent in the middle of a
+ * whether it is still there ({@value Conversations#ALIVE}, signed): a deployed agent in the middle of a
  * step sends its container nothing, and the AMS's removal event does not reach every coordinator, so
  * the AMS's {@code FAILURE} for an undeliverable check is what tells the coordinator, within a period or
  * two, that the container's JVM died ({@link CoordinatorAgent} reports it unreachable).
@@ -36,7 +37,7 @@ final class ContainerWatch implements AutoCloseable {
                 if (previous != null) {
                     coordinator.forget(previous);
                 }
-                ACLMessage check = Distribution.request(container, ContainerHost.ALIVE, "{}");
+                ACLMessage check = Conversations.request(container, Conversations.ALIVE, "{}");
                 coordinator.ask(check);
                 asked.put(container, check);
             }

@@ -18,38 +18,25 @@ import masl.jade.DfEntries;
 import masl.jade.MessagesButTheDfs;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
+import masl.jade.acl.Conversations;
 import masl.jade.trust.MissionChannel;
 import masl.jade.trust.MissionSecret;
 import masl.jade.trust.PendingAnswers;
 
 /**
- * {@value #NAME}: the agent of the main container through which a mission spanning containers talks
+ * {@value Conversations#COORDINATOR}: the agent of the main container through which a mission spanning containers talks
  * to its bodies and their containers. The mission's runtime (every agent's program, entries,
  * barriers, shared variables and labels, events, the watchdog) runs in this JVM; the programs of
  * agents placed elsewhere run in threaded behaviours of this agent, and their primitives are
  * {@code REQUEST}s it sends ({@link RemoteBody}). It takes an answer only from the agent it asked,
  * with the request's unguessable {@code in-reply-to} ({@link PendingAnswers}), and hands over the
- * requests that bodies relay from FIPA agents ({@value #RELAY}). Every message it sends a party of the
+ * requests that bodies relay from FIPA agents ({@value Conversations#RELAY}). Every message it sends a party of the
  * mission is signed, and it acts on no answer or relay that is not ({@link MissionChannel}). Registered with the DF as {@value DfEntries#COORDINATOR_SERVICE}.
  */
-public final class CoordinatorAgent extends Agent {
+final class CoordinatorAgent extends Agent {
     private static final long serialVersionUID = 1L;
 
-    public static final String NAME = "masl-coordinator";
-    /** The coordinator invoking a primitive on a body. */
-    public static final String BODY = "masl-body";
-    /** The coordinator asking a container to host bodies. */
-    public static final String PLACE = "masl-place";
-    /** The coordinator telling a container that the mission has ended. */
-    public static final String END = "masl-end";
-    /** A body relaying a FIPA agent's request, which the coordinator filters and serves. */
-    public static final String RELAY = "masl-relay";
-    /** A shared event emitted in the mission, sent to the containers hosting bodies. */
-    public static final String EVENT = "masl-event";
-    /** The coordination of a deployed agent's program with its mission, both ways ({@code INFORM}s). */
-    static final String DEPLOYED = "masl-deployed";
-
-    private final transient PendingAnswers answers = new PendingAnswers(NAME);
+    private final transient PendingAnswers answers = new PendingAnswers(Conversations.COORDINATOR);
     private final transient MissionChannel channel;
     private final transient Consumer<String> refusals;
     /** Why each agent that can no longer answer (its container is gone) cannot, by local name. */
@@ -67,7 +54,7 @@ public final class CoordinatorAgent extends Agent {
      *                         those it takes from them ({@link MissionChannel})
      * @param refusals         told one line for each message claiming to come from a party of the
      *                         mission that is refused (not signed, or a copy), on this agent's thread
-     * @param relays           serves a request a body relays (conversation {@value #RELAY}), on this agent's thread
+     * @param relays           serves a request a body relays (conversation {@value Conversations#RELAY}), on this agent's thread
      * @param containerRemoved told the name of each container the AMS reports removed (its JVM ended or
      *                         died), on this agent's thread
      * @param unreachable      told the local name of an agent a request could not be delivered to (the
@@ -75,7 +62,7 @@ public final class CoordinatorAgent extends Agent {
      */
     CoordinatorAgent(MissionSecret secret, Consumer<String> refusals, CountDownLatch ready,
             Consumer<ACLMessage> relays, Consumer<String> containerRemoved, Consumer<String> unreachable) {
-        this.channel = MissionChannel.of(NAME, secret);
+        this.channel = MissionChannel.of(Conversations.COORDINATOR, secret);
         this.refusals = refusals;
         this.ready = ready;
         this.relays = relays;
@@ -87,7 +74,7 @@ public final class CoordinatorAgent extends Agent {
     protected void setup() {
         thread = Thread.currentThread();
         try {
-            DFService.register(this, DfEntries.service(getAID(), DfEntries.COORDINATOR_SERVICE, NAME));
+            DFService.register(this, DfEntries.service(getAID(), DfEntries.COORDINATOR_SERVICE, Conversations.COORDINATOR));
         } catch (FIPAException e) {
             // Only a directory entry: the mission does not need it.
         }
@@ -117,7 +104,7 @@ public final class CoordinatorAgent extends Agent {
      * mission's secret; the future completes with its answer, which only its receiver can give. May be
      * called from any thread.
      */
-    public CompletableFuture<ACLMessage> ask(ACLMessage request) {
+    CompletableFuture<ACLMessage> ask(ACLMessage request) {
         CompletableFuture<ACLMessage> answer = answers.register(request);
         String receiver = ((AID) request.getAllReceiver().next()).getLocalName();
         channel.sign(request, getAID());
@@ -141,7 +128,7 @@ public final class CoordinatorAgent extends Agent {
     }
 
     /**
-     * Hands each signed {@value #DEPLOYED} message to {@code taker}, on this agent's thread, which
+     * Hands each signed {@value Conversations#DEPLOYED} message to {@code taker}, on this agent's thread, which
      * checks that it comes from the container of the agent it names.
      */
     void deployedTo(Consumer<ACLMessage> taker) {
@@ -154,20 +141,20 @@ public final class CoordinatorAgent extends Agent {
      * which tells whose container is gone ({@link #deployedReceiver}).
      */
     static String deployedReplyWith(String receiver, long number) {
-        return DEPLOYED + ">" + receiver + ">" + number;
+        return Conversations.DEPLOYED + ">" + receiver + ">" + number;
     }
 
     /** The receiver a {@link #deployedReplyWith} names; null if {@code replyWith} is none. */
     static String deployedReceiver(String replyWith) {
-        if (replyWith == null || !replyWith.startsWith(DEPLOYED + ">")) {
+        if (replyWith == null || !replyWith.startsWith(Conversations.DEPLOYED + ">")) {
             return null;
         }
         int end = replyWith.lastIndexOf('>');
-        return end <= DEPLOYED.length() ? null : replyWith.substring(DEPLOYED.length() + 1, end);
+        return end <= Conversations.DEPLOYED.length() ? null : replyWith.substring(Conversations.DEPLOYED.length() + 1, end);
     }
 
     /** Stops waiting for the answer to {@code request}: one that comes later answers nothing. Any thread. */
-    public void forget(ACLMessage request) {
+    void forget(ACLMessage request) {
         answers.fail(request.getReplyWith(), new CancellationException("no longer waited for"));
     }
 
@@ -197,7 +184,7 @@ public final class CoordinatorAgent extends Agent {
 
     /** A message that answers none of this agent's requests: a relayed request, or not understood. */
     private void takeOther(ACLMessage message) {
-        if (message.getPerformative() == ACLMessage.REQUEST && RELAY.equals(message.getConversationId())) {
+        if (message.getPerformative() == ACLMessage.REQUEST && Conversations.RELAY.equals(message.getConversationId())) {
             String refusal = channel.refusal(message);
             if (refusal == null) {
                 relays.accept(message);
@@ -208,7 +195,7 @@ public final class CoordinatorAgent extends Agent {
                 && message.getSender().equals(getAMS()) && deployedReceiver(message.getInReplyTo()) != null) {
             // A deployed agent's message its container can no longer take: the container is gone.
             unreachable.accept(deployedReceiver(message.getInReplyTo()));
-        } else if (message.getPerformative() == ACLMessage.INFORM && DEPLOYED.equals(message.getConversationId())) {
+        } else if (message.getPerformative() == ACLMessage.INFORM && Conversations.DEPLOYED.equals(message.getConversationId())) {
             String refusal = channel.refusal(message);
             if (refusal == null) {
                 deployed.accept(message);
@@ -216,7 +203,7 @@ public final class CoordinatorAgent extends Agent {
                 refuse(message, refusal);
             }
         } else if (message.getPerformative() != ACLMessage.NOT_UNDERSTOOD
-                && !ContainerHost.ALIVE.equals(message.getConversationId())) {
+                && !Conversations.ALIVE.equals(message.getConversationId())) {
             send(AclInvocations.notUnderstood(message, new ContentException(
                     "the mission's coordinator answers its bodies and containers only")));
         }

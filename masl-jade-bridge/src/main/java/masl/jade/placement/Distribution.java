@@ -2,6 +2,7 @@ package masl.jade.placement;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import jade.core.AID;
+import jade.core.Agent;
 import jade.lang.acl.ACLMessage;
 import jade.wrapper.AgentController;
 import jade.wrapper.StaleProxyException;
@@ -26,6 +27,7 @@ import masl.jade.JadeLauncher;
 import masl.jade.PrimitiveTable;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.ContentException;
+import masl.jade.acl.Conversations;
 import masl.jade.acl.JsonContent;
 import masl.jade.acl.PlacementContent;
 import masl.jade.deployment.ContainerLostException;
@@ -121,18 +123,19 @@ public final class Distribution {
         coordinator = new CoordinatorAgent(secret, problems, ready, this::serveRelayed, this::containerRemoved,
                 this::unreachable);
         try {
-            controller = platform.container().acceptNewAgent(CoordinatorAgent.NAME, coordinator);
+            controller = platform.container().acceptNewAgent(Conversations.COORDINATOR, coordinator);
             controller.start();
         } catch (StaleProxyException e) {
-            throw new JadeException("cannot start " + CoordinatorAgent.NAME
+            throw new JadeException("cannot start " + Conversations.COORDINATOR
                     + " (does another mission spanning containers run on this platform?)", e);
         }
         if (!ready.await(agentsTimeout.toMillis(), TimeUnit.MILLISECONDS)) {
-            throw new JadeException(CoordinatorAgent.NAME + " did not start within " + agentsTimeout);
+            throw new JadeException(Conversations.COORDINATOR + " did not start within " + agentsTimeout);
         }
     }
 
-    public CoordinatorAgent coordinator() {
+    /** The JADE agent whose threaded behaviours run the programs of the agents whose bodies are elsewhere. */
+    public Agent coordinator() {
         return coordinator;
     }
 
@@ -171,7 +174,7 @@ public final class Distribution {
         return message -> {
             Deployed deployment = deployed;
             AID container = containers.get(deployment.containerOfAgent().get(deployment.names().get(proxyId)));
-            ACLMessage inform = inform(container, CoordinatorAgent.DEPLOYED, message.toString());
+            ACLMessage inform = Conversations.inform(container, Conversations.DEPLOYED, message.toString());
             inform.setReplyWith(CoordinatorAgent.deployedReplyWith(container.getLocalName(),
                     deployedMessages.incrementAndGet()));
             coordinator.postSigned(inform);
@@ -204,12 +207,6 @@ public final class Distribution {
         deployment.coordination().receive(json);
     }
 
-    static ACLMessage inform(AID receiver, String conversation, String content) {
-        ACLMessage inform = request(receiver, conversation, content);
-        inform.setPerformative(ACLMessage.INFORM);
-        return inform;
-    }
-
     /**
      * Once the mission is built: gives the bodies' stand-ins its journal, lets the coordinator serve
      * the requests bodies relay, and has each container create its bodies (waiting, up to
@@ -232,8 +229,8 @@ public final class Distribution {
             DeployedSource source = deployment.source();
             PlacementContent.Deploy deploy = programs.isEmpty() ? null : new PlacementContent.Deploy(programs,
                     source.programName(), source.programText(), source.descriptors(), source.key());
-            ContainerClaims.Proven proven = new ContainerClaims(coordinator, placed.getKey(), containersWithin,
-                    problems).place(PlacementContent.write(placed.getValue(), deploy));
+            ContainerClaims.Proven proven = new ContainerClaims(coordinator, coordinator::ask, coordinator::forget,
+                    placed.getKey(), containersWithin, problems).place(PlacementContent.write(placed.getValue(), deploy));
             containers.put(placed.getKey(), proven.container());
             ACLMessage answer = proven.answer();
             if (answer.getPerformative() != ACLMessage.INFORM) {
@@ -252,7 +249,7 @@ public final class Distribution {
 
     /**
      * The mission's trace, plus shared events sent as {@code INFORM}s (conversation
-     * {@value CoordinatorAgent#EVENT}, one signed message for each) to every container hosting bodies,
+     * {@value Conversations#EVENT}, one signed message for each) to every container hosting bodies,
      * for its observers: {@code {"event": "go", "block": "main", "emitter": "leader", "message": "now"}}.
      */
     public Trace sendingEvents(Trace trace, List<String> names) {
@@ -264,7 +261,7 @@ public final class Distribution {
                         emitted.agent() == Mission.OUTSIDE ? null : names.get(emitted.agent()), emitted.message());
                 for (AID container : containers.values()) {
                     ACLMessage inform = new ACLMessage(ACLMessage.INFORM);
-                    inform.setConversationId(CoordinatorAgent.EVENT);
+                    inform.setConversationId(Conversations.EVENT);
                     inform.setLanguage(AclInvocations.LANGUAGE);
                     inform.setOntology(AclInvocations.ONTOLOGY);
                     inform.setContent(content);
@@ -292,7 +289,7 @@ public final class Distribution {
         Map<String, AID> ended = new LinkedHashMap<>();
         for (Map.Entry<String, AID> container : containers.entrySet()) {
             try {
-                ACLMessage answer = await(request(container.getValue(), CoordinatorAgent.END, "{}"),
+                ACLMessage answer = await(Conversations.request(container.getValue(), Conversations.END, "{}"),
                         "container " + container.getKey() + " to end");
                 if (answer.getPerformative() == ACLMessage.INFORM) {
                     ended.put(container.getKey(), container.getValue());
@@ -315,16 +312,6 @@ public final class Distribution {
         if (thread != null) {
             thread.join(agentsTimeout.toMillis());
         }
-    }
-
-    public static ACLMessage request(AID receiver, String conversation, String content) {
-        ACLMessage request = new ACLMessage(ACLMessage.REQUEST);
-        request.addReceiver(receiver);
-        request.setConversationId(conversation);
-        request.setLanguage(AclInvocations.LANGUAGE);
-        request.setOntology(AclInvocations.ONTOLOGY);
-        request.setContent(content);
-        return request;
     }
 
     private ACLMessage await(ACLMessage request, String what) throws InterruptedException {
@@ -361,7 +348,7 @@ public final class Distribution {
         }
         Map<String, String> reasons = new LinkedHashMap<>();
         agents.forEach(agent -> reasons.put(agent, "the container " + container + " of agent " + agent + " is gone"));
-        reasons.put(ContainerHost.agentName(container), "the container " + container + " is gone");
+        reasons.put(Conversations.containerAgent(container), "the container " + container + " is gone");
         coordinator.abandon(reasons);
     }
 
@@ -398,7 +385,7 @@ public final class Distribution {
             // A container still there answers NOT_UNDERSTOOD; for a gone one the AMS answers FAILURE,
             // which the coordinator reports as unreachable (CoordinatorAgent.take).
             // One half-gone may answer nothing: asked again.
-            CompletableFuture<ACLMessage> answer = coordinator.ask(request(host, ContainerHost.ALIVE, "{}"));
+            CompletableFuture<ACLMessage> answer = coordinator.ask(Conversations.request(host, Conversations.ALIVE, "{}"));
             try {
                 answer.get(LEAVING_PROBE_MILLIS, TimeUnit.MILLISECONDS);
             } catch (ExecutionException | TimeoutException noAnswer) {
@@ -419,7 +406,7 @@ public final class Distribution {
             container = deployed.containerOfAgent().get(receiver);
         }
         if (container == null) {
-            container = containers.keySet().stream().filter(name -> ContainerHost.agentName(name).equals(receiver))
+            container = containers.keySet().stream().filter(name -> Conversations.containerAgent(name).equals(receiver))
                     .findFirst().orElse(null);
         }
         if (container != null) {

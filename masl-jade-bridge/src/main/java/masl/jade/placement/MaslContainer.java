@@ -10,6 +10,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import java.util.function.Function;
 import masl.jade.JadeLauncher;
+import masl.jade.acl.Conversations;
 import masl.jade.platform.JadeException;
 import masl.jade.platform.JadeOptions;
 import masl.jade.platform.JadePlatform;
@@ -55,7 +56,7 @@ public final class MaslContainer implements AutoCloseable {
      * @param types     the agent type of an implementation class name (its descriptor)
      * @param classes   where the implementation classes are loaded from
      * @param events    receives the shared events the coordinator sends this container ({@code INFORM},
-     *                  conversation {@value CoordinatorAgent#EVENT}), on the container agent's JADE thread
+     *                  conversation {@value Conversations#EVENT}), on the container agent's JADE thread
      * @param secret    the mission's secret, which the coordinator's {@link JadeLauncher#secret} has too;
      *                  asked for at each control message until one bears its signature
      * @throws JadeException if the container cannot join or its agent cannot start
@@ -84,7 +85,7 @@ public final class MaslContainer implements AutoCloseable {
         JadePlatform platform = JadePlatform.start(joining.withContainerName(name));
         try {
             ContainerHost host = new ContainerHost(name, types, classes, events, secret, refusals, translator);
-            platform.container().acceptNewAgent(ContainerHost.agentName(name), host).start();
+            platform.container().acceptNewAgent(Conversations.containerAgent(name), host).start();
             if (!host.ready().await(START_TIMEOUT.toMillis(), TimeUnit.MILLISECONDS)) {
                 throw new JadeException("container " + name + " did not register within " + START_TIMEOUT);
             }

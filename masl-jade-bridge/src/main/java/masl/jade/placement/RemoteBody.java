@@ -11,6 +11,7 @@ import java.util.concurrent.ExecutionException;
 import masl.jade.acl.AclInvocations;
 import masl.jade.acl.Argument;
 import masl.jade.acl.ContentException;
+import masl.jade.acl.Conversations;
 import masl.jade.acl.JsonContent;
 import masl.jade.acl.JsonValues;
 import masl.jade.acl.Reply;
@@ -21,7 +22,7 @@ import masl.runtime.Journal;
 
 /**
  * The coordinator's side of a body placed in another container: each primitive called on the
- * agent's stub becomes a {@code REQUEST} (conversation {@value CoordinatorAgent#BODY}, the same
+ * agent's stub becomes a {@code REQUEST} (conversation {@value Conversations#BODY}, the same
  * JSON content as any FIPA agent's) to the body's JADE agent, and the calling thread waits for the
  * answer: {@code INFORM} gives the result, after the journal text the primitive wrote is appended
  * to the mission's journal; {@code FAILURE} throws a {@link masl.runtime.RemotePrimitiveException}
@@ -53,7 +54,7 @@ final class RemoteBody implements BodyStub {
     public Object call(int index, Object[] args) {
         Method method = methods.get(index);
         ACLMessage request = AclInvocations.request(body, method.getName(), Arrays.asList(args), null);
-        request.setConversationId(CoordinatorAgent.BODY);
+        request.setConversationId(Conversations.BODY);
         ACLMessage answer = await(coordinator.ask(request), method);
         Reply reply;
         try {

@@ -15,7 +15,7 @@ import jade.lang.acl.ACLMessage;
  * Requests to the platform's AMS in JADE's management ontology and FIPA-SL, as JADE's own tools send
  * them ({@code ShutdownPlatform}, {@code QueryPlatformLocationsAction}, …).
  */
-public final class AmsRequests {
+final class AmsRequests {
 
     private AmsRequests() {
     }
@@ -24,7 +24,7 @@ public final class AmsRequests {
      * The {@code REQUEST} asking {@code agent}'s AMS to perform {@code action}; registers the language
      * and ontology with the agent's content manager, which then also reads the AMS's answer.
      */
-    public static ACLMessage request(Agent agent, AgentAction action) {
+    static ACLMessage request(Agent agent, AgentAction action) {
         ContentManager content = agent.getContentManager();
         content.registerLanguage(new SLCodec(), FIPANames.ContentLanguage.FIPA_SL);
         content.registerOntology(JADEManagementOntology.getInstance());

@@ -1,6 +1,7 @@
 package masl.jade.trust;
 
 import jade.core.AID;
+import jade.core.Agent;
 import jade.domain.DFService;
 import jade.domain.FIPAAgentManagement.DFAgentDescription;
 import jade.domain.FIPAException;
@@ -13,24 +14,27 @@ import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.function.Consumer;
+import java.util.function.Function;
 import masl.jade.DfEntries;
-import masl.jade.placement.CoordinatorAgent;
-import masl.jade.placement.Distribution;
+import masl.jade.acl.Conversations;
 import masl.jade.platform.JadeException;
 
 /**
  * Who is container {@code NAME}: the DF lists any agent that registers the service, so a DF entry
  * proves nothing. The coordinator asks every agent the DF lists as the container to host its bodies
- * ({@value CoordinatorAgent#PLACE}), as each appears, and binds the placement to the first that answers
+ * ({@value Conversations#PLACE}), as each appears, and binds the placement to the first that answers
  * with the mission's signature ({@link MissionChannel}): the answer of an agent without the secret
- * is refused as it comes ({@link CoordinatorAgent}), so the real container wins whatever the order in
- * which it and others registered. Each other claimant is said in one line and ignored from then on.
+ * is refused as it comes (the coordinator's {@code ask} completes only with a signed answer), so the
+ * real container wins whatever the order in which it and others registered. Each other claimant is
+ * said in one line and ignored from then on.
  */
 public final class ContainerClaims {
 
     private static final long SEARCH_PERIOD_MILLIS = 50;
 
-    private final CoordinatorAgent coordinator;
+    private final Agent coordinator;
+    private final Function<ACLMessage, CompletableFuture<ACLMessage>> ask;
+    private final Consumer<ACLMessage> forget;
     private final String container;
     private final Duration within;
     private final Consumer<String> problems;
@@ -43,8 +47,17 @@ public final class ContainerClaims {
     private record Claim(ACLMessage request, CompletableFuture<ACLMessage> answer) {
     }
 
-    public ContainerClaims(CoordinatorAgent coordinator, String container, Duration within, Consumer<String> problems) {
+    /**
+     * @param coordinator the agent that searches the DF for claimants, and whose AMS reports a claimant gone
+     * @param ask         sends a request signed and completes its future with the claimant's signed
+     *                    answer only, or with the AMS's {@code FAILURE} when the claimant is gone
+     * @param forget      stops waiting for the answer to a request
+     */
+    public ContainerClaims(Agent coordinator, Function<ACLMessage, CompletableFuture<ACLMessage>> ask,
+            Consumer<ACLMessage> forget, String container, Duration within, Consumer<String> problems) {
         this.coordinator = coordinator;
+        this.ask = ask;
+        this.forget = forget;
         this.container = container;
         this.within = within;
         this.problems = problems;
@@ -62,8 +75,8 @@ public final class ContainerClaims {
             while (true) {
                 for (AID claimant : claimants()) {
                     claims.computeIfAbsent(claimant, asked -> {
-                        ACLMessage request = Distribution.request(asked, CoordinatorAgent.PLACE, placement);
-                        return new Claim(request, coordinator.ask(request));
+                        ACLMessage request = Conversations.request(asked, Conversations.PLACE, placement);
+                        return new Claim(request, ask.apply(request));
                     });
                 }
                 for (Map.Entry<AID, Claim> claim : claims.entrySet()) {
@@ -80,7 +93,7 @@ public final class ContainerClaims {
             }
         } finally {
             for (Map.Entry<AID, Claim> other : claims.entrySet()) {
-                coordinator.forget(other.getValue().request());
+                forget.accept(other.getValue().request());
                 problems.accept("container " + container + " is claimed by " + other.getKey().getName()
                         + ", which did not prove it holds the mission's secret: ignored");
             }

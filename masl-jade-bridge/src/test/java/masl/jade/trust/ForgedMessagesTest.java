@@ -27,8 +27,7 @@ import masl.jade.Probe;
 import masl.jade.ServiceAgent;
 import masl.jade.TestPrograms;
 import masl.jade.acl.AclInvocations;
-import masl.jade.placement.ContainerHost;
-import masl.jade.placement.CoordinatorAgent;
+import masl.jade.acl.Conversations;
 import masl.jade.placement.MaslContainer;
 import masl.jade.platform.JadeException;
 import masl.jade.platform.JadeOptions;
@@ -92,7 +91,7 @@ public class ForgedMessagesTest {
                             .secret(SECRET),
                     JADE.platform(), TIMEOUT);
             gate.entered().get(60, TimeUnit.SECONDS);
-            AID coordinator = new AID(CoordinatorAgent.NAME, AID.ISLOCALNAME);
+            AID coordinator = new AID(Conversations.COORDINATOR, AID.ISLOCALNAME);
             for (int id = 1; id <= GUESSES; id++) {
                 forger.sendMessage(answer(coordinator, ACLMessage.INFORM, "masl-coordinator-" + id,
                         "{\"result\":666,\"journal\":\"SPOOFED\\n\"}"));
@@ -130,18 +129,18 @@ public class ForgedMessagesTest {
             CompletableFuture<MissionOutcome> mission = TestPrograms.runInBackground(JadeLauncher.of(callsGated(results))
                     .types(TestPrograms::type).place(Map.of("b", "c3")).secret(SECRET), JADE.platform(), TIMEOUT);
             gate.entered().get(60, TimeUnit.SECONDS);
-            AID host = new AID(ContainerHost.agentName("c3"), AID.ISLOCALNAME);
-            ACLMessage end = control(host, ACLMessage.REQUEST, CoordinatorAgent.END, "{}");
+            AID host = new AID(Conversations.containerAgent("c3"), AID.ISLOCALNAME);
+            ACLMessage end = control(host, ACLMessage.REQUEST, Conversations.END, "{}");
             forger.sendMessage(end);
             assertEquals(ACLMessage.REFUSE, forger.next().getPerformative(), "a forged masl-end");
-            forger.sendMessage(control(host, ACLMessage.REQUEST, CoordinatorAgent.PLACE,
+            forger.sendMessage(control(host, ACLMessage.REQUEST, Conversations.PLACE,
                     "{\"agents\":[{\"name\":\"b\",\"proxyId\":0,\"class\":\"" + ServiceAgent.class.getName()
                             + "\"}]}"));
             assertEquals(ACLMessage.REFUSE, forger.next().getPerformative(), "a forged masl-place");
-            forger.sendMessage(control(host, ACLMessage.INFORM, CoordinatorAgent.EVENT, "{\"event\":\"go\"}"));
+            forger.sendMessage(control(host, ACLMessage.INFORM, Conversations.EVENT, "{\"event\":\"go\"}"));
             assertEquals(ACLMessage.NOT_UNDERSTOOD, forger.next().getPerformative(), "a forged masl-event");
-            ACLMessage endAsTheCoordinator = control(host, ACLMessage.REQUEST, CoordinatorAgent.END, "{}");
-            endAsTheCoordinator.setSender(new AID(CoordinatorAgent.NAME, AID.ISLOCALNAME));
+            ACLMessage endAsTheCoordinator = control(host, ACLMessage.REQUEST, Conversations.END, "{}");
+            endAsTheCoordinator.setSender(new AID(Conversations.COORDINATOR, AID.ISLOCALNAME));
             forger.sendMessage(endAsTheCoordinator);
             assertEquals("refused masl-end from " + forger.getName() + ": only masl-coordinator controls a MASL"
                     + " container", refusals.poll(20, TimeUnit.SECONDS));
@@ -239,7 +238,7 @@ public class ForgedMessagesTest {
         answer.addReceiver(receiver);
         answer.setLanguage(AclInvocations.LANGUAGE);
         answer.setOntology(AclInvocations.ONTOLOGY);
-        answer.setConversationId(CoordinatorAgent.BODY);
+        answer.setConversationId(Conversations.BODY);
         answer.setInReplyTo(inReplyTo);
         answer.setContent(content);
         return answer;

@@ -9,8 +9,6 @@ import jade.core.AID;
 import jade.core.Agent;
 import jade.core.behaviours.CyclicBehaviour;
 import jade.domain.DFService;
-import jade.domain.FIPAService;
-import jade.domain.JADEAgentManagement.KillAgent;
 import jade.lang.acl.ACLMessage;
 import jade.lang.acl.MessageTemplate;
 import java.time.Duration;
@@ -28,9 +26,9 @@ import masl.jade.Probe;
 import masl.jade.ServiceAgent;
 import masl.jade.TestPrograms;
 import masl.jade.acl.AclInvocations;
-import masl.jade.placement.CoordinatorAgent;
+import masl.jade.acl.Conversations;
 import masl.jade.placement.MaslContainer;
-import masl.jade.platform.AmsRequests;
+import masl.jade.platform.AmsActions;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
@@ -85,7 +83,7 @@ class ImpostorsTest {
         if (asked == null) {
             mission.get(1, TimeUnit.SECONDS);
         }
-        assertEquals(CoordinatorAgent.PLACE, asked.getConversationId());
+        assertEquals(Conversations.PLACE, asked.getConversationId());
         try (MaslContainer container = ForgedMessagesTest.container(JADE.platform(), name, SECRET)) {
             String refused = problems.poll(20, TimeUnit.SECONDS);
             assertTrue(refused != null && refused.startsWith("refused " + ACLMessage.getPerformative(performative)
@@ -131,13 +129,11 @@ class ImpostorsTest {
             assertTrue(container.awaitBodies(TIMEOUT), "the real body placed");
             Answering impostor = new Answering(performative, content);
             JADE.platform().container().acceptNewAgent("killer-" + name, impostor).start();
-            KillAgent kill = new KillAgent();
-            kill.setAgent(new AID("b", AID.ISLOCALNAME));
-            FIPAService.doFipaRequestClient(impostor, AmsRequests.request(impostor, kill), 20_000);
+            AmsActions.kill(impostor, new AID("b", AID.ISLOCALNAME));
             Answering body = new Answering(performative, content);
             JADE.platform().container().acceptNewAgent("b", body).start();
             let.go.complete(null);
-            assertEquals(CoordinatorAgent.BODY, body.requests.poll(60, TimeUnit.SECONDS).getConversationId());
+            assertEquals(Conversations.BODY, body.requests.poll(60, TimeUnit.SECONDS).getConversationId());
             String refused = problems.poll(20, TimeUnit.SECONDS);
             assertTrue(refused != null && refused.startsWith("refused " + ACLMessage.getPerformative(performative)
                     + " masl-body from " + body.getName()) && refused.endsWith(": not signed with the mission's"
@@ -156,7 +152,7 @@ class ImpostorsTest {
     }
 
     /**
-     * A relay ({@value CoordinatorAgent#RELAY}) naming body {@code b} as its sender but not signed is
+     * A relay ({@value Conversations#RELAY}) naming body {@code b} as its sender but not signed is
      * refused: the coordinator does not run the request it carries.
      */
     @Test
@@ -172,9 +168,9 @@ class ImpostorsTest {
                     ForgedMessagesTest.callsGated(results)).types(TestPrograms::type).place(Map.of("b", "c9"))
                     .secret(SECRET).problems(problems::add), JADE.platform(), TIMEOUT);
             gate.entered().get(60, TimeUnit.SECONDS);
-            ACLMessage relay = AclInvocations.request(new AID(CoordinatorAgent.NAME, AID.ISLOCALNAME), "log",
+            ACLMessage relay = AclInvocations.request(new AID(Conversations.COORDINATOR, AID.ISLOCALNAME), "log",
                     List.of("RELAYED"), null);
-            relay.setConversationId(CoordinatorAgent.RELAY);
+            relay.setConversationId(Conversations.RELAY);
             relay.setReplyWith("forged-relay");
             relay.setSender(new AID("b", AID.ISLOCALNAME));
             forger.sendMessage(relay);

@@ -11,7 +11,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
-import masl.jade.placement.CoordinatorAgent;
+import masl.jade.acl.Conversations;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -34,7 +34,7 @@ class MissionSecretTest {
         ACLMessage unsigned = end("{}");
         assertFalse(secret.signed(unsigned, "masl-coordinator", "masl-container-c2"));
         ACLMessage place = end("{}");
-        place.setConversationId(CoordinatorAgent.PLACE);
+        place.setConversationId(Conversations.PLACE);
         place.addUserDefinedParameter(MissionSecret.PARAMETER, end.getUserDefinedParameter(MissionSecret.PARAMETER));
         assertFalse(secret.signed(place, "masl-coordinator", "masl-container-c2"),
                 "another conversation with the same signature");
@@ -95,7 +95,7 @@ class MissionSecretTest {
 
     private static ACLMessage end(String content) {
         ACLMessage message = new ACLMessage(ACLMessage.REQUEST);
-        message.setConversationId(CoordinatorAgent.END);
+        message.setConversationId(Conversations.END);
         message.setReplyWith("masl-coordinator-x");
         message.setContent(content);
         return message;

@@ -1,4 +1,4 @@
-package masl.jade;
+package masl.jade.platform;
 
 import jade.content.ContentElement;
 import jade.content.onto.basic.Result;
@@ -15,9 +15,6 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
-import masl.jade.platform.AgentDeletion;
-import masl.jade.platform.AmsRequests;
-import masl.jade.platform.JadePlatform;
 
 /**
  * The names of the containers a platform's AMS counts at this moment, asked the way JADE's tools
