@@ -7,7 +7,12 @@ import masl.jade.acl.JsonContent;
 import masl.jade.acl.Reply;
 import masl.runtime.AgentImplementation;
 
-/** Runs a request's primitive and makes its answer: {@code INFORM} with the result, or {@code FAILURE}. */
+/**
+ * Runs a request's primitive and makes its answer: {@code INFORM} with the result, or {@code FAILURE}.
+ *
+ * <p>Public for the bodies of placed agents ({@code placement}) and the calls from outside ({@code
+ * outside}), which answer requests the same way.
+ */
 public final class Answers {
 
     private Answers() {

@@ -9,7 +9,12 @@ import masl.jade.acl.AclInvocations;
 import masl.jade.placement.MaslContainer;
 import masl.runtime.descriptor.Primitive;
 
-/** What the bridge's agents register with the DF. */
+/**
+ * What the bridge's agents register with the DF.
+ *
+ * <p>Public for the coordinator and the containers ({@code placement}), which register these entries
+ * too, and for the search for a container's claimants ({@code trust}).
+ */
 public final class DfEntries {
 
     /** DF service type of a MASL agent's type; the service's name is the type's short name. */

@@ -11,6 +11,9 @@ import java.util.function.Consumer;
  * Hands every message an agent receives to {@code taker}, except the DF's and the AMS's platform
  * events: the DF calls the agent makes itself ({@code DFService.register}, {@code search}) and an
  * {@link AMSSubscriber} wait for those in its queue.
+ *
+ * <p>Public for the agents of {@code placement} and {@code external}, which take their messages the
+ * same way.
  */
 public final class MessagesButTheDfs extends CyclicBehaviour {
     private static final long serialVersionUID = 1L;

@@ -21,6 +21,9 @@ import masl.runtime.descriptor.Primitive;
  * inherited), each bound to the public method of the implementation class that implements it. A
  * request naming anything else, or giving arguments the method cannot take, is not understood.
  * Immutable.
+ *
+ * <p>Public for {@code placement}, {@code outside} and {@code external}, which bind requests and make
+ * stubs through it.
  */
 public final class PrimitiveTable {
 

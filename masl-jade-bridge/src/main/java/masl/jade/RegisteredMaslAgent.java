@@ -13,6 +13,10 @@ import masl.jade.acl.ContentException;
  * A JADE agent standing for one MASL agent: registered with the DF under the agent's type and
  * primitives ({@link DfEntries#maslAgent}) while it lives, serving requests with the behaviour its
  * subclass gives. The launcher waits on {@code ready}, then checks {@link #registrationFailure()}.
+ *
+ * <p>Public for the bodies of placed agents ({@code placement}), the other kind of registered agent;
+ * {@link #registrationFailure} and {@link #thread} are public for the container that creates and
+ * ends them.
  */
 public abstract class RegisteredMaslAgent extends Agent {
     private static final long serialVersionUID = 1L;

@@ -37,6 +37,9 @@ import masl.runtime.descriptor.Primitive;
  * the FIPA agent ({@link FipaBody}). Before the mission starts each is matched with its FIPA agent:
  * by {@code agent_name}, or by DF {@code service_type}, waiting up to the agents' timeout for one to
  * register; agents of one binding take the providers found in turn (sorted by name). One mission.
+ *
+ * <p>Public for {@link masl.jade.JadeLauncher}, which makes the stubs and starts the agents of the
+ * mission's external agents.
  */
 public final class ExternalAgents {
 

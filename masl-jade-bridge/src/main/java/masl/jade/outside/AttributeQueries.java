@@ -21,6 +21,8 @@ import masl.runtime.descriptor.Attribute;
  * state gives others the r bit on it, else {@code REFUSE {"reason": …}} (MASL §11, as a denied read by
  * another agent); {@code NOT_UNDERSTOOD} for malformed content or an attribute the type does not
  * declare. The read is immediate, as MASL's attribute reads are.
+ *
+ * <p>Public for {@code MaslJadeAgent}, which hands it outsiders' {@code QUERY_REF}s.
  */
 public final class AttributeQueries {
 

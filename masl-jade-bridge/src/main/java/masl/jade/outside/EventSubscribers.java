@@ -19,6 +19,9 @@ import masl.runtime.trace.TraceEvent;
  * {@value Conversations#EVENT}, in reply to the subscription, JSON content
  * {@code {"event": "go", "block": "main", "emitter": "leader", "message": "now"}}) by the agent they
  * subscribed with, until they send it a {@code CANCEL} or the mission ends. One mission; thread-safe.
+ *
+ * <p>Public for {@link masl.jade.JadeLauncher}, which makes one per mission, and {@code
+ * MaslJadeAgent}, which hands it outsiders' subscriptions.
  */
 public final class EventSubscribers {
 

@@ -29,6 +29,9 @@ import masl.runtime.AgentImplementation;
  * cost two thread switches per request, which made the bridge's round trip 1.5× raw JADE's.
  * The price: a primitive that ignores interruption holds the agent until it
  * returns; its requester is then answered the same {@code TimeoutException}.
+ *
+ * <p>Public for {@link masl.jade.JadeLauncher} and {@code MaslJadeAgent}, and for the
+ * coordinator serving the requests bodies relay ({@code placement}).
  */
 public final class OutsideCalls implements AutoCloseable {
 

@@ -53,6 +53,8 @@ import masl.runtime.trace.TraceEvent;
  * ({@link ContainerHost}), the requests FIPA agents send to those bodies, shared events sent to
  * the bodies, and the end of the mission in every container. One mission; not thread-safe but
  * where said.
+ *
+ * <p>Public for {@link masl.jade.JadeLauncher}, which builds a mission spanning containers around it.
  */
 public final class Distribution {
 

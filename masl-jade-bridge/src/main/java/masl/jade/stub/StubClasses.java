@@ -37,6 +37,9 @@ import masl.runtime.AgentImplementation;
  * against the folders and jars the implementation, its superclasses, its primitives' types and
  * this module were loaded from. The implementation class and its primitives' methods must be public
  * and not final, with a public no-argument constructor. Thread-safe.
+ *
+ * <p>Public for the two kinds of stub: a placed agent's ({@code placement}) and an external agent's
+ * ({@code external}).
  */
 public final class StubClasses {
 

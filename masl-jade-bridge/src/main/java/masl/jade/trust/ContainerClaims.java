@@ -27,6 +27,9 @@ import masl.jade.platform.JadeException;
  * is refused as it comes (the coordinator's {@code ask} completes only with a signed answer), so the
  * real container wins whatever the order in which it and others registered. Each other claimant is
  * said in one line and ignored from then on.
+ *
+ * <p>Public for the coordinator's placement ({@code placement}): the trust checks live in this package
+ * alone.
  */
 public final class ContainerClaims {
 

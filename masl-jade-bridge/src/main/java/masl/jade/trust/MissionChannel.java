@@ -16,6 +16,9 @@ import java.util.concurrent.atomic.AtomicLong;
  * here before its receiver acts on it; a sender number is taken once per sender ({@link
  * ReplayWindow}). JADE lets any agent of the platform write any sender and see others' messages:
  * only a signature tells a party from an agent that merely names itself one. Thread-safe.
+ *
+ * <p>Public for the parties of a mission spanning containers ({@code placement}): the trust checks
+ * live in this package alone.
  */
 public final class MissionChannel {
 

@@ -13,6 +13,9 @@ import java.util.function.Function;
  * and from the agent the request went to, or, for an undeliverable request, from the platform's
  * AMS. Anything else (a guess, a replay to another request, an answer from a third agent) is no
  * answer. Thread-safe.
+ *
+ * <p>Public for the coordinator ({@code placement}) and the hosts of external agents ({@code
+ * external}), which take answers only through it: the trust checks live in this package alone.
  */
 public final class PendingAnswers {
 

@@ -7,6 +7,8 @@ import java.util.Base64;
  * Conversation ids ({@code reply-with}) nobody can guess: 128 bits from {@link SecureRandom}. An
  * answer is matched to its request by {@code in-reply-to}, and JADE does not authenticate the sender
  * field of a message (any agent may set it): the id is what a forged answer cannot produce.
+ *
+ * <p>Public for the bodies' relays ({@code placement}), whose ids must not be guessed either.
  */
 public final class UnguessableIds {
 
