@@ -12,10 +12,11 @@ import masl.runtime.invocation.Permeability;
 /**
  * A deployed agent's permeability as its container knows it, so that the agent's calls of its own
  * primitives and accesses to its own attributes run in the container with no message (MASL §11;
- * the bridge's README, "Deployed programs"). Only the agent changes its own state, and each change is answered by the mission
- * with the state it now is in, so the container's copy is the mission's. What the copy does not
- * allow, and an own primitive a launch of the agent armed a countermeasure on (the mission disarms
- * it at the next call), goes to the mission, which applies the rule as in-process.
+ * the bridge's README, "Deployed programs"). Only the agent changes its own state, and each change
+ * is answered by the mission with the state it now is in, so the container's copy is the mission's.
+ * What the copy does not allow, and an own primitive a launch of the agent armed a countermeasure on
+ * (the mission disarms it at the next call), goes to the mission, which applies the rule as
+ * in-process.
  */
 final class OwnPermeability {
 
