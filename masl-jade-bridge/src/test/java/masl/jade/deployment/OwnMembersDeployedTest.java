@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
+import java.util.List;
 import java.util.Set;
 import masl.jade.TestPrograms;
 import masl.runtime.AgentContext;
@@ -37,7 +38,7 @@ class OwnMembersDeployedTest {
 
     @Test
     void anOwnPrimitiveIsDeniedInTheStateTheAgentSetAndAllowedInTheNext() throws Exception {
-        for (Set<String> deployed : java.util.List.of(Set.<String>of(), Set.of("a0"))) {
+        for (Set<String> deployed : List.of(Set.<String>of(), Set.of("a0"))) {
             InMemoryDeployment.Run run = InMemoryDeployment.run(() -> TestPrograms.of(MAIN, 1, ClosesAndOpens::new),
                     deployed, TIMEOUT);
             assertTrue(run.outcome().completed(), run.outcome().toString());
@@ -50,57 +51,16 @@ class OwnMembersDeployedTest {
                 Set.of("a0"), TIMEOUT);
     }
 
-    /** {@code main { repeat STEPS times: callsPerStep times .logln("x"); step }}. */
-    private static final class OwnCalls extends CompactProgram {
-        private final int callsPerStep;
-        private int steps;
-
-        OwnCalls(TestAgent self, int callsPerStep) {
-            super(self);
-            this.callsPerStep = callsPerStep;
-        }
-
-        @Override
-        protected void resume(AgentContext ctx) {
-            while (true) {
-                switch (pc) {
-                    case 0:
-                        if (!arrive(ctx, MAIN, true, 1, 3)) return;
-                        continue;
-                    case 1:
-                        for (int call = 0; call < callsPerStep; call++) {
-                            ctx.invokeSelf("logln", null, () -> {
-                                self.logln("x");
-                                return null;
-                            });
-                        }
-                        steps++;
-                        if (!step(ctx, steps < STEPS ? 1 : 2)) return;
-                        continue;
-                    case 2:
-                        if (!leave(ctx, MAIN, 3)) return;
-                        continue;
-                    case 3:
-                        pc = 4;
-                        if (!ctx.endOfSequence(MAIN.sequence())) return;
-                        continue;
-                    case 4:
-                        ctx.finish();
-                        return;
-                    default:
-                        throw new IllegalStateException("pc " + pc);
-                }
-            }
-        }
-    }
-
-    /** {@code main { setAcceptState("nothing"); .logln("no"); setAcceptState("default"); .logln("yes"); }}. */
-    private static final class ClosesAndOpens extends CompactProgram {
-        ClosesAndOpens(TestAgent self) {
+    /** {@code main { body }}, the body repeated while it says so, each time followed by a step boundary. */
+    private abstract static class InMain extends CompactProgram {
+        InMain(TestAgent self) {
             super(self);
         }
 
-        private void logln(AgentContext ctx, String line) {
+        /** The body's instructions; whether it runs once more. */
+        abstract boolean body(AgentContext ctx);
+
+        void logln(AgentContext ctx, String line) {
             ctx.invokeSelf("logln", null, () -> {
                 self.logln(line);
                 return null;
@@ -115,11 +75,7 @@ class OwnMembersDeployedTest {
                         if (!arrive(ctx, MAIN, true, 1, 3)) return;
                         continue;
                     case 1:
-                        ctx.setAcceptState("nothing");
-                        logln(ctx, "no");
-                        ctx.setAcceptState("default");
-                        logln(ctx, "yes");
-                        if (!step(ctx, 2)) return;
+                        if (!step(ctx, body(ctx) ? 1 : 2)) return;
                         continue;
                     case 2:
                         if (!leave(ctx, MAIN, 3)) return;
@@ -135,6 +91,41 @@ class OwnMembersDeployedTest {
                         throw new IllegalStateException("pc " + pc);
                 }
             }
+        }
+    }
+
+    /** {@code main { repeat STEPS times: callsPerStep times .logln("x"); }}. */
+    private static final class OwnCalls extends InMain {
+        private final int callsPerStep;
+        private int steps;
+
+        OwnCalls(TestAgent self, int callsPerStep) {
+            super(self);
+            this.callsPerStep = callsPerStep;
+        }
+
+        @Override
+        boolean body(AgentContext ctx) {
+            for (int call = 0; call < callsPerStep; call++) {
+                logln(ctx, "x");
+            }
+            return ++steps < STEPS;
+        }
+    }
+
+    /** {@code main { setAcceptState("nothing"); .logln("no"); setAcceptState("default"); .logln("yes"); }}. */
+    private static final class ClosesAndOpens extends InMain {
+        ClosesAndOpens(TestAgent self) {
+            super(self);
+        }
+
+        @Override
+        boolean body(AgentContext ctx) {
+            ctx.setAcceptState("nothing");
+            logln(ctx, "no");
+            ctx.setAcceptState("default");
+            logln(ctx, "yes");
+            return false;
         }
     }
 }
