@@ -12,11 +12,12 @@ import java.util.function.Supplier;
 import masl.jade.acl.Conversations;
 
 /**
- * While deployed agents' programs run, asks each of their containers every {@value #PERIOD_MILLIS} ms
- * whether it is still there ({@value Conversations#ALIVE}, signed): a deployed agent in the middle of a
- * step sends its container nothing, and the AMS's removal event does not reach every coordinator, so
- * the AMS's {@code FAILURE} for an undeliverable check is what tells the coordinator, within a period or
- * two, that the container's JVM died ({@link CoordinatorAgent} reports it unreachable).
+ * While the mission runs, asks each container hosting its bodies or deployed agents every
+ * {@value #PERIOD_MILLIS} ms whether it is still there ({@value Conversations#ALIVE}, signed): a deployed
+ * agent in the middle of a step, or a body in the middle of a call, sends nothing, and the AMS's removal
+ * event does not reach every coordinator, so the AMS's {@code FAILURE} for an undeliverable check is what
+ * tells the coordinator, within a period or two, that the container left, closed or killed
+ * ({@link CoordinatorAgent} reports it unreachable).
  */
 final class ContainerWatch implements AutoCloseable {
 

@@ -12,7 +12,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
@@ -100,7 +99,7 @@ public final class Distribution {
 
     private volatile Deployed deployed = new Deployed(Map.of(), null, null, List.of());
     private final AtomicLong deployedMessages = new AtomicLong();
-    /** Whether the containers of deployed agents are still there, while the mission runs; null without any. */
+    /** Whether the containers hosting bodies or deployed agents are still there, once placed; null before. */
     private volatile ContainerWatch watch;
 
     /** What a relayed request needs: the mission, each agent's name, primitives and implementation, the time limit. */
@@ -167,8 +166,6 @@ public final class Distribution {
             List<String> names) {
         deployed = new Deployed(Map.copyOf(containerOfAgent), source, coordination, List.copyOf(names));
         coordinator.deployedTo(this::takeDeployed);
-        watch = new ContainerWatch(coordinator, () -> containerOfAgent.values().stream().distinct()
-                .map(containers::get).filter(Objects::nonNull).toList());
     }
 
     /** The wire to the container running agent {@code proxyId}'s program: signed {@code INFORM}s. */
@@ -241,6 +238,8 @@ public final class Distribution {
                 throw new JadeException(cannotHost(placed.getKey(), hosted, JsonContent.failureMessage(answer.getContent())));
             }
         }
+        // Every container, cleanly closed or killed: a body in the middle of a call sends nothing either.
+        watch = new ContainerWatch(coordinator, containers::values);
     }
 
     /** What both sides say when a container cannot create the bodies placed in it: the same line. */

@@ -222,7 +222,7 @@ public class ForgedMessagesTest {
         return message;
     }
 
-    static MissionProgram callsGated(List<Integer> results) {
+    public static MissionProgram callsGated(List<Integer> results) {
         return callsOnce(results, "gated", body -> body::gated);
     }
 
