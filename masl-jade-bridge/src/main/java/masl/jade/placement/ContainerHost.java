@@ -331,9 +331,11 @@ final class ContainerHost extends Agent {
             names.addAll(deployedNames);
             unhosted = Distribution.cannotHost(containerName, names, problem.getMessage());
             return AclInvocations.reply(request, Reply.Kind.FAILED, JsonContent.failure(problem));
-        } catch (InterruptedException e) {
+        } catch (InterruptedException closing) {
+            // JADE interrupts this agent's thread when its container closes (masl container's own timeout).
             Thread.currentThread().interrupt();
-            return AclInvocations.reply(request, Reply.Kind.FAILED, JsonContent.failure(e));
+            return AclInvocations.reply(request, Reply.Kind.FAILED,
+                    JsonContent.failure(new JadeException("the container closed before its bodies were placed")));
         }
     }
 

@@ -1,6 +1,7 @@
 package masl.jade.placement;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import jade.content.lang.sl.SLCodec;
 import jade.content.onto.basic.Action;
@@ -11,6 +12,7 @@ import jade.domain.JADEAgentManagement.KillAgent;
 import jade.lang.acl.ACLMessage;
 import java.time.Duration;
 import java.util.List;
+import java.util.ArrayList;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -20,11 +22,14 @@ import masl.jade.Probe;
 import masl.jade.ServiceAgent;
 import masl.jade.TestPrograms;
 import masl.jade.acl.Conversations;
+import masl.jade.platform.JadeException;
 import masl.jade.platform.JadeOptions;
 import masl.jade.platform.JadePlatform;
 import masl.jade.trust.ForgedMessagesTest;
 import masl.jade.trust.MissionSecret;
 import masl.runtime.MissionOutcome;
+import masl.runtime.MissionProgram;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -66,6 +71,32 @@ class ContainerLeavingTest {
             assertEquals(List.of(-1), results, "the default value of the call");
         } finally {
             gate.result().complete(0);
+            main.close();
+        }
+    }
+
+    /**
+     * A container closing while it creates its bodies (JADE interrupts its agent's thread, as
+     * {@code masl container}'s own timeout does): the coordinator's placement fails saying so in words.
+     */
+    @Test
+    @Tag("slow") // the mission's end waits 10 s for the container it ended to leave, which it does only after
+    void aContainerClosingWhilePlacedSaysSoInWords() throws Exception {
+        MissionSecret secret = MissionSecret.generate();
+        JadePlatform main = JadePlatform.start(JadeOptions.mainContainer());
+        // The interrupt its closing brings, on the container agent's thread while it makes the body.
+        try (MaslContainer container = MaslContainer.start(JadeOptions.join(main.host(), main.port()), "c2",
+                className -> {
+                    Thread.currentThread().interrupt();
+                    return TestPrograms.type(new MissionProgram.AgentSpec("", className));
+                }, ContainerLeavingTest.class.getClassLoader(), event -> { }, MissionSecret.Source.of(secret),
+                refusal -> { })) {
+            JadeException failed = assertThrows(JadeException.class, () -> JadeLauncher.of(
+                    ForgedMessagesTest.callsGated(new ArrayList<>())).types(TestPrograms::type).place(Map.of("b", "c2"))
+                    .secret(secret).run(main, MISSION_TIMEOUT));
+            assertEquals("container c2 cannot host b: the container closed before its bodies were placed",
+                    failed.getMessage());
+        } finally {
             main.close();
         }
     }
