@@ -166,6 +166,18 @@ final class JadeRun {
         if (callTimeout != null) {
             launcher.callTimeout(callTimeout);
         }
+        // Standard output is the journal's alone: JADE prints some notices of its own there ("Agent … interrupted
+        // while waiting" when an agent's thread is interrupted in its shutdown), and those go to standard error.
+        PrintStream standardOutput = System.out;
+        System.setOut(err);
+        try {
+            return runOn(launcher, timeout);
+        } finally {
+            System.setOut(standardOutput);
+        }
+    }
+
+    private MissionOutcome runOn(JadeLauncher launcher, Duration timeout) {
         try (JadePlatform platform = JadePlatform.start(options)) {
             Optional<SecretFile> shared = placement.isEmpty() && deployment.isEmpty() ? Optional.empty()
                     : Optional.of(shareSecret(platform, launcher));
