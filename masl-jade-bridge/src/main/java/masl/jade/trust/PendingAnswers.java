@@ -25,7 +25,7 @@ public final class PendingAnswers {
     private record Pending(AID receiver, CompletableFuture<ACLMessage> answer) {
     }
 
-    /** What {@link #take} made of a message. */
+    /** What {@link #classify} made of a message. */
     public enum Taken { ANSWER, UNDELIVERABLE, NONE }
 
     public PendingAnswers(String prefix) {
