@@ -294,6 +294,11 @@ public final class JadeLauncher {
                 implementation = distribution.stub(created.size(), spec.name(), container, types.apply(spec),
                         implementation.getClass());
             }
+            if (coordination != null) {
+                // A deployed agent's primitives run in its container; deployed agents name others' members.
+                implementation = coordination.implementationOf(created.size(), type, implementation,
+                        deployment.containsKey(spec.name()));
+            }
             created.add(implementation);
             return implementation;
         });

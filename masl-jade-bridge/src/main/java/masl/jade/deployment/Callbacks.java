@@ -51,8 +51,13 @@ final class Callbacks {
         return add(new Pending(value -> function.apply(Values.fromJson(value, agents)), true));
     }
 
+    /** The number of a call whose code stays with the program that made it: one that names its primitive. */
+    long number() {
+        return numbers.incrementAndGet();
+    }
+
     private long add(Pending work) {
-        long number = numbers.incrementAndGet();
+        long number = number();
         pending.put(number, work);
         return number;
     }
@@ -83,7 +88,8 @@ final class Callbacks {
         }
     }
 
-    private static ObjectNode threw(ObjectNode answer, Throwable failure) {
+    /** The answer saying a run threw {@code failure}: its class's name and message. */
+    static ObjectNode threw(ObjectNode answer, Throwable failure) {
         return answer.put("outcome", "threw").put("class", RemotePrimitiveException.classNameOf(failure))
                 .put("message", String.valueOf(failure.getMessage()));
     }

@@ -7,6 +7,7 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.NullNode;
 import com.fasterxml.jackson.databind.node.TextNode;
 import java.util.List;
+import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.UnaryOperator;
 import masl.runtime.AgentContext;
@@ -25,6 +26,10 @@ final class ContextCalls {
     /** What a call the container ran returns here; the runtime returns its default value, {@link #DENIED}, otherwise. */
     static final Object RAN = new Object();
     static final Object DENIED = new Object();
+
+    /** What a call that named its primitive returns here: its result, which travels to the caller. */
+    record Result(JsonNode value) {
+    }
 
     private final Coordination coordination;
 
@@ -66,11 +71,26 @@ final class ContextCalls {
             case "invoke":
             case "launch": return queued(agent, ctx, op, request);
             case "readAttribute": {
+                if (!request.has("call")) {
+                    return readByName(ctx, request);
+                }
                 long call = request.get("call").longValue();
                 return bool(ctx.readAttribute(agent(request, "owner"), text(request, "attribute"), DENIED,
                         () -> coordination.run(id, call, null)) == RAN);
             }
             case "writeAttribute": {
+                if (!request.has("call")) {
+                    int owner = request.get("owner").intValue();
+                    String attribute = text(request, "attribute");
+                    return bool(ctx.writeAttribute(agent(request, "owner"), attribute, () -> {
+                        try {
+                            coordination.named().write(owner, attribute, request.get("value"));
+                        } catch (RuntimeException failed) {
+                            // Its container gone, say: as a primitive that throws, not the agent's end.
+                            ctx.uncaughtException(failed);
+                        }
+                    }));
+                }
                 long call = request.get("call").longValue();
                 return bool(ctx.writeAttribute(agent(request, "owner"), text(request, "attribute"),
                         () -> coordination.run(id, call, null)));
@@ -100,22 +120,53 @@ final class ContextCalls {
     }
 
     private JsonNode queued(StandIn agent, AgentContext ctx, String op, JsonNode request) {
-        int id = agent.id();
         long call = request.get("call").longValue();
         AgentImplementation callee = agent(request, "callee");
         String primitive = text(request, "primitive");
+        Callable<Object> run = callOf(agent, request, call, primitive, "args");
         CompletableFuture<Object> future;
         if ("invoke".equals(op)) {
-            future = ctx.invoke(callee, primitive, DENIED, () -> coordination.run(id, call, null));
+            future = ctx.invoke(callee, primitive, DENIED, run);
         } else if (request.has("countermeasure")) {
-            long armed = request.get("countermeasureCall").longValue();
-            future = ctx.launch(callee, primitive, DENIED, () -> coordination.run(id, call, null),
-                    text(request, "countermeasure"), () -> coordination.run(id, armed, null));
+            String countermeasure = text(request, "countermeasure");
+            future = ctx.launch(callee, primitive, DENIED, run, countermeasure, callOf(agent, request,
+                    request.path("countermeasureCall").longValue(), countermeasure, "countermeasureArgs"));
         } else {
-            future = ctx.launch(callee, primitive, DENIED, () -> coordination.run(id, call, null));
+            future = ctx.launch(callee, primitive, DENIED, run);
         }
         agent.track(call, future);
         return null;
+    }
+
+    /**
+     * The code of a call the request hands over: the primitive named with its arguments {@code args}
+     * if the request has them (its result travels back), else the code the container keeps under
+     * {@code number}, run there.
+     */
+    private Callable<Object> callOf(StandIn agent, JsonNode request, long number, String primitive, String args) {
+        if (request.has(args)) {
+            int callee = request.get("callee").intValue();
+            JsonNode values = request.get(args);
+            return () -> new Result(Values.toJson(coordination.named().invoke(callee, primitive, values)));
+        }
+        int id = agent.id();
+        return () -> coordination.run(id, number, null);
+    }
+
+    /** A read of another agent's attribute by name: its value (tagged), or null if the mission denied it. */
+    private JsonNode readByName(AgentContext ctx, JsonNode request) {
+        int owner = request.get("owner").intValue();
+        String attribute = text(request, "attribute");
+        Object read = ctx.readAttribute(agent(request, "owner"), attribute, DENIED, () -> {
+            try {
+                return new Result(Values.toJson(coordination.named().read(owner, attribute)));
+            } catch (RuntimeException failed) {
+                // A value that does not travel, its container gone: as a primitive that throws.
+                ctx.uncaughtException(failed);
+                return DENIED;
+            }
+        });
+        return read instanceof Result result ? result.value() : NullNode.getInstance();
     }
 
     @SuppressWarnings("unchecked")

@@ -21,6 +21,7 @@ import masl.runtime.DeployedPrograms;
 import masl.runtime.EntryDefinition;
 import masl.runtime.MissionProgram;
 import masl.runtime.RemotePrimitiveException;
+import masl.runtime.descriptor.AgentType;
 
 /**
  * The mission's side of its deployed agents: the one authority. Each deployed agent is a
@@ -35,9 +36,15 @@ public final class Coordination {
     private final IntFunction<Wire> wireOf;
     private final Consumer<String> journal;
     private final ContextCalls calls = new ContextCalls(this);
+    private final NamedCalls named = new NamedCalls(this);
     private final Map<Integer, StandIn> standIns = new ConcurrentHashMap<>();
-    private final Map<Long, CompletableFuture<ObjectNode>> runs = new ConcurrentHashMap<>();
+    private final Map<Long, Run> runs = new ConcurrentHashMap<>();
     private final AtomicLong runNumbers = new AtomicLong();
+
+    /** A request to the container of {@code agent} waiting for its answer. */
+    private record Run(int agent, CompletableFuture<ObjectNode> answer) {
+    }
+
     /** Why each container is gone, by the proxy ids of its agents. */
     private final Map<Integer, String> lost = new ConcurrentHashMap<>();
     private volatile List<AgentImplementation> agents = List.of();
@@ -59,13 +66,23 @@ public final class Coordination {
      * {@code implementations} that serve no mission.
      */
     public static EntryDefinition mainOf(MissionProgram program, MissionProgram.ImplementationFactory implementations) {
+        return outside(program, implementations).main();
+    }
+
+    /** The types of {@code program}'s agents by proxy id (null for one declared without), made as {@link #mainOf}. */
+    static List<AgentType> typesOf(MissionProgram program, MissionProgram.ImplementationFactory implementations) {
+        return outside(program, implementations).types();
+    }
+
+    private static DeployedPrograms.Made outside(MissionProgram program,
+            MissionProgram.ImplementationFactory implementations) {
         TeamJournal nowhere = new TeamJournal();
         AtomicInteger next = new AtomicInteger();
         return DeployedPrograms.outsideAMission(program, spec -> {
             AgentImplementation implementation = implementations.create(spec);
             implementation.bind(nowhere.servicesOf(next.getAndIncrement()));
             return implementation;
-        }).main();
+        });
     }
 
     /** The program agent {@code proxyId} runs in the mission: a stand-in for {@code program}, which runs in its container. */
@@ -73,6 +90,17 @@ public final class Coordination {
         StandIn standIn = new StandIn(proxyId, program, this);
         standIns.put(proxyId, standIn);
         return standIn;
+    }
+
+    /**
+     * The object agent {@code proxyId} has here, given the one {@code made} (its own class's, or its
+     * placed body's or external agent's stub): {@code made}, or for a deployed agent a stub whose
+     * primitives run in its container, on its real object. Binds the members of {@code type} that
+     * invocations from deployed agents may name.
+     */
+    public AgentImplementation implementationOf(int proxyId, AgentType type, AgentImplementation made,
+            boolean deployed) {
+        return named.implementationOf(proxyId, type, made, deployed);
     }
 
     /** The mission's agents' implementations, by proxy id: what requests naming agents mean here. */
@@ -94,9 +122,11 @@ public final class Coordination {
                 }
             }
             case "ran" -> {
-                CompletableFuture<ObjectNode> run = runs.remove(message.path("run").longValue());
-                if (run != null) {
-                    run.complete(message);
+                // Only the container asked answers: the agent it names is the one the run was for.
+                long number = message.path("run").longValue();
+                Run run = runs.get(number);
+                if (run != null && run.agent() == message.path("agent").intValue() && runs.remove(number, run)) {
+                    run.answer().complete(message);
                 }
             }
             default -> throw new IllegalArgumentException("not a message of a deployed agent: " + message);
@@ -117,6 +147,10 @@ public final class Coordination {
 
     ContextCalls calls() {
         return calls;
+    }
+
+    NamedCalls named() {
+        return named;
     }
 
     List<AgentImplementation> agents() {
@@ -152,26 +186,39 @@ public final class Coordination {
 
     /** Runs call {@code call} of agent {@code proxyId}'s program in its container: {@link ContextCalls#RAN}, or throws what it threw. */
     Object run(int proxyId, long call, JsonNode argument) {
-        ran(proxyId, call, argument);
+        ask(proxyId, runOf(call, argument));
         return ContextCalls.RAN;
     }
 
     /** Applies the update function {@code call} of agent {@code proxyId}'s program to {@code value} in its container. */
     Object apply(int proxyId, long call, JsonNode value) {
-        JsonNode result = ran(proxyId, call, value).get("value");
+        JsonNode result = ask(proxyId, runOf(call, value)).get("value");
         return result == null ? null : Values.fromJson(result, agents);
     }
 
-    private ObjectNode ran(int proxyId, long call, JsonNode argument) {
-        long number = runNumbers.incrementAndGet();
-        CompletableFuture<ObjectNode> answer = new CompletableFuture<>();
-        runs.put(number, answer);
-        ObjectNode run = JsonNodeFactory.instance.objectNode().put("kind", "run").put("call", call).put("run", number);
+    private static ObjectNode runOf(long call, JsonNode argument) {
+        ObjectNode run = JsonNodeFactory.instance.objectNode().put("kind", "run").put("call", call);
         if (argument != null) {
             run.set("argument", argument);
         }
-        send(proxyId, run);
-        ObjectNode ran = awaitRun(proxyId, answer);
+        return run;
+    }
+
+    /**
+     * Sends {@code request} to the container of agent {@code proxyId} and waits for its answer,
+     * {@code ran}; throws what ran there threw, named as there, or once the container is gone.
+     */
+    ObjectNode ask(int proxyId, ObjectNode request) {
+        long number = runNumbers.incrementAndGet();
+        CompletableFuture<ObjectNode> answer = new CompletableFuture<>();
+        runs.put(number, new Run(proxyId, answer));
+        ObjectNode ran;
+        try {
+            send(proxyId, request.put("run", number));
+            ran = awaitRun(proxyId, answer);
+        } finally {
+            runs.remove(number);
+        }
         if (!"ran".equals(ran.path("outcome").asText())) {
             throw new RemotePrimitiveException(ran.path("class").asText(), ran.path("message").asText());
         }

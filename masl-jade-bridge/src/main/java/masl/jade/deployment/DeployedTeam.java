@@ -1,5 +1,6 @@
 package masl.jade.deployment;
 
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.Collection;
@@ -16,6 +17,7 @@ import masl.runtime.AgentImplementation;
 import masl.runtime.DeployedPrograms;
 import masl.runtime.MissionProgram;
 import masl.runtime.RemotePrimitiveException;
+import masl.runtime.descriptor.AgentType;
 
 /**
  * The deployed agents of one container: their programs, made here from the program this container
@@ -30,6 +32,7 @@ public final class DeployedTeam implements AutoCloseable {
     private final List<AgentImplementation> agents;
     private final Map<Integer, RemoteContext> hosted = new ConcurrentHashMap<>();
     private final Callbacks callbacks;
+    private final TeamMembers members = new TeamMembers();
     private final TeamJournal journal = new TeamJournal();
     private final ExecutorService steps = Executors.newCachedThreadPool(daemon("masl-deployed-step"));
     private final ExecutorService calls = Executors.newCachedThreadPool(daemon("masl-deployed-call"));
@@ -44,9 +47,13 @@ public final class DeployedTeam implements AutoCloseable {
             Wire toMission) {
         this.toMission = toMission;
         this.agents = new ArrayList<>();
+        List<AgentType> types = Coordination.typesOf(program, implementations);
         DeployedPrograms.Made made = DeployedPrograms.outsideAMission(program, spec -> {
-            AgentImplementation implementation = implementations.create(spec);
-            implementation.bind(journal.servicesOf(agents.size()));
+            int id = agents.size();
+            // The agents that run elsewhere are stubs here: invoking them names the primitive.
+            AgentImplementation implementation = members.implementation(id, types.get(id),
+                    implementations.create(spec), names.contains(spec.name()));
+            implementation.bind(journal.servicesOf(id));
             agents.add(implementation);
             return implementation;
         });
@@ -73,17 +80,33 @@ public final class DeployedTeam implements AutoCloseable {
         return callbacks;
     }
 
+    TeamMembers members() {
+        return members;
+    }
+
     /** A message from the mission: a step to run, an answer to a request, a call to run. */
     public void receive(ObjectNode message) {
         RemoteContext agent = hosted.get(message.path("agent").intValue());
         switch (message.path("kind").textValue()) {
             case "resume" -> steps.execute(() -> step(agent, message));
             case "answer" -> agent.answered(message);
-            case "run" -> calls.execute(() -> {
-                ObjectNode ran = callbacks.run(message.get("call").longValue(), message.get("argument"));
-                send(ran.put("kind", "ran").put("agent", agent.id()).put("run", message.get("run").longValue()));
-            });
+            case "run" -> calls.execute(() -> ran(agent, message,
+                    callbacks.run(message.get("call").longValue(), message.get("argument"))));
+            case "primitive", "read", "write" -> calls.execute(() -> ran(agent, message, named(agent, message)));
             default -> throw new IllegalArgumentException("not a message of the mission: " + message);
+        }
+    }
+
+    private void ran(RemoteContext agent, ObjectNode request, ObjectNode answer) {
+        send(answer.put("kind", "ran").put("agent", agent.id()).put("run", request.get("run").longValue()));
+    }
+
+    /** A primitive, read or write the mission asks of an agent's real object here, by name. */
+    private ObjectNode named(RemoteContext agent, ObjectNode request) {
+        try {
+            return members.answer(agent.id(), agents.get(agent.id()), request, agents);
+        } catch (RuntimeException | Error failure) {
+            return Callbacks.threw(JsonNodeFactory.instance.objectNode(), failure);
         }
     }
 

@@ -1,6 +1,7 @@
 package masl.jade.deployment;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
@@ -88,8 +89,12 @@ final class RemoteContext implements AgentContext {
                 synchronized (callOf) {
                     callOf.remove(mirror.future());
                 }
-                mirror.future().complete(team.callbacks().result(mirror.call(), call.get("ran").booleanValue(),
-                        mirror.defaultValue()));
+                boolean ran = call.get("ran").booleanValue();
+                JsonNode value = call.get("value");
+                // A call that named its primitive brings its result; the others' stayed here.
+                mirror.future().complete(value == null
+                        ? team.callbacks().result(mirror.call(), ran, mirror.defaultValue())
+                        : ran ? Values.fromJson(value, team.agents()) : mirror.defaultValue());
             }
         }
     }
@@ -279,7 +284,19 @@ final class RemoteContext implements AgentContext {
     @SuppressWarnings("unchecked")
     private <T> CompletableFuture<T> queued(String op, AgentImplementation callee, String primitive, T defaultValue,
             Callable<T> call, ObjectNode request) {
-        long number = team.callbacks().call(call);
+        long number;
+        if (byName(callee, primitive)) {
+            try {
+                request.set("args", args(Recording.of(call)));
+            } catch (IllegalArgumentException cannotTravel) {
+                // An argument of a type that does not travel: as a primitive that throws, in-process.
+                uncaughtException(cannotTravel);
+                return CompletableFuture.completedFuture(defaultValue);
+            }
+            number = team.callbacks().number();
+        } else {
+            number = team.callbacks().call(call);
+        }
         CompletableFuture<Object> future = new CompletableFuture<>();
         mirrors.put(number, new Mirror(future, number, defaultValue));
         synchronized (callOf) {
@@ -287,6 +304,24 @@ final class RemoteContext implements AgentContext {
         }
         call(op, request.put("callee", proxyId(callee)).put("primitive", primitive).put("call", number));
         return (CompletableFuture<T>) future;
+    }
+
+    /**
+     * Whether an invocation of {@code callee}'s {@code primitive} names it: {@code callee} runs
+     * elsewhere than this container, so that the call runs on its real object there.
+     */
+    private boolean byName(AgentImplementation callee, String primitive) {
+        return callee != null && team.members().invokedByName(proxyId(callee), primitive);
+    }
+
+    /** The arguments of a call the program made on a stub here, as they travel. */
+    private static ArrayNode args(Recording.Call call) {
+        if (call == null) {
+            throw new IllegalStateException("the call handed over calls no primitive of its callee");
+        }
+        ArrayNode args = JSON.arrayNode();
+        call.args().forEach(arg -> args.add(Values.toJson(arg)));
+        return args;
     }
 
     /**
@@ -322,6 +357,11 @@ final class RemoteContext implements AgentContext {
         if (proxyId(owner) == id && own.letsAccess(attribute, PermeabilityState.READ)) {
             return read.get();
         }
+        if (owner != null && team.members().accessedByName(proxyId(owner))) {
+            JsonNode value = call("readAttribute", JSON.objectNode().put("owner", proxyId(owner))
+                    .put("attribute", attribute));
+            return value == null || value.isNull() ? defaultValue : (T) Values.fromJson(value, team.agents());
+        }
         long number = team.callbacks().call(read::get);
         boolean ran = bool("readAttribute",
                 JSON.objectNode().put("owner", proxyId(owner)).put("attribute", attribute).put("call", number));
@@ -333,6 +373,16 @@ final class RemoteContext implements AgentContext {
         if (proxyId(owner) == id && own.letsAccess(attribute, PermeabilityState.WRITE)) {
             write.run();
             return true;
+        }
+        if (owner != null && team.members().accessedByName(proxyId(owner))) {
+            ObjectNode request = JSON.objectNode().put("owner", proxyId(owner)).put("attribute", attribute);
+            try {
+                request.set("value", team.members().written(proxyId(owner), owner, attribute, write));
+            } catch (IllegalArgumentException cannotTravel) {
+                uncaughtException(cannotTravel);
+                return false;
+            }
+            return bool("writeAttribute", request);
         }
         long number = team.callbacks().call(() -> {
             write.run();
@@ -381,9 +431,13 @@ final class RemoteContext implements AgentContext {
         if (proxyId(callee) == id) {
             own.armed(primitive);
         }
-        long armed = team.callbacks().call(countermeasureCall);
-        return queued("launch", callee, primitive, defaultValue, call,
-                JSON.objectNode().put("countermeasure", countermeasure).put("countermeasureCall", armed));
+        ObjectNode request = JSON.objectNode().put("countermeasure", countermeasure);
+        if (byName(callee, countermeasure)) {
+            request.set("countermeasureArgs", args(Recording.of(countermeasureCall)));
+        } else {
+            request.put("countermeasureCall", team.callbacks().call(countermeasureCall));
+        }
+        return queued("launch", callee, primitive, defaultValue, call, request);
     }
 
     @Override

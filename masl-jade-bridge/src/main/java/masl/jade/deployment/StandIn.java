@@ -80,7 +80,12 @@ final class StandIn extends AgentProgram {
         for (Iterator<Map.Entry<Long, CompletableFuture<Object>>> it = calls.entrySet().iterator(); it.hasNext(); ) {
             Map.Entry<Long, CompletableFuture<Object>> call = it.next();
             if (call.getValue().isDone()) {
-                done.addObject().put("call", call.getKey()).put("ran", call.getValue().join() == ContextCalls.RAN);
+                Object result = call.getValue().join();
+                ObjectNode ended = done.addObject().put("call", call.getKey()).put("ran", result != ContextCalls.DENIED);
+                if (result instanceof ContextCalls.Result named) {
+                    // A call that named its primitive: its result goes to the program that made it.
+                    ended.set("value", named.value());
+                }
                 it.remove();
             }
         }

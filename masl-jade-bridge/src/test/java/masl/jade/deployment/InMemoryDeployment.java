@@ -5,22 +5,26 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
+import java.util.TreeSet;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Supplier;
+import masl.jade.TestPrograms;
 import masl.runtime.AgentImplementation;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
 import masl.runtime.scheduling.ThreadPerAgentScheduler;
-import masl.runtime.testing.TestAgent;
 
 /**
- * A mission whose named agents are deployed to a container in this JVM: the mission and the
+ * A mission whose named agents are deployed to containers in this JVM: the mission and each
  * container are joined by two wires that carry each message as JSON text, in order, on a thread of
  * their own, as JADE would. Each side makes its own program from {@code program}, as two JVMs that
  * translated the same source would.
@@ -38,28 +42,53 @@ public final class InMemoryDeployment {
 
     public static Run run(Supplier<MissionProgram> program, Set<String> deployed, Duration timeout)
             throws InterruptedException {
+        Map<String, String> containerOfAgent = new HashMap<>();
+        deployed.forEach(agent -> containerOfAgent.put(agent, "c2"));
+        return run(program, containerOfAgent, timeout);
+    }
+
+    /**
+     * The agents {@code containerOfAgent} names deployed to those containers, each joined to the
+     * mission by wires of its own; the agents' objects are of the class each names, made anew.
+     */
+    public static Run run(Supplier<MissionProgram> program, Map<String, String> containerOfAgent, Duration timeout)
+            throws InterruptedException {
         AtomicInteger messages = new AtomicInteger();
-        ExecutorService toContainer = Executors.newSingleThreadExecutor();
         ExecutorService toMission = Executors.newSingleThreadExecutor();
         AtomicReference<Coordination> mission = new AtomicReference<>();
         AtomicReference<Mission> running = new AtomicReference<>();
-        try (DeployedTeam team = new DeployedTeam(program.get(), deployed, spec -> new TestAgent(),
-                message -> {
+        Map<String, DeployedTeam> teams = new HashMap<>();
+        Map<String, ExecutorService> toContainers = new HashMap<>();
+        try {
+            for (String container : new TreeSet<>(containerOfAgent.values())) {
+                Set<String> here = new HashSet<>();
+                containerOfAgent.forEach((agent, of) -> {
+                    if (of.equals(container)) {
+                        here.add(agent);
+                    }
+                });
+                teams.put(container, new DeployedTeam(program.get(), here, InMemoryDeployment::newAgent, message -> {
                     messages.incrementAndGet();
                     toMission.execute(() -> mission.get().receive(overTheWire(message)));
-                })) {
+                }));
+                toContainers.put(container, Executors.newSingleThreadExecutor());
+            }
             MissionProgram here = program.get();
-            Coordination coordination = new Coordination(Coordination.mainOf(program.get(),
-                    spec -> new TestAgent()), proxyId -> message -> toContainer.execute(
-                            () -> team.receive(overTheWire(message))), text -> running.get().journal().append(text));
-            mission.set(coordination);
             List<String> names = here.agents().stream().map(MissionProgram.AgentSpec::name).toList();
+            Coordination coordination = new Coordination(Coordination.mainOf(program.get(),
+                    InMemoryDeployment::newAgent), proxyId -> {
+                        String container = containerOfAgent.get(names.get(proxyId));
+                        DeployedTeam team = teams.get(container);
+                        return message -> toContainers.get(container).execute(() -> team.receive(overTheWire(message)));
+                    }, text -> running.get().journal().append(text));
+            mission.set(coordination);
             List<AgentImplementation> created = new ArrayList<>();
             Mission.Builder builder = Mission.builder().scheduler(new ThreadPerAgentScheduler())
-                    .programs((name, own) -> deployed.contains(name)
+                    .programs((name, own) -> containerOfAgent.containsKey(name)
                             ? coordination.standIn(names.indexOf(name), own) : own);
             here.configure(builder, spec -> {
-                TestAgent agent = new TestAgent();
+                AgentImplementation agent = coordination.implementationOf(created.size(), TestPrograms.type(spec),
+                        newAgent(spec), containerOfAgent.containsKey(spec.name()));
                 created.add(agent);
                 return agent;
             });
@@ -67,9 +96,14 @@ public final class InMemoryDeployment {
             coordination.agents(created);
             return new Run(running.get().run(timeout), messages.get());
         } finally {
-            toContainer.shutdownNow();
+            teams.values().forEach(DeployedTeam::close);
+            toContainers.values().forEach(ExecutorService::shutdownNow);
             toMission.shutdownNow();
         }
+    }
+
+    private static AgentImplementation newAgent(MissionProgram.AgentSpec spec) throws ReflectiveOperationException {
+        return (AgentImplementation) Class.forName(spec.typeClassName()).getConstructor().newInstance();
     }
 
     private static ObjectNode overTheWire(ObjectNode message) {

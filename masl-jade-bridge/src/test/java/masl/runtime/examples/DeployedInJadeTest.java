@@ -97,6 +97,12 @@ class DeployedInJadeTest {
                 + "\"message\":\"forged\"}");
     }
 
+    @Test
+    void aForgedInvocationIsRefused() throws Exception {
+        assertForgedRefused("{\"kind\":\"call\",\"agent\":0,\"op\":\"invoke\",\"pc\":3,\"callee\":1,"
+                + "\"primitive\":\"logln\",\"args\":[{\"string\":\"forged\"}],\"call\":1}");
+    }
+
     /**
      * Before the mission starts, the forger sends {@code content} as agent a0's container would, once
      * unsigned and once signed by itself with the mission's secret (a member of the mission speaking for

@@ -1,0 +1,16 @@
+package masl.jade;
+
+import masl.runtime.testing.TestAgent;
+
+/** An agent type with state: a primitive that counts and an attribute others may read and write. */
+public class Counter extends TestAgent {
+
+    /** What {@link #count} has counted, or what another agent wrote. */
+    public int total;
+
+    /** Adds {@code by} to the total and gives the total. */
+    public int count(int by) {
+        total += by;
+        return total;
+    }
+}
