@@ -24,7 +24,7 @@ import masl.jade.platform.JadePlatform;
  *
  * <p>Arguments: {@code --sizes 10,100,1000,10000} (agent counts), {@code --seconds S} (rough time
  * per measurement, default 1), {@code --thread-limit N} (largest N run with one thread per agent,
- * default 1000), {@code --only lockstep,invocations,joining,translation,simulation,lsp,startup,scale}.
+ * default 1000), {@code --only lockstep,invocations,joining,translation,simulation,lsp,startup,scale,deployed}.
  */
 public final class Bench {
 
@@ -82,6 +82,9 @@ public final class Bench {
         }
         if (options.runs("scale")) {
             scale();
+        }
+        if (options.runs("deployed")) {
+            deployed(options);
         }
         // A JADE platform that failed to shut down (closeQuietly) leaves threads that are not daemons:
         // they must not keep the benchmark, and `gradle bench` with it, from ending.
@@ -280,6 +283,69 @@ public final class Bench {
                 + " the fresh JVM still compiles the runtime during the first steps;");
         System.out.println("    goals: start <= 5 s, >= 100 steps/s, a long mission's rate: after step " + AgentScale.FIRST_STEPS + ")");
         System.out.println();
+    }
+
+    /**
+     * Item 10: agents' programs deployed over two containers in two other JVMs, {@link DeployedMissions};
+     * lock-step, then a sensor loop of ten own primitives deployed against placed against in-process.
+     */
+    private static void deployed(Options options) throws Exception {
+        int runs = 3;
+        System.out.println("10. Deployed: agents spread over two masl container JVMs of the installed command (--deploy '*=c2+c3',"
+                + " --place likewise), the mission in this JVM; steps per second and coordination messages per step and"
+                + " container, sent/taken by the coordinator (median of " + runs + ", " + loadAverage() + ")");
+        DeployedMissions missions = DeployedMissions.installed();
+        JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer());
+        try {
+            System.out.printf(Locale.ROOT, "%-44s | %8s | %12s | %12s | %12s%n", "", "N", "steps / s", "msgs to c", "msgs from c");
+            for (int agents : new int[] {100, 1_000}) {
+                int steps = (int) Math.max(10, options.seconds() * (agents == 100 ? 500 : 200));
+                printDeployed("lock-step, deployed", agents, interleavedFigures(runs, List.of(
+                        missions.prepare(platform, DeployedMissions.lockStep(agents, steps), DeployedMissions.Where.DEPLOYED)))
+                        .get(0));
+            }
+            int agents = 10;
+            int steps = (int) Math.max(10, options.seconds() * 200);
+            String source = DeployedMissions.tenOwnPrimitives(agents, steps);
+            List<List<DeployedMissions.Figures>> figures = interleavedFigures(runs, List.of(
+                    missions.prepare(platform, source, DeployedMissions.Where.DEPLOYED),
+                    missions.prepare(platform, source, DeployedMissions.Where.PLACED),
+                    missions.prepare(platform, source, DeployedMissions.Where.IN_PROCESS)));
+            double deployed = printDeployed("ten own primitives a step, deployed", agents, figures.get(0));
+            double placed = printDeployed("ten own primitives a step, placed", agents, figures.get(1));
+            double inProcess = printDeployed("ten own primitives a step, in-process", agents, figures.get(2));
+            System.out.printf(Locale.ROOT, "   deployed/placed %s, deployed/in-process %s%n", ratio(deployed, placed),
+                    ratio(deployed, inProcess));
+        } finally {
+            closeQuietly(platform);
+        }
+        System.out.println("   (goals: >= 1,000 steps/s at N=1000 deployed; deployed/placed >= 10x)");
+        System.out.println();
+    }
+
+    /** Runs each measure once as a warm-up, then {@code runs} rounds of them in turn; the figures of each. */
+    private static List<List<DeployedMissions.Figures>> interleavedFigures(int runs, List<Callable<DeployedMissions.Figures>> measures)
+            throws Exception {
+        List<List<DeployedMissions.Figures>> figures = new ArrayList<>();
+        for (Callable<DeployedMissions.Figures> measure : measures) {
+            measure.call();
+            figures.add(new ArrayList<>());
+        }
+        for (int round = 0; round < runs; round++) {
+            for (int i = 0; i < measures.size(); i++) {
+                figures.get(i).add(measures.get(i).call());
+            }
+        }
+        return figures;
+    }
+
+    /** Prints a row of medians; its steps per second. */
+    private static double printDeployed(String row, int agents, List<DeployedMissions.Figures> runs) {
+        double rate = median(runs.stream().mapToDouble(DeployedMissions.Figures::stepsPerSecond).toArray());
+        System.out.printf(Locale.ROOT, "%-44s | %8d | %12s | %12.1f | %12.1f%n", row, agents, rate(rate),
+                median(runs.stream().mapToDouble(DeployedMissions.Figures::toContainerPerStep).toArray()),
+                median(runs.stream().mapToDouble(DeployedMissions.Figures::fromContainerPerStep).toArray()));
+        return rate;
     }
 
     private static double record(Map<String, List<StartUp.Timing>> timings, String row, StartUp.Timing timing) {

@@ -17,6 +17,7 @@ import masl.jade.deployment.Coordination;
 import masl.jade.external.ExternalAgents;
 import masl.jade.outside.EventSubscribers;
 import masl.jade.outside.OutsideCalls;
+import masl.jade.placement.ContainerTraffic;
 import masl.jade.placement.DeployedSource;
 import masl.jade.placement.Distribution;
 import masl.jade.placement.MaslContainer;
@@ -67,6 +68,7 @@ public final class JadeLauncher {
     private Map<String, String> placement = Map.of();
     private Map<String, String> deployment = Map.of();
     private DeployedSource deployedSource;
+    private ContainerTraffic traffic;
     private MissionSecret secret;
     private Duration containersWithin = AGENTS_TIMEOUT;
     private Duration callTimeout;
@@ -126,6 +128,12 @@ public final class JadeLauncher {
     public JadeLauncher deploy(Map<String, String> containerOfAgent, DeployedSource source) {
         this.deployment = Map.copyOf(containerOfAgent);
         this.deployedSource = containerOfAgent.isEmpty() ? null : Objects.requireNonNull(source, "source");
+        return this;
+    }
+
+    /** Counts the coordination messages of the deployed agents, to and from each container, into {@code counts}. */
+    public JadeLauncher traffic(ContainerTraffic counts) {
+        this.traffic = Objects.requireNonNull(counts, "counts");
         return this;
     }
 
@@ -349,6 +357,9 @@ public final class JadeLauncher {
         if (coordination != null) {
             coordination.agents(created);
             distribution.deploy(deployment, deployedSource, coordination, names);
+            if (traffic != null) {
+                distribution.countInto(traffic);
+            }
         }
         if (distribution != null) {
             distribution.place(mission, names, tables, created, outside);

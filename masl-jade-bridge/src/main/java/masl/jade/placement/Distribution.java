@@ -99,6 +99,7 @@ public final class Distribution {
 
     private volatile Deployed deployed = new Deployed(Map.of(), null, null, List.of());
     private final AtomicLong deployedMessages = new AtomicLong();
+    private volatile ContainerTraffic traffic = new ContainerTraffic();
     /** Whether the containers hosting bodies or deployed agents are still there, once placed; null before. */
     private volatile ContainerWatch watch;
 
@@ -168,15 +169,22 @@ public final class Distribution {
         coordinator.deployedTo(this::takeDeployed);
     }
 
+    /** Counts the deployed agents' coordination messages into {@code counts} from now on. */
+    public void countInto(ContainerTraffic counts) {
+        this.traffic = counts;
+    }
+
     /** The wire to the container running agent {@code proxyId}'s program: signed {@code INFORM}s. */
     public Wire wireTo(int proxyId) {
         return message -> {
             Deployed deployment = deployed;
-            AID container = containers.get(deployment.containerOfAgent().get(deployment.names().get(proxyId)));
+            String name = deployment.containerOfAgent().get(deployment.names().get(proxyId));
+            AID container = containers.get(name);
             ACLMessage inform = Conversations.inform(container, Conversations.DEPLOYED, message.toString());
             inform.setReplyWith(CoordinatorAgent.deployedReplyWith(container.getLocalName(),
                     deployedMessages.incrementAndGet()));
             coordinator.postSigned(inform);
+            traffic.sentTo(name);
         };
     }
 
@@ -203,6 +211,7 @@ public final class Distribution {
                     : "it does not come from the container of " + agent);
             return;
         }
+        traffic.receivedFrom(container);
         deployment.coordination().receive(json);
     }
 
