@@ -3,6 +3,7 @@ package masl.jade.deployment;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.BlockingQueue;
@@ -28,7 +29,8 @@ import masl.runtime.descriptor.AgentType;
  * {@link StandIn} in the mission, scheduled, parked, woken and watched as any agent; its steps run in
  * its container ({@link DeployedTeam}), whose requests the stand-in performs on the agent's context
  * here. Messages from containers come in through {@link #receive}, in the order each container sent
- * them: the journal text they carry is appended at once, before the request is performed.
+ * them: the journal text they carry is appended at once, before the request is performed. Messages to
+ * a container wait in its {@link Outbox} until none of its agents waits for the mission any more.
  */
 public final class Coordination {
 
@@ -48,10 +50,14 @@ public final class Coordination {
     /** Why each container is gone, by the proxy ids of its agents. */
     private final Map<Integer, String> lost = new ConcurrentHashMap<>();
     private volatile List<AgentImplementation> agents = List.of();
+    /** The outbox of each deployed agent's container, by proxy id, and by wire. */
+    private final Map<Integer, Outbox> outboxOf = new ConcurrentHashMap<>();
+    private final Map<Wire, Outbox> outboxOfWire = new IdentityHashMap<>();
 
     /**
      * @param main the program's top-level block, as this JVM translated it
-     * @param wireOf the wire to the container of each deployed agent, by proxy id
+     * @param wireOf the wire to the container of each deployed agent, by proxy id: one wire per
+     *     container, the same object for all its agents, whose messages go together ({@link Outbox})
      * @param journal where the deployed agents' journal text goes: the mission's journal
      */
     public Coordination(EntryDefinition main, IntFunction<Wire> wireOf, Consumer<String> journal) {
@@ -108,8 +114,33 @@ public final class Coordination {
         this.agents = List.copyOf(implementations);
     }
 
-    /** A message from the container of the agent it names. */
+    /**
+     * A message from the container of the agents it names: a batch of requests and ends of steps, in
+     * the order the container made them (or one of them).
+     */
     public void receive(ObjectNode message) {
+        // Every agent asking waits for the mission from now on: counted before any is answered.
+        Outbox.unpack(message, inner -> {
+            if (waitsForTheMission(inner)) {
+                outbox(inner.path("agent").intValue()).busy(1);
+            }
+        }, this::take);
+    }
+
+    /**
+     * The proxy id each message from a container names, in order: one for a message, one per message
+     * of a batch; -1 where none is named. A container speaks only for its own agents.
+     */
+    public static List<Integer> agentsNamed(ObjectNode message) {
+        return Outbox.each(message).stream().map(inner -> inner.path("agent").asInt(-1)).toList();
+    }
+
+    private boolean waitsForTheMission(JsonNode message) {
+        String kind = message.path("kind").asText();
+        return ("call".equals(kind) || "yield".equals(kind)) && standIns.containsKey(message.path("agent").intValue());
+    }
+
+    private void take(ObjectNode message) {
         JsonNode written = message.get("journal");
         if (written != null) {
             journal.accept(written.textValue());
@@ -157,8 +188,29 @@ public final class Coordination {
         return agents;
     }
 
+    /** Sends {@code message} to the container of agent {@code proxyId}, whose agent it lets go on. */
     void send(int proxyId, ObjectNode message) {
-        wireOf.apply(proxyId).send(message.put("agent", proxyId));
+        outbox(proxyId).add(message.put("agent", proxyId), -1);
+    }
+
+    /** Agent {@code proxyId}'s container no longer waits for the mission for it: it ended. */
+    void ended(int proxyId) {
+        outbox(proxyId).busy(-1);
+    }
+
+    /**
+     * The outbox of agent {@code proxyId}'s container, one per wire. The agent waits for the mission
+     * from the first time it is named here: for its first step, or for the end of a call run there.
+     */
+    private Outbox outbox(int proxyId) {
+        return outboxOf.computeIfAbsent(proxyId, id -> {
+            Outbox outbox;
+            synchronized (outboxOfWire) {
+                outbox = outboxOfWire.computeIfAbsent(wireOf.apply(id), wire -> new Outbox(wire, 0));
+            }
+            outbox.busy(1);
+            return outbox;
+        });
     }
 
     /** The next message for a stand-in's step; throws once its container is gone. */
@@ -214,7 +266,8 @@ public final class Coordination {
         runs.put(number, new Run(proxyId, answer));
         ObjectNode ran;
         try {
-            send(proxyId, request.put("run", number));
+            // The container runs it while the agent waits for the mission: it goes at once.
+            outbox(proxyId).now(request.put("run", number).put("agent", proxyId));
             ran = awaitRun(proxyId, answer);
         } finally {
             runs.remove(number);

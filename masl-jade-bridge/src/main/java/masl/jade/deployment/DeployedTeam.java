@@ -1,5 +1,6 @@
 package masl.jade.deployment;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
@@ -28,7 +29,8 @@ import masl.runtime.descriptor.AgentType;
  */
 public final class DeployedTeam implements AutoCloseable {
 
-    private final Wire toMission;
+    /** No agent runs here to begin with: each waits for its first step. */
+    private final Outbox outbox;
     private final List<AgentImplementation> agents;
     private final Map<Integer, RemoteContext> hosted = new ConcurrentHashMap<>();
     private final Callbacks callbacks;
@@ -45,7 +47,7 @@ public final class DeployedTeam implements AutoCloseable {
      */
     public DeployedTeam(MissionProgram program, Set<String> names, MissionProgram.ImplementationFactory implementations,
             Wire toMission) {
-        this.toMission = toMission;
+        this.outbox = new Outbox(toMission, 0);
         this.agents = new ArrayList<>();
         List<AgentType> types = Coordination.typesOf(program, implementations);
         DeployedPrograms.Made made = DeployedPrograms.outsideAMission(program, spec -> {
@@ -84,8 +86,25 @@ public final class DeployedTeam implements AutoCloseable {
         return members;
     }
 
-    /** A message from the mission: a step to run, an answer to a request, a call to run. */
+    /**
+     * A message from the mission: a step to run, an answer to a request, a call to run; or a batch of
+     * them, in the order the mission made them.
+     */
     public void receive(ObjectNode message) {
+        // Every agent let go runs from now on: counted before any runs, so that none sends alone.
+        Outbox.unpack(message, inner -> {
+            if (letsGoOn(inner)) {
+                outbox.busy(1);
+            }
+        }, this::take);
+    }
+
+    private boolean letsGoOn(JsonNode message) {
+        String kind = message.path("kind").asText();
+        return ("resume".equals(kind) || "answer".equals(kind)) && hosted.containsKey(message.path("agent").intValue());
+    }
+
+    private void take(ObjectNode message) {
         RemoteContext agent = hosted.get(message.path("agent").intValue());
         switch (message.path("kind").textValue()) {
             case "resume" -> steps.execute(() -> step(agent, message));
@@ -98,7 +117,7 @@ public final class DeployedTeam implements AutoCloseable {
     }
 
     private void ran(RemoteContext agent, ObjectNode request, ObjectNode answer) {
-        send(answer.put("kind", "ran").put("agent", agent.id()).put("run", request.get("run").longValue()));
+        sendNow(answer.put("kind", "ran").put("agent", agent.id()).put("run", request.get("run").longValue()));
     }
 
     /** A primitive, read or write the mission asks of an agent's real object here, by name. */
@@ -115,6 +134,10 @@ public final class DeployedTeam implements AutoCloseable {
         try {
             agent.completeDone(resume.get("done"));
             DeployedPrograms.resume(agent.program(), resume.get("pc").intValue(), agent);
+            // A call that suspended the step and was answered with its resumption: the step goes on here.
+            while (agent.resumedInCall()) {
+                DeployedPrograms.resume(agent.program(), agent.program().pc(), agent);
+            }
         } catch (MissionLost gone) {
             return;
         } catch (RuntimeException | Error failure) {
@@ -124,13 +147,25 @@ public final class DeployedTeam implements AutoCloseable {
         send(yield.put("pc", agent.program().pc()));
     }
 
-    /** Sends {@code message} with what was written to the journal since the last message. */
+    /**
+     * Sends {@code message}, after which its agent waits for the mission, with what was written to
+     * the journal since the last message.
+     */
     synchronized void send(ObjectNode message) {
+        outbox.add(withJournal(message), -1);
+    }
+
+    /** Sends {@code message}, which the mission waits for, at once, with what was written to the journal. */
+    private synchronized void sendNow(ObjectNode message) {
+        outbox.now(withJournal(message));
+    }
+
+    private ObjectNode withJournal(ObjectNode message) {
         String written = journal.drain();
         if (!written.isEmpty()) {
             message.put("journal", written);
         }
-        toMission.send(message);
+        return message;
     }
 
     /** The next answer in {@code answers}; throws {@link MissionLost} once the mission is gone. */

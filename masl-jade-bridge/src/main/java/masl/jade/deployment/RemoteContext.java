@@ -57,6 +57,8 @@ final class RemoteContext implements AgentContext {
     private final BlockingQueue<ObjectNode> answers = new LinkedBlockingQueue<>();
     private final Map<Long, Mirror> mirrors = new ConcurrentHashMap<>();
     private final Map<CompletionStage<?>, Long> callOf = new IdentityHashMap<>();
+    /** Confined to the thread running the agent's step. */
+    private boolean resumedInCall;
 
     RemoteContext(int id, AgentProgram program, OwnPermeability own, DeployedTeam team) {
         this.id = id;
@@ -105,7 +107,18 @@ final class RemoteContext implements AgentContext {
         ObjectNode answer = team.await(answers);
         completeDone(answer.get("done"));
         DeployedPrograms.jump(program, answer.get("pc").intValue());
+        resumedInCall = answer.path("resumed").booleanValue();
         return answer.get("value");
+    }
+
+    /**
+     * Whether the last call suspended the step and the mission has resumed it since: the call
+     * answered false (the program returns), and the step goes on from the program's resumption point.
+     */
+    boolean resumedInCall() {
+        boolean resumed = resumedInCall;
+        resumedInCall = false;
+        return resumed;
     }
 
     private JsonNode call(String op) {

@@ -6,6 +6,7 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Iterator;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
@@ -20,10 +21,20 @@ import masl.runtime.RemotePrimitiveException;
  * A deployed agent's program as its mission runs it: a step is the container's. {@link #resume}
  * tells the container to run the agent's program from here, then performs each request the program
  * makes on this agent's context, on this thread (the one the mission's scheduler gave the step), and
- * answers it, until the container says the step is over. The program's reactions and MASL source are
+ * answers it, until the container says the step is over. A call after which the program returns
+ * from its step (a boundary that parks it at a barrier) gets no answer then: the program waits in it
+ * until the mission resumes this step, and the answer says so, with the resumption point, so that a
+ * step costs its container one request and one answer, and no message of the step's own. The program's reactions and MASL source are
  * those of the same generated class, made here too ({@code twin}), whose code never runs here.
  */
 final class StandIn extends AgentProgram {
+
+    /**
+     * The calls after which generated code returns from its step when they answer false
+     * ({@code if (!ctx.stepBoundary()) return;}): boundaries, waits and sleeps.
+     */
+    private static final Set<String> SUSPENDING = Set.of("stepBoundary", "loopIteration", "busyWaitIteration",
+            "endOfChild", "endOfSequence", "leave", "endReaction", "resumeInterrupted", "sleep", "await", "waitFor");
 
     private final int id;
     private final AgentProgram twin;
@@ -31,6 +42,9 @@ final class StandIn extends AgentProgram {
     private final BlockingQueue<ObjectNode> requests = new LinkedBlockingQueue<>();
     /** The futures of calls the program made that it has not been told the end of, by call number. */
     private final Map<Long, CompletableFuture<Object>> calls = new ConcurrentHashMap<>();
+    /** Whether the program waits in a call that suspended its step, confined to the step's thread. */
+    private boolean suspended;
+    private boolean finished;
 
     StandIn(int id, AgentProgram twin, Coordination coordination) {
         this.id = id;
@@ -56,18 +70,37 @@ final class StandIn extends AgentProgram {
 
     @Override
     protected void resume(AgentContext ctx) {
-        coordination.send(id, withDone(JsonNodeFactory.instance.objectNode().put("kind", "resume").put("pc", pc)));
+        if (suspended) {
+            // The program waits in the call that suspended it: the answer is its resumption, from pc.
+            suspended = false;
+            coordination.send(id, withDone(JsonNodeFactory.instance.objectNode().put("kind", "answer")
+                    .put("value", false).put("resumed", true).put("pc", pc)));
+        } else {
+            coordination.send(id, withDone(JsonNodeFactory.instance.objectNode().put("kind", "resume").put("pc", pc)));
+        }
         while (true) {
             ObjectNode request = coordination.await(id, requests);
             pc = request.get("pc").intValue();
             if ("yield".equals(request.get("kind").textValue())) {
                 if (request.has("failed")) {
+                    coordination.ended(id);
                     throw new RemotePrimitiveException(request.get("failed").textValue(),
                             request.path("message").textValue());
                 }
+                if (finished) {
+                    coordination.ended(id);
+                }
                 return;
             }
+            String op = request.get("op").textValue();
             JsonNode value = coordination.calls().perform(this, ctx, request);
+            finished |= "finish".equals(op);
+            if (SUSPENDING.contains(op) && !value.booleanValue()) {
+                // The program returns from its step on false: it does here, and its container hears
+                // nothing until the step is resumed (a barrier's trip, most often).
+                suspended = true;
+                return;
+            }
             ObjectNode answer = JsonNodeFactory.instance.objectNode().put("kind", "answer").put("pc", pc);
             answer.set("value", value);
             coordination.send(id, withDone(answer));

@@ -100,6 +100,8 @@ public final class Distribution {
     private volatile Deployed deployed = new Deployed(Map.of(), null, null, List.of());
     private final AtomicLong deployedMessages = new AtomicLong();
     private volatile ContainerTraffic traffic = new ContainerTraffic();
+    /** The wire to each container running deployed agents, by container name. */
+    private final Map<String, Wire> wires = new ConcurrentHashMap<>();
     /** Whether the containers hosting bodies or deployed agents are still there, once placed; null before. */
     private volatile ContainerWatch watch;
 
@@ -174,18 +176,22 @@ public final class Distribution {
         this.traffic = counts;
     }
 
-    /** The wire to the container running agent {@code proxyId}'s program: signed {@code INFORM}s. */
+    /**
+     * The wire to the container running agent {@code proxyId}'s program: signed {@code INFORM}s. The
+     * same wire for every agent of a container, so that their messages may go together. Call once
+     * {@link #deploy} has been.
+     */
     public Wire wireTo(int proxyId) {
-        return message -> {
-            Deployed deployment = deployed;
-            String name = deployment.containerOfAgent().get(deployment.names().get(proxyId));
-            AID container = containers.get(name);
-            ACLMessage inform = Conversations.inform(container, Conversations.DEPLOYED, message.toString());
-            inform.setReplyWith(CoordinatorAgent.deployedReplyWith(container.getLocalName(),
-                    deployedMessages.incrementAndGet()));
-            coordinator.postSigned(inform);
-            traffic.sentTo(name);
-        };
+        Deployed deployment = deployed;
+        return wires.computeIfAbsent(deployment.containerOfAgent().get(deployment.names().get(proxyId)),
+                name -> message -> {
+                    AID container = containers.get(name);
+                    ACLMessage inform = Conversations.inform(container, Conversations.DEPLOYED, message.toString());
+                    inform.setReplyWith(CoordinatorAgent.deployedReplyWith(container.getLocalName(),
+                            deployedMessages.incrementAndGet()));
+                    coordinator.postSigned(inform);
+                    traffic.sentTo(name);
+                });
     }
 
     /**
@@ -202,16 +208,24 @@ public final class Distribution {
             coordinator.refuse(message, malformed.getMessage());
             return;
         }
-        int id = json.path("agent").asInt(-1);
-        String agent = id >= 0 && id < deployment.names().size() ? deployment.names().get(id) : null;
-        String container = agent == null ? null : deployment.containerOfAgent().get(agent);
-        AID proven = container == null ? null : containers.get(container);
-        if (proven == null || !proven.equals(message.getSender())) {
-            coordinator.refuse(message, agent == null ? "it names no deployed agent"
-                    : "it does not come from the container of " + agent);
+        // A batch is taken whole or refused whole: each message in it must come from its agent's container.
+        String from = null;
+        for (int id : Coordination.agentsNamed(json)) {
+            String agent = id >= 0 && id < deployment.names().size() ? deployment.names().get(id) : null;
+            String container = agent == null ? null : deployment.containerOfAgent().get(agent);
+            AID proven = container == null ? null : containers.get(container);
+            if (proven == null || !proven.equals(message.getSender())) {
+                coordinator.refuse(message, agent == null ? "it names no deployed agent"
+                        : "it does not come from the container of " + agent);
+                return;
+            }
+            from = container;
+        }
+        if (from == null) {
+            coordinator.refuse(message, "it names no deployed agent");
             return;
         }
-        traffic.receivedFrom(container);
+        traffic.receivedFrom(from);
         deployment.coordination().receive(json);
     }
 

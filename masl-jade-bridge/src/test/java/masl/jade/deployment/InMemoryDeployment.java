@@ -36,8 +36,8 @@ public final class InMemoryDeployment {
     private InMemoryDeployment() {
     }
 
-    /** How the mission ended, and how many messages went from the container to the mission. */
-    public record Run(MissionOutcome outcome, int messagesFromContainer) {
+    /** How the mission ended, and how many messages went from the containers to the mission and back. */
+    public record Run(MissionOutcome outcome, int messagesFromContainer, int messagesToContainer) {
     }
 
     public static Run run(Supplier<MissionProgram> program, Set<String> deployed, Duration timeout)
@@ -54,11 +54,13 @@ public final class InMemoryDeployment {
     public static Run run(Supplier<MissionProgram> program, Map<String, String> containerOfAgent, Duration timeout)
             throws InterruptedException {
         AtomicInteger messages = new AtomicInteger();
+        AtomicInteger answers = new AtomicInteger();
         ExecutorService toMission = Executors.newSingleThreadExecutor();
         AtomicReference<Coordination> mission = new AtomicReference<>();
         AtomicReference<Mission> running = new AtomicReference<>();
         Map<String, DeployedTeam> teams = new HashMap<>();
         Map<String, ExecutorService> toContainers = new HashMap<>();
+        Map<String, Wire> wires = new HashMap<>();
         try {
             for (String container : new TreeSet<>(containerOfAgent.values())) {
                 Set<String> here = new HashSet<>();
@@ -71,16 +73,19 @@ public final class InMemoryDeployment {
                     messages.incrementAndGet();
                     toMission.execute(() -> mission.get().receive(overTheWire(message)));
                 }));
-                toContainers.put(container, Executors.newSingleThreadExecutor());
+                ExecutorService toContainer = Executors.newSingleThreadExecutor();
+                toContainers.put(container, toContainer);
+                // One wire per container, as over JADE: its agents' messages go together.
+                wires.put(container, message -> {
+                    answers.incrementAndGet();
+                    toContainer.execute(() -> teams.get(container).receive(overTheWire(message)));
+                });
             }
             MissionProgram here = program.get();
             List<String> names = here.agents().stream().map(MissionProgram.AgentSpec::name).toList();
             Coordination coordination = new Coordination(Coordination.mainOf(program.get(),
-                    InMemoryDeployment::newAgent), proxyId -> {
-                        String container = containerOfAgent.get(names.get(proxyId));
-                        DeployedTeam team = teams.get(container);
-                        return message -> toContainers.get(container).execute(() -> team.receive(overTheWire(message)));
-                    }, text -> running.get().journal().append(text));
+                    InMemoryDeployment::newAgent), proxyId -> wires.get(containerOfAgent.get(names.get(proxyId))),
+                    text -> running.get().journal().append(text));
             mission.set(coordination);
             List<AgentImplementation> created = new ArrayList<>();
             Mission.Builder builder = Mission.builder().scheduler(new ThreadPerAgentScheduler())
@@ -94,7 +99,7 @@ public final class InMemoryDeployment {
             });
             running.set(builder.build());
             coordination.agents(created);
-            return new Run(running.get().run(timeout), messages.get());
+            return new Run(running.get().run(timeout), messages.get(), answers.get());
         } finally {
             teams.values().forEach(DeployedTeam::close);
             toContainers.values().forEach(ExecutorService::shutdownNow);

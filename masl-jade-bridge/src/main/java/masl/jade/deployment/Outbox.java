@@ -1,0 +1,127 @@
+package masl.jade.deployment;
+
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+
+/**
+ * One side's messages on the link between the mission and a container, combined: they go as one
+ * {@code batch} message, in the order added, when no agent of the link is <em>busy</em> on this side
+ * any more: on the mission's side, when no agent of the container waits for an answer, a wake-up or
+ * a resumption the mission has not given yet; on the container's side, when none of its agents is
+ * running a step there. In a lock-step mission the barrier's trip wakes every agent of a container,
+ * and their wake-ups go as one message; their arrivals at the next barrier come back as one.
+ *
+ * <p>An agent that stays busy (a long primitive, a request the mission holds: a synchronous call, a
+ * wait for a state) must not hold back the others: what is held goes anyway once nothing was added
+ * for {@link #QUIET_NANOS} or {@link #HOLD_NANOS} after the first message held. A message the other
+ * side waits for while this side is busy (a call to run, its result) goes at once ({@link #now}).
+ */
+final class Outbox {
+
+    /** How long the outbox waits for more messages once none is added: the agents of a wave come close together. */
+    static final long QUIET_NANOS = TimeUnit.MILLISECONDS.toNanos(5);
+    /** The longest a message is held. */
+    static final long HOLD_NANOS = TimeUnit.MILLISECONDS.toNanos(50);
+
+    /** One thread of the JVM times every outbox's held messages. */
+    private static final ScheduledExecutorService TIMER = Executors.newSingleThreadScheduledExecutor(work -> {
+        Thread thread = new Thread(work, "masl-deployed-outbox");
+        thread.setDaemon(true);
+        return thread;
+    });
+
+    private final Wire wire;
+    private int busy;
+    private ArrayNode held;
+    private long firstHeld;
+    private long lastHeld;
+    private boolean timed;
+
+    /** @param busy how many agents of the link are busy on this side to begin with */
+    Outbox(Wire wire, int busy) {
+        this.wire = wire;
+        this.busy = busy;
+    }
+
+    /** Adds {@code message}, and {@code busyChange} to the agents busy on this side (-1: it unblocks one there). */
+    synchronized void add(ObjectNode message, int busyChange) {
+        long now = System.nanoTime();
+        if (held == null) {
+            held = JsonNodeFactory.instance.arrayNode();
+            firstHeld = now;
+        }
+        held.add(message);
+        lastHeld = now;
+        busy(busyChange);
+        if (held != null && !timed) {
+            timed = true;
+            TIMER.schedule(this::expire, QUIET_NANOS, TimeUnit.NANOSECONDS);
+        }
+    }
+
+    /** Sends {@code message} at once, after what is held. */
+    synchronized void now(ObjectNode message) {
+        add(message, 0);
+        flush();
+    }
+
+    /** {@code change} more agents are busy on this side (fewer if negative); none left sends what is held. */
+    synchronized void busy(int change) {
+        busy += change;
+        if (busy <= 0 && held != null) {
+            flush();
+        }
+    }
+
+    private synchronized void expire() {
+        timed = false;
+        if (held == null) {
+            return;
+        }
+        long now = System.nanoTime();
+        long quietLeft = QUIET_NANOS - (now - lastHeld);
+        long holdLeft = HOLD_NANOS - (now - firstHeld);
+        if (quietLeft <= 0 || holdLeft <= 0) {
+            flush();
+        } else {
+            timed = true;
+            TIMER.schedule(this::expire, Math.min(quietLeft, holdLeft), TimeUnit.NANOSECONDS);
+        }
+    }
+
+    /**
+     * Takes a message the other side sent: each of a batch's, or the one. {@code first} sees every
+     * message before {@code take} takes any, so that what they let go on is counted before it runs.
+     */
+    static void unpack(ObjectNode message, Consumer<ObjectNode> first, Consumer<ObjectNode> take) {
+        List<ObjectNode> each = each(message);
+        each.forEach(first);
+        each.forEach(take);
+    }
+
+    /** The messages of a batch, or the one message. */
+    static List<ObjectNode> each(ObjectNode message) {
+        List<ObjectNode> each = new ArrayList<>();
+        if ("batch".equals(message.path("kind").asText())) {
+            message.path("messages").forEach(inner -> each.add(inner instanceof ObjectNode object ? object
+                    : JsonNodeFactory.instance.objectNode()));
+        } else {
+            each.add(message);
+        }
+        return each;
+    }
+
+    private void flush() {
+        ObjectNode batch = JsonNodeFactory.instance.objectNode().put("kind", "batch");
+        batch.set("messages", held);
+        held = null;
+        wire.send(batch);
+    }
+}
