@@ -76,24 +76,25 @@ final class ContextCalls {
                 }
                 long call = request.get("call").longValue();
                 return bool(ctx.readAttribute(agent(request, "owner"), text(request, "attribute"), DENIED,
-                        () -> coordination.run(id, call, null)) == RAN);
+                        new Relayed(() -> coordination.run(id, call, null))) == RAN);
             }
             case "writeAttribute": {
                 if (!request.has("call")) {
                     int owner = request.get("owner").intValue();
                     String attribute = text(request, "attribute");
-                    return bool(ctx.writeAttribute(agent(request, "owner"), attribute, () -> {
+                    return bool(ctx.writeAttribute(agent(request, "owner"), attribute, new Relayed(() -> {
                         try {
                             coordination.named().write(owner, attribute, request.get("value"));
                         } catch (RuntimeException failed) {
                             // Its container gone, say: as a primitive that throws, not the agent's end.
                             ctx.uncaughtException(failed);
                         }
-                    }));
+                        return null;
+                    })));
                 }
                 long call = request.get("call").longValue();
                 return bool(ctx.writeAttribute(agent(request, "owner"), text(request, "attribute"),
-                        () -> coordination.run(id, call, null)));
+                        new Relayed(() -> coordination.run(id, call, null))));
             }
             case "setAcceptState":
                 // The state it is now in: the container's copy of it (OwnPermeability) follows.
@@ -157,7 +158,7 @@ final class ContextCalls {
     private JsonNode readByName(AgentContext ctx, JsonNode request) {
         int owner = request.get("owner").intValue();
         String attribute = text(request, "attribute");
-        Object read = ctx.readAttribute(agent(request, "owner"), attribute, DENIED, () -> {
+        Object read = ctx.readAttribute(agent(request, "owner"), attribute, DENIED, new Relayed(() -> {
             try {
                 return new Result(Values.toJson(coordination.named().read(owner, attribute)));
             } catch (RuntimeException failed) {
@@ -165,7 +166,7 @@ final class ContextCalls {
                 ctx.uncaughtException(failed);
                 return DENIED;
             }
-        });
+        }));
         return read instanceof Result result ? result.value() : NullNode.getInstance();
     }
 

@@ -91,6 +91,22 @@ final class Members {
         }
     }
 
+    /**
+     * The value {@code write}, a program's write of {@code attribute} of {@code owner} ({@code () ->
+     * owner.x = v}), writes: run on {@code owner}, a stub whose field is then put back as it was.
+     */
+    Object written(AgentImplementation owner, String attribute, Runnable write) {
+        synchronized (owner) {
+            Object before = read(owner, attribute);
+            try {
+                write.run();
+                return read(owner, attribute);
+            } finally {
+                write(owner, attribute, before);
+            }
+        }
+    }
+
     /** @throws IllegalArgumentException if the type declares no such attribute, or the class has no public field for it */
     private Field field(String attribute) {
         if (type.findAttribute(attribute).isEmpty()) {

@@ -40,9 +40,10 @@ final class NamedCalls {
             return made;
         }
         deployed.put(proxyId, true);
-        List<String> names = bound.methods().stream().map(java.lang.reflect.Method::getName).toList();
-        return Members.STUBS.instantiate(made.getClass(), bound.methods(),
-                (method, args) -> inContainer(proxyId, names.get(method), args));
+        DeployedBody body = new DeployedBody(proxyId, bound, this);
+        AgentImplementation stub = Members.STUBS.instantiate(made.getClass(), bound.methods(), body);
+        body.of(stub);
+        return stub;
     }
 
     /** Runs {@code primitive} of agent {@code proxyId} with {@code args} (tagged values) on its real object; its result. */
@@ -75,7 +76,7 @@ final class NamedCalls {
     }
 
     /** A deployed agent's primitive, called on its object here: run in its container, on its real object. */
-    private Object inContainer(int proxyId, String primitive, Object[] args) {
+    Object inContainer(int proxyId, String primitive, Object[] args) {
         ObjectNode request = request("primitive").put("primitive", primitive);
         ArrayNode values = request.putArray("args");
         for (Object arg : args) {

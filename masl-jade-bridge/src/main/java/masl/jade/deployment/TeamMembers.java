@@ -49,20 +49,10 @@ final class TeamMembers {
 
     /**
      * The value (tagged) that {@code write}, a program's write of {@code attribute} of {@code owner}
-     * (an agent that runs elsewhere), writes: run on {@code owner}'s stub here, whose field is then
-     * put back as it was.
+     * (an agent that runs elsewhere), writes, found on {@code owner}'s stub here ({@link Members#written}).
      */
     JsonNode written(int proxyId, AgentImplementation owner, String attribute, Runnable write) {
-        Members members = elsewhere.get(proxyId);
-        synchronized (owner) {
-            Object before = members.read(owner, attribute);
-            try {
-                write.run();
-                return Values.toJson(members.read(owner, attribute));
-            } finally {
-                members.write(owner, attribute, before);
-            }
-        }
+        return Values.toJson(elsewhere.get(proxyId).written(owner, attribute, write));
     }
 
     /**

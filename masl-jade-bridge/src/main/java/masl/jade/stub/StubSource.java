@@ -8,7 +8,8 @@ import masl.jade.platform.JadeException;
 
 /**
  * The Java source of a stub class: a subclass of an agent's implementation class whose primitives,
- * instead of running, hand their index and arguments to a {@link BodyStub}. For a primitive
+ * instead of running, hand their index and arguments to a {@link BodyStub}, as do the runtime's reads
+ * and writes of its attributes ({@link masl.runtime.AttributesElsewhere}). For a primitive
  * {@code int add(int, int)}, number 0 of the list:
  * <pre>{@code
  * @Override
@@ -43,7 +44,7 @@ record StubSource(Class<?> implementation, List<Method> methods) {
         java.append("/** Made by masl-jade-bridge: the stand-in of a ").append(implementation.getSimpleName())
                 .append(" whose body runs in another container; its primitives are requests to that body. */\n")
                 .append("public final class ").append(simpleName).append(" extends ").append(sourceName(implementation))
-                .append(" {\n\n")
+                .append(" implements masl.runtime.AttributesElsewhere {\n\n")
                 .append("    private final masl.jade.stub.BodyStub body;\n\n")
                 .append("    public ").append(simpleName).append("(masl.jade.stub.BodyStub body) {\n")
                 .append("        this.body = body;\n")
@@ -51,6 +52,15 @@ record StubSource(Class<?> implementation, List<Method> methods) {
         for (int index = 0; index < methods.size(); index++) {
             appendForwarder(java, index, methods.get(index));
         }
+        java.append("\n    @Override\n")
+                .append("    public java.lang.Object readAttribute(java.lang.String attribute,"
+                        + " java.util.function.Supplier<?> read) {\n")
+                .append("        return body.readAttribute(attribute, read);\n")
+                .append("    }\n")
+                .append("\n    @Override\n")
+                .append("    public void writeAttribute(java.lang.String attribute, java.lang.Runnable write) {\n")
+                .append("        body.writeAttribute(attribute, write);\n")
+                .append("    }\n");
         return java.append("}\n").toString();
     }
 

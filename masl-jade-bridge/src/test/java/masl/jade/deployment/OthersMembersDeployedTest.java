@@ -47,8 +47,7 @@ class OthersMembersDeployedTest {
 
     @Test
     void anAttributeWrittenByAnotherIsTheOwnersToo() throws Exception {
-        for (Map<String, String> deployment : List.of(Map.<String, String>of(), Map.of("owner", "c2", "caller", "c3"),
-                Map.of("owner", "c2", "caller", "c2"), Map.of("caller", "c3"))) {
+        for (Map<String, String> deployment : DEPLOYMENTS) {
             assertEquals("count 1\ncount 2\ncount 3\nread 100\ncount 101\nowner's total 101\n",
                     journal(true, deployment), "deployed: " + deployment);
         }

@@ -10,8 +10,10 @@ import java.lang.reflect.Method;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.Supplier;
 import masl.jade.platform.JadeException;
 import masl.runtime.AgentImplementation;
+import masl.runtime.AttributesElsewhere;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -104,12 +106,37 @@ class StubClassesTest {
     }
 
     @Test
+    void theRuntimesReadsAndWritesOfAttributesGoToTheBody() throws Exception {
+        AgentImplementation stub = stubs.instantiate(Calculator.class, List.of(), new BodyStub() {
+            @Override
+            public Object call(int method, Object[] args) {
+                return null;
+            }
+
+            @Override
+            public Object readAttribute(String attribute, Supplier<?> read) {
+                calls.add("read " + attribute);
+                return 7;
+            }
+
+            @Override
+            public void writeAttribute(String attribute, Runnable write) {
+                calls.add("write " + attribute);
+            }
+        });
+        AttributesElsewhere elsewhere = (AttributesElsewhere) stub;
+        assertEquals(7, elsewhere.readAttribute("x", () -> 0));
+        elsewhere.writeAttribute("x", () -> calls.add("the stub's own field"));
+        assertEquals(List.of("read x", "write x"), calls);
+    }
+
+    @Test
     void theStubIsReadableJava() throws Exception {
         String text = new StubSource(Calculator.class, List.of(Calculator.class.getMethod("add", int.class, int.class),
                 Calculator.class.getMethod("log", String.class))).text();
         assertTrue(text.startsWith("package masl.jade.stub;\n"), text);
         assertTrue(text.contains("public final class StubClassesTest$Calculator$MaslStub extends"
-                + " masl.jade.stub.StubClassesTest.Calculator {"), text);
+                + " masl.jade.stub.StubClassesTest.Calculator implements masl.runtime.AttributesElsewhere {"), text);
         assertTrue(text.contains("""
                     @Override
                     public int add(int a0, int a1) {

@@ -6,6 +6,7 @@ import java.util.function.Consumer;
 import java.util.function.Supplier;
 import masl.runtime.Agent;
 import masl.runtime.AgentImplementation;
+import masl.runtime.AttributesElsewhere;
 import masl.runtime.Event;
 import masl.runtime.descriptor.PermeabilityState;
 import masl.runtime.descriptor.PermeabilityState.Requester;
@@ -182,6 +183,17 @@ public final class Invoker {
             site.raise(Event.FORBIDDEN_ACCESS, attribute);
             return defaultValue;
         }
+        if (owner instanceof AttributesElsewhere elsewhere) {
+            try {
+                @SuppressWarnings("unchecked")
+                T value = (T) elsewhere.readAttribute(attribute, read);
+                return value;
+            } catch (RuntimeException unreachable) {
+                // Where the owner runs could not answer (its JVM gone): as a primitive that throws.
+                agent.uncaughtException(unreachable);
+                return defaultValue;
+            }
+        }
         return read.get();
     }
 
@@ -193,6 +205,14 @@ public final class Invoker {
         if (!site.agentOf(owner).permeability().permitsAttribute(agent, attribute, PermeabilityState.WRITE)) {
             site.raise(Event.FORBIDDEN_ACCESS, attribute);
             return false;
+        }
+        if (owner instanceof AttributesElsewhere elsewhere) {
+            try {
+                elsewhere.writeAttribute(attribute, write);
+            } catch (RuntimeException unreachable) {
+                agent.uncaughtException(unreachable);
+            }
+            return true;
         }
         write.run();
         return true;
