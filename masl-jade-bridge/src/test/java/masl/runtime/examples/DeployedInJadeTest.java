@@ -13,8 +13,10 @@ import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 import masl.jade.JadeLauncher;
 import masl.jade.Probe;
+import masl.jade.Tallies;
 import masl.jade.TestPrograms;
 import masl.jade.acl.AclInvocations;
 import masl.jade.placement.DeployedSource;
@@ -24,9 +26,9 @@ import masl.jade.platform.JadeException;
 import masl.jade.platform.JadeOptions;
 import masl.jade.trust.Forgeries;
 import masl.jade.trust.MissionSecret;
+import masl.runtime.AgentImplementation;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
-import masl.runtime.testing.TestAgent;
 import masl.testing.jade.JadePlatformExtension;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -35,7 +37,8 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 
 /**
  * E2 with its agents' programs deployed to containers of this JVM's platform over signed ACL: the
- * journal in-process gives; a container whose translation is not the coordinator's refuses before the
+ * journal in-process gives; an agent's counts and writes reach another agent's real object in another
+ * container; a container whose translation is not the coordinator's refuses before the
  * mission starts; a coordination message another agent of the platform forges is refused and said.
  */
 @Timeout(180)
@@ -46,6 +49,7 @@ class DeployedInJadeTest {
     private static final String KEY = "the key of e2";
     private static final DeployedSource SOURCE = new DeployedSource("e2.masl", "// E2", Map.of(), KEY);
     private static final String E2 = "n=5\n" + "mine=1\n".repeat(5);
+    private static final Supplier<MissionProgram> TALLIES = () -> new Tallies(true);
 
     @RegisterExtension
     static final JadePlatformExtension JADE = new JadePlatformExtension();
@@ -66,6 +70,17 @@ class DeployedInJadeTest {
             assertTrue(outcome.completed(), outcome.toString());
             assertEquals(E2, outcome.journal());
             assertEquals(List.of("a0", "a3"), d2.hostedAgents());
+        }
+    }
+
+    @Test
+    void anInvocationAndAnAttributeWriteOfAnAgentInAnotherContainerRunOnItsRealObject() throws Exception {
+        Map<String, String> deployment = Map.of("owner", "d6", "caller", "d7");
+        try (MaslContainer d6 = container("d6", KEY, TALLIES); MaslContainer d7 = container("d7", KEY, TALLIES)) {
+            MissionOutcome outcome = JadeLauncher.of(TALLIES.get()).types(TestPrograms::type).deploy(deployment, SOURCE)
+                    .secret(SECRET).run(JADE.platform(), TIMEOUT);
+            assertTrue(outcome.completed(), outcome.toString());
+            assertEquals(Tallies.COUNTS_AND_WRITES, outcome.journal());
         }
     }
 
@@ -146,6 +161,10 @@ class DeployedInJadeTest {
                 .problems(problems);
     }
 
+    private static AgentImplementation newAgent(MissionProgram.AgentSpec spec) throws ReflectiveOperationException {
+        return (AgentImplementation) Class.forName(spec.typeClassName()).getConstructor().newInstance();
+    }
+
     private static MissionProgram e2() {
         return TestPrograms.of(E2SharedAndLocal.MAIN, 5, E2SharedAndLocal::new);
     }
@@ -156,10 +175,15 @@ class DeployedInJadeTest {
      * waits for that).
      */
     private static MaslContainer container(String name, String key) {
+        return container(name, key, DeployedInJadeTest::e2);
+    }
+
+    /** Container {@code name}, as {@link #container(String, String)}, for the program {@code program} makes. */
+    private static MaslContainer container(String name, String key, Supplier<MissionProgram> program) {
         MaslContainer container = MaslContainer.start(JadeOptions.join(JADE.platform().host(), JADE.platform().port()), name,
                 className -> TestPrograms.type(new MissionProgram.AgentSpec("", className)),
                 DeployedInJadeTest.class.getClassLoader(), event -> { }, MissionSecret.Source.of(SECRET), refusal -> { },
-                source -> new ProgramTranslator.Translated(e2(), spec -> new TestAgent(), key));
+                source -> new ProgramTranslator.Translated(program.get(), DeployedInJadeTest::newAgent, key));
         Thread closer = new Thread(() -> {
             try {
                 if (container.awaitMissionEnd(TIMEOUT)) {
