@@ -25,10 +25,16 @@ import java.util.function.Consumer;
  */
 final class Outbox {
 
-    /** How long the outbox waits for more messages once none is added: the agents of a wave come close together. */
-    static final long QUIET_NANOS = TimeUnit.MILLISECONDS.toNanos(5);
-    /** The longest a message is held. */
-    static final long HOLD_NANOS = TimeUnit.MILLISECONDS.toNanos(50);
+    /**
+     * How long the outbox waits for more messages once none is added: the agents of a wave come close
+     * together, but on a loaded machine a thread waits a scheduler's time slice or two to run.
+     */
+    static final long QUIET_NANOS = TimeUnit.MILLISECONDS.toNanos(10);
+    /**
+     * The longest a message is held. Rarely reached: an agent waiting for its answer adds nothing
+     * more, so the messages held stop growing, and go, once each agent has sent its own.
+     */
+    static final long HOLD_NANOS = TimeUnit.MILLISECONDS.toNanos(200);
 
     /** One thread of the JVM times every outbox's held messages. */
     private static final ScheduledExecutorService TIMER = Executors.newSingleThreadScheduledExecutor(work -> {
@@ -69,7 +75,9 @@ final class Outbox {
     /** Sends {@code message} at once, after what is held. */
     synchronized void now(ObjectNode message) {
         add(message, 0);
-        flush();
+        if (held != null) {
+            flush();
+        }
     }
 
     /** {@code change} more agents are busy on this side (fewer if negative); none left sends what is held. */
