@@ -13,4 +13,9 @@ public class Counter extends TestAgent {
         total += by;
         return total;
     }
+
+    /** {@link #count}, as an asynchronous primitive: launched, it runs on a thread of its own. */
+    public int countAside(int by) {
+        return count(by);
+    }
 }

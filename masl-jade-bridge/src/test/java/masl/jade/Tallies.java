@@ -12,7 +12,7 @@ import masl.runtime.Mode;
 
 /**
  * A mission of two {@link Counter}s, {@code owner} and {@code caller}: the caller invokes the owner's
- * {@code count(1)} three times, then, if {@code writes}, writes the owner's {@code total}, reads it
+ * {@code count(1)} three times (the second as the asynchronous {@code countAside(1)}), then, if {@code writes}, writes the owner's {@code total}, reads it
  * and counts once more; the owner then says its total. In-process its journal is {@link #COUNTS}, or
  * {@link #COUNTS_AND_WRITES}. Its agents are made first, each program given them all, as the
  * translator generates.
@@ -53,7 +53,7 @@ public record Tallies(boolean writes) implements MissionProgram {
      * <pre>
      * synchronous entry main (true) {
      *   if (me == caller) {
-     *     repeat 3 times: .logln("count " + owner.count(1));
+     *     .logln("count " + owner.count(1)); .logln("count " + owner.countAside(1)); .logln("count " + owner.count(1));
      *     if (writes) { owner.total = 100; .logln("read " + owner.total); .logln("count " + owner.count(1)); }
      *   }
      * }
@@ -102,7 +102,9 @@ public record Tallies(boolean writes) implements MissionProgram {
                             ctx.writeAttribute(owner, "total", () -> owner.total = 100);
                             logln(ctx, "read " + ctx.readAttribute(owner, "total", -1, () -> owner.total));
                         }
-                        counted = ctx.invoke(owner, "count", 0, () -> owner.count(1));
+                        // The second count is asynchronous: launched, then awaited.
+                        counted = calls == 1 ? ctx.launch(owner, "countAside", 0, () -> owner.countAside(1))
+                                : ctx.invoke(owner, "count", 0, () -> owner.count(1));
                         pc = 2;
                         if (!ctx.await(counted)) return;
                         continue;
