@@ -16,6 +16,7 @@ import masl.testing.jade.SecondJvm;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Examples of examples.md from their MASL sources, every agent's program deployed over two containers
@@ -47,14 +48,36 @@ class DeployedJadeExamplesTest {
         assertTrue(e5.c3().contains("masl-ended hosted b"), e5.c3());
     }
 
+    /** The manual's labels (§10): an {@code SLabel} the agent running main waits on, one robot in each container. */
+    @Test
+    void labels(@TempDir Path folder) throws Exception {
+        Path program = Files.writeString(folder.resolve("calibrate.masl"), """
+                import SoftWheeledRobot.xml as Rover;
+                Rover r1, r2 = newAgent(Rover);
+                scalar entry main (true) {
+                  SLabel all;
+                  local boolean ok1, ok2;
+                  all.ok1 = r1.calibrate();
+                  all.ok2 = r2.calibrate();
+                  while (!all.isFinished()) {}
+                  .logln("both calibrated: " + (ok1 && ok2));
+                }
+                """);
+        assertEquals("both calibrated: true\n", deployed(program).journal());
+    }
+
     private record Run(String journal, String c2, String c3) {
     }
 
     private static Run deployed(String example) throws Exception {
+        return deployed(Path.of("src/test/resources/examples", example));
+    }
+
+    private static Run deployed(Path program) throws Exception {
         int port = freePort();
         Path secretFile = Files.createTempDirectory("masl-mission").resolve("secret");
         try (SecondJvm c2 = container(port, "c2", secretFile); SecondJvm c3 = container(port, "c3", secretFile)) {
-            MaslCommand run = MaslCommand.run("run", "src/test/resources/examples/" + example, "--platform", "jade",
+            MaslCommand run = MaslCommand.run("run", program.toString(), "--platform", "jade",
                     "--port", String.valueOf(port), "--deploy", "*=c2+c3", "--timeout", "120",
                     "--secret-file", secretFile.toString());
             assertEquals("masl: platform ready: host=127.0.0.1 port=" + port + " platform=127.0.0.1:" + port + "/JADE\n",

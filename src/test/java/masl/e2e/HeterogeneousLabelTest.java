@@ -6,6 +6,7 @@ import java.util.stream.LongStream;
 import masl.testing.MaslMission;
 import masl.testing.MissionRun;
 import masl.testing.Schedule;
+import masl.testing.jade.DeployedInMemory;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -15,13 +16,16 @@ import org.junit.jupiter.params.provider.MethodSource;
  * Labels over members only some types have (MASL §4, §10): for an addressee whose
  * type lacks the primitive, the label's invocation is a {@code nop()} that counts as done at once and
  * stores nothing. A team of a Worker and a Scout ({@code src/test/resources/workers}): only the Scout
- * has {@code sweep} (asynchronous), {@code scan} (synchronous) and {@code range}.
+ * has {@code sweep} (asynchronous), {@code scan} (synchronous) and {@code range}. The same
+ * journals with the agents' programs deployed to a container, the mission holding the labels.
  */
 @Timeout(60)
 class HeterogeneousLabelTest {
 
     private static final int RUNS = 20;
     private static final int SEEDS = 200;
+    /** Runs with the agents' programs deployed to a container: every agent's, then the scout's alone. */
+    private static final int DEPLOYED_RUNS = 5;
 
     static List<Schedule> schedules() {
         return List.of(Schedule.pool(), Schedule.threads());
@@ -112,6 +116,10 @@ class HeterogeneousLabelTest {
         }
         if (schedule.equals(Schedule.threads())) {
             mission.explore(LongStream.range(0, SEEDS), 0).assertEveryRun(property);
+            for (int run = 0; run < DEPLOYED_RUNS; run++) {
+                property.accept(mission.runOn(DeployedInMemory.everyAgent()));
+                property.accept(mission.runOn(DeployedInMemory.agents("s")));
+            }
         }
     }
 }

@@ -4,6 +4,7 @@ import java.util.stream.LongStream;
 import masl.testing.MaslMission;
 import masl.testing.MissionRun;
 import masl.testing.Schedule;
+import masl.testing.jade.DeployedInMemory;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -20,6 +21,7 @@ class LabelledSynchronousCallTest {
     private static final int SEEDS = 400;
     private static final int POOL_RUNS = 300;
     private static final int THREAD_RUNS = 300;
+    private static final int DEPLOYED_RUNS = 5;
 
     /** Each agent makes ten labelled calls and checks the label and the stored result right after each. */
     private static final MaslMission MISSION = MaslMission.fromString("labelled-synchronous.masl", """
@@ -47,6 +49,25 @@ class LabelledSynchronousCallTest {
             }
             """);
 
+    /** A boss collects two asynchronous calls with a label, opening the callees once it has launched both. */
+    private static final MaslMission ASYNCHRONOUS = MaslMission.fromString("labelled-asynchronous.masl", """
+            import workers/Worker.xml;
+            Worker a, b, boss = newAgent(Worker);
+            asynchronous entry main (true) {
+              scalar entry collect (.getProxyID() == 2) {
+                LLabel l;
+                local int ra = 0;
+                l.ra = a.slow(1);
+                l.b.battery = b.slow(2);
+                .logln("launched: remaining " + l.getRemainingInvocations() + ", ra " + ra);
+                .open(a);
+                .open(b);
+                while (l.getRemainingInvocations() > 0) {}
+                .logln("came: ra " + ra + ", battery " + b.battery);
+              }
+            }
+            """);
+
     @Test
     void rightAfterALabelledSynchronousCallNothingIsPendingAndTheResultIsStored() {
         MISSION.explore(LongStream.range(0, SEEDS), POOL_RUNS).assertEveryRun(LabelledSynchronousCallTest::counted);
@@ -58,25 +79,25 @@ class LabelledSynchronousCallTest {
     /** Asynchronous calls keep their futures: counted until they come; a busy-wait on the count parks until then. */
     @Test
     void labelledAsynchronousCallsStayRemainingUntilTheyCome() {
-        MaslMission mission = MaslMission.fromString("labelled-asynchronous.masl", """
-                import workers/Worker.xml;
-                Worker a, b, boss = newAgent(Worker);
-                asynchronous entry main (true) {
-                  scalar entry collect (.getProxyID() == 2) {
-                    LLabel l;
-                    local int ra = 0;
-                    l.ra = a.slow(1);
-                    l.b.battery = b.slow(2);
-                    .logln("launched: remaining " + l.getRemainingInvocations() + ", ra " + ra);
-                    .open(a);
-                    .open(b);
-                    while (l.getRemainingInvocations() > 0) {}
-                    .logln("came: ra " + ra + ", battery " + b.battery);
-                  }
-                }
-                """);
-        mission.explore(LongStream.range(0, 50), 20)
-                .assertEveryRun(run -> run.assertJournal("launched: remaining 2, ra 0\ncame: ra 10, battery 20\n"));
+        ASYNCHRONOUS.explore(LongStream.range(0, 50), 20).assertEveryRun(LabelledSynchronousCallTest::cameLate);
+    }
+
+    /**
+     * The same with the programs deployed to a container, whose labels are views of the mission's: every
+     * agent's, then one caller's alone (its callee's program in the mission's JVM).
+     */
+    @Test
+    void deployedProgramsSeeTheirLabelsAsInProcess() {
+        for (int run = 0; run < DEPLOYED_RUNS; run++) {
+            counted(MISSION.runOn(DeployedInMemory.everyAgent()));
+            counted(MISSION.runOn(DeployedInMemory.agents("a")));
+            cameLate(ASYNCHRONOUS.runOn(DeployedInMemory.everyAgent()));
+            cameLate(ASYNCHRONOUS.runOn(DeployedInMemory.agents("boss")));
+        }
+    }
+
+    private static void cameLate(MissionRun run) {
+        run.assertJournal("launched: remaining 2, ra 0\ncame: ra 10, battery 20\n");
     }
 
     private static void counted(MissionRun run) {

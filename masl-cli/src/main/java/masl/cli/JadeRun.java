@@ -26,7 +26,6 @@ import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
 import masl.runtime.descriptor.AgentPath;
 import masl.runtime.descriptor.DescriptorLoader;
-import masl.runtime.diagnostic.Diagnostic;
 import masl.translator.MissionLoader;
 import masl.translator.TranslationKey;
 import masl.translator.source.SourceFile;
@@ -78,10 +77,6 @@ final class JadeRun {
                 : line.port != null ? JadeOptions.mainContainer().withPort(line.port) : JadeOptions.mainContainer();
         this.placement = line.place == null ? Map.of() : placement(line.place, loaded);
         this.deployment = line.deploy == null ? Map.of() : deployment(line.deploy, loaded, placement.keySet());
-        Diagnostic labels = deployment.isEmpty() ? null : DeployedLabels.refusal(source);
-        if (labels != null) {
-            throw new UsageException(labels.headline());
-        }
         this.deployedSource = deployment.isEmpty() ? null : deployedSource(source);
         this.journal = journal;
         if (line.secretFile != null && placement.isEmpty() && deployment.isEmpty()) {

@@ -117,22 +117,6 @@ class JadeRunTest {
         assertEquals(64, Run.of("run", program, "--deploy", "*=c2").status(), "--deploy needs --platform jade");
     }
 
-    @Test
-    void aDeployedProgramWithALabelIsRefusedAtTheLabelBeforeTheMission() throws IOException {
-        String program = write("labels.masl", HEADER + """
-                synchronous entry main (true) {
-                  // LLabel in a comment is no label
-                  LLabel l;
-                  .nop();
-                }
-                """);
-        Run run = Run.of("run", program, "--platform", "jade", "--deploy", "a=c2");
-        assertEquals(64, run.status(), run::toString);
-        assertTrue(run.err().startsWith("masl: " + program + ":5:3: error: labels are not available to deployed"
-                + " agents yet: run this program without --deploy\n"), run.err());
-        assertEquals("", run.out());
-    }
-
     /** A file named as the secret's is the user's: the mission does not start, and the file is as it was. */
     @Test
     void aSecretFileThatExistsIsRefusedAndKept() throws IOException {

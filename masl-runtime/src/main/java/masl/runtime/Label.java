@@ -23,8 +23,11 @@ import masl.runtime.scheduling.ChangeEpoch;
  * <p>{@link #register} gives back a future that completes only once the completion is stored and
  * counted: a synchronous call awaits that one, so the instruction that made it ends with the
  * call done, counted and its result stored (§10), whichever thread served it.
+ *
+ * <p>A subclass is a view of a label another JVM's mission holds (a deployed agent's program, in its
+ * container): each of its methods is then a request to that label, which alone counts.
  */
-public final class Label {
+public class Label {
 
     private final ChangeEpoch changes;
     /** Registrations of the current generation not yet completed; guarded by {@code this}. */
@@ -32,7 +35,8 @@ public final class Label {
     /** Bumped by {@link #free()}: completions of earlier generations are ignored. */
     private long generation;
 
-    Label(ChangeEpoch changes) {
+    /** A label whose completions advance {@code changes}, the mission's change epoch. */
+    protected Label(ChangeEpoch changes) {
         this.changes = changes;
     }
 

@@ -3,13 +3,12 @@ package masl.jade.deployment;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 import java.util.function.Function;
-import masl.runtime.AgentImplementation;
 import masl.runtime.RemotePrimitiveException;
 
 /**
@@ -27,11 +26,6 @@ final class Callbacks {
     private final AtomicLong numbers = new AtomicLong();
     private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
     private final Map<Long, Object> results = new ConcurrentHashMap<>();
-    private final List<? extends AgentImplementation> agents;
-
-    Callbacks(List<? extends AgentImplementation> agents) {
-        this.agents = agents;
-    }
 
     /** A call whose result stays here ({@link #result}). */
     long call(Callable<?> call) {
@@ -46,9 +40,21 @@ final class Callbacks {
         }, false));
     }
 
-    /** A function of a shared variable's value, whose result travels. */
-    long function(Function<Object, Object> function) {
-        return add(new Pending(value -> function.apply(Values.fromJson(value, agents)), true));
+    /** A function of a shared variable's value, whose result travels: both as {@link Values} writes them. */
+    long function(Function<JsonNode, JsonNode> function) {
+        return add(new Pending(function::apply, true));
+    }
+
+    /**
+     * A label's store ({@code l.x = a.m()}, §10), run when the mission's label counts the call, with the
+     * value {@code result} makes of the mission's argument (how the call ended, as {@link StandIn#ended}
+     * says it).
+     */
+    long store(Function<JsonNode, Object> result, Consumer<Object> store) {
+        return add(new Pending(ended -> {
+            store.accept(result.apply(ended));
+            return null;
+        }, false));
     }
 
     /** The number of a call whose code stays with the program that made it: one that names its primitive. */
@@ -76,7 +82,7 @@ final class Callbacks {
         try {
             Object result = work.work().apply(argument);
             if (work.valueTravels()) {
-                answer.set("value", Values.toJson(result));
+                answer.set("value", (JsonNode) result);
             } else if (result != null) {
                 results.put(number, result);
             }
@@ -92,6 +98,14 @@ final class Callbacks {
     static ObjectNode threw(ObjectNode answer, Throwable failure) {
         return answer.put("outcome", "threw").put("class", RemotePrimitiveException.classNameOf(failure))
                 .put("message", String.valueOf(failure.getMessage()));
+    }
+
+    /**
+     * The result of call {@code number}, still kept: a label's store reads it before the program's future
+     * of the call completes, which the mission holds back until the store has run.
+     */
+    Object kept(long number) {
+        return results.get(number);
     }
 
     /** The result of call {@code number} if the mission says it ran, else {@code defaultValue}; forgets it. */

@@ -112,6 +112,9 @@ final class ContextCalls {
                 if (op.startsWith("shared-")) {
                     return shared(agent, ctx, op.substring("shared-".length()), request);
                 }
+                if (op.startsWith("label-")) {
+                    return coordination.labels().perform(agent, ctx, op.substring("label-".length()), request);
+                }
                 if (op.startsWith("entry-")) {
                     return entry(ctx.entry(blocks.block(text(request, "block"))), op.substring("entry-".length()),
                             request.path("n").intValue());
@@ -175,20 +178,22 @@ final class ContextCalls {
         SharedVariable<Object> variable = ctx.shared((SharedDeclaration<Object>) coordination.blocks()
                 .shared(text(request, "shared")));
         List<AgentImplementation> agents = coordination.agents();
+        Values.Labels labels = coordination.labels().of(agent, ctx);
         long call = request.path("call").longValue();
-        UnaryOperator<Object> remote = value -> coordination.apply(agent.id(), call, Values.toJson(value));
+        UnaryOperator<Object> remote = value -> Values.fromJson(
+                coordination.apply(agent.id(), call, Values.toJson(value, labels)), agents, labels);
         return switch (op) {
-            case "get" -> Values.toJson(variable.get());
+            case "get" -> Values.toJson(variable.get(), labels);
             case "set" -> {
-                variable.set(Values.fromJson(request.get("value"), agents));
+                variable.set(Values.fromJson(request.get("value"), agents, labels));
                 yield null;
             }
             case "initialise" -> {
                 variable.initialise(() -> remote.apply(null));
                 yield null;
             }
-            case "update" -> Values.toJson(variable.update(remote));
-            case "getAndUpdate" -> Values.toJson(variable.getAndUpdate(remote));
+            case "update" -> Values.toJson(variable.update(remote), labels);
+            case "getAndUpdate" -> Values.toJson(variable.getAndUpdate(remote), labels);
             default -> throw new IllegalArgumentException("no shared request " + op);
         };
     }

@@ -39,6 +39,7 @@ public final class Coordination {
     private final Consumer<String> journal;
     private final ContextCalls calls = new ContextCalls(this);
     private final NamedCalls named = new NamedCalls(this);
+    private final MissionLabels labels = new MissionLabels(this);
     private final Map<Integer, StandIn> standIns = new ConcurrentHashMap<>();
     private final Map<Long, Run> runs = new ConcurrentHashMap<>();
     private final AtomicLong runNumbers = new AtomicLong();
@@ -184,6 +185,10 @@ public final class Coordination {
         return named;
     }
 
+    MissionLabels labels() {
+        return labels;
+    }
+
     List<AgentImplementation> agents() {
         return agents;
     }
@@ -242,10 +247,9 @@ public final class Coordination {
         return ContextCalls.RAN;
     }
 
-    /** Applies the update function {@code call} of agent {@code proxyId}'s program to {@code value} in its container. */
-    Object apply(int proxyId, long call, JsonNode value) {
-        JsonNode result = ask(proxyId, runOf(call, value)).get("value");
-        return result == null ? null : Values.fromJson(result, agents);
+    /** Applies the update function {@code call} of agent {@code proxyId}'s program to {@code value} in its container: its result, as {@link Values} writes it. */
+    JsonNode apply(int proxyId, long call, JsonNode value) {
+        return ask(proxyId, runOf(call, value)).get("value");
     }
 
     private static ObjectNode runOf(long call, JsonNode argument) {

@@ -33,7 +33,7 @@ public final class DeployedTeam implements AutoCloseable {
     private final Outbox outbox;
     private final List<AgentImplementation> agents;
     private final Map<Integer, RemoteContext> hosted = new ConcurrentHashMap<>();
-    private final Callbacks callbacks;
+    private final Callbacks callbacks = new Callbacks();
     private final TeamMembers members = new TeamMembers();
     private final TeamJournal journal = new TeamJournal();
     private final ExecutorService steps = Executors.newCachedThreadPool(daemon("masl-deployed-step"));
@@ -59,7 +59,6 @@ public final class DeployedTeam implements AutoCloseable {
             agents.add(implementation);
             return implementation;
         });
-        this.callbacks = new Callbacks(agents);
         List<MissionProgram.AgentSpec> specs = program.agents();
         for (int id = 0; id < specs.size(); id++) {
             if (names.contains(specs.get(id).name())) {

@@ -14,6 +14,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionStage;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import masl.runtime.AgentContext;
@@ -42,7 +43,7 @@ import masl.runtime.entry.Entry;
  * request carries the program's resumption point and each answer brings back the one the runtime
  * left (it redirects the program to reactions).
  */
-final class RemoteContext implements AgentContext {
+final class RemoteContext implements AgentContext, Values.Labels {
 
     private static final JsonNodeFactory JSON = JsonNodeFactory.instance;
 
@@ -59,6 +60,9 @@ final class RemoteContext implements AgentContext {
     private final Map<CompletionStage<?>, Long> callOf = new IdentityHashMap<>();
     /** Confined to the thread running the agent's step. */
     private boolean resumedInCall;
+    /** This program's views of the mission's labels, by key; the labels it made are numbered here. */
+    private final Map<String, RemoteLabel> labels = new ConcurrentHashMap<>();
+    private final AtomicLong labelNumbers = new AtomicLong();
 
     RemoteContext(int id, AgentProgram program, OwnPermeability own, DeployedTeam team) {
         this.id = id;
@@ -91,17 +95,30 @@ final class RemoteContext implements AgentContext {
                 synchronized (callOf) {
                     callOf.remove(mirror.future());
                 }
-                boolean ran = call.get("ran").booleanValue();
-                JsonNode value = call.get("value");
-                // A call that named its primitive brings its result; the others' stayed here.
-                mirror.future().complete(value == null
-                        ? team.callbacks().result(mirror.call(), ran, mirror.defaultValue())
-                        : ran ? Values.fromJson(value, team.agents()) : mirror.defaultValue());
+                mirror.future().complete(resultOf(mirror.call(), call, mirror.defaultValue(), true));
             }
         }
     }
 
-    private JsonNode call(String op, ObjectNode request) {
+    /**
+     * The value call {@code call} gives the program, the mission saying how it {@code ended}: the result
+     * that came with it (a call that named its primitive), the one kept here (the others'), forgotten if
+     * {@code forget}, or {@code defaultValue} if it did not run.
+     */
+    Object resultOf(long call, JsonNode ended, Object defaultValue, boolean forget) {
+        boolean ran = ended.get("ran").booleanValue();
+        JsonNode value = ended.get("value");
+        if (value != null) {
+            return ran ? Values.fromJson(value, team.agents()) : defaultValue;
+        }
+        if (forget) {
+            return team.callbacks().result(call, ran, defaultValue);
+        }
+        return ran ? team.callbacks().kept(call) : defaultValue;
+    }
+
+    /** Request {@code op} to the mission, answered with its value (a label's view asks the mission's label so). */
+    JsonNode call(String op, ObjectNode request) {
         request.put("kind", "call").put("agent", id).put("op", op).put("pc", program.pc());
         team.send(request);
         ObjectNode answer = team.await(answers);
@@ -140,13 +157,30 @@ final class RemoteContext implements AgentContext {
     Object sharedCall(String op, SharedDeclaration<?> declaration, Function<Object, Object> function, Object value) {
         ObjectNode request = JSON.objectNode().put("shared", Blocks.name(declaration));
         if (function != null) {
-            request.put("call", team.callbacks().function(function));
+            request.put("call", team.callbacks().function(
+                    json -> Values.toJson(function.apply(Values.fromJson(json, team.agents(), this)), this)));
         }
         if ("set".equals(op)) {
-            request.set("value", Values.toJson(value));
+            request.set("value", Values.toJson(value, this));
         }
         JsonNode answer = call("shared-" + op, request);
-        return answer == null || answer.isNull() ? null : Values.fromJson(answer, team.agents());
+        return answer == null || answer.isNull() ? null : Values.fromJson(answer, team.agents(), this);
+    }
+
+    /** The number of the call whose future the program holds, or null if the program did not make it here. */
+    Long callNumber(CompletionStage<?> future) {
+        synchronized (callOf) {
+            return callOf.get(future);
+        }
+    }
+
+    /** The value the program's future of call {@code call} gives if the call does not run. */
+    Object defaultValue(long call) {
+        return mirrors.get(call).defaultValue();
+    }
+
+    Callbacks callbacks() {
+        return team.callbacks();
     }
 
     Object entryCall(EntryDefinition block, String op, int n) {
@@ -453,8 +487,26 @@ final class RemoteContext implements AgentContext {
         return queued("launch", callee, primitive, defaultValue, call, request);
     }
 
+    /**
+     * A view of a label the mission makes when this view first asks it something: named by this agent
+     * and a number of its own, it costs no message (an {@code SLabel}'s first member makes it inside the
+     * shared variable's initialisation, while the mission waits for that).
+     */
     @Override
     public Label newLabel() {
-        throw new UnsupportedOperationException("labels are not yet available to deployed agents");
+        return label(id + "." + labelNumbers.incrementAndGet());
+    }
+
+    @Override
+    public Label label(String key) {
+        return labels.computeIfAbsent(key, made -> new RemoteLabel(made, this));
+    }
+
+    @Override
+    public String key(Label label) {
+        if (label instanceof RemoteLabel view) {
+            return view.key();
+        }
+        throw new IllegalArgumentException("a label not made through the mission cannot travel to it");
     }
 }

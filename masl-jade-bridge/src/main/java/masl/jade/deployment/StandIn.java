@@ -113,16 +113,23 @@ final class StandIn extends AgentProgram {
         for (Iterator<Map.Entry<Long, CompletableFuture<Object>>> it = calls.entrySet().iterator(); it.hasNext(); ) {
             Map.Entry<Long, CompletableFuture<Object>> call = it.next();
             if (call.getValue().isDone()) {
-                Object result = call.getValue().join();
-                ObjectNode ended = done.addObject().put("call", call.getKey()).put("ran", result != ContextCalls.DENIED);
-                if (result instanceof ContextCalls.Result named) {
-                    // A call that named its primitive: its result goes to the program that made it.
-                    ended.set("value", named.value());
-                }
+                done.add(ended(call.getValue().join()).put("call", call.getKey()));
                 it.remove();
             }
         }
         return message;
+    }
+
+    /**
+     * How a call of the program that ended with {@code result} ended, as the container learns it: whether
+     * it ran, and the result of a call that named its primitive, which goes to the program that made it.
+     */
+    static ObjectNode ended(Object result) {
+        ObjectNode ended = JsonNodeFactory.instance.objectNode().put("ran", result != ContextCalls.DENIED);
+        if (result instanceof ContextCalls.Result named) {
+            ended.set("value", named.value());
+        }
+        return ended;
     }
 
     @Override

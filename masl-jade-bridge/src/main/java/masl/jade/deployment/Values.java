@@ -5,21 +5,49 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.List;
 import masl.runtime.AgentImplementation;
+import masl.runtime.Label;
 
 /**
  * The values of shared variables as they travel between a mission and its containers: JSON tagged
  * with their Java type ({@code {"int":3}}, {@code {"string":"a"}}, {@code {"agent":2}} for an agent by
- * proxy id), so that each side makes the same boxed type again. A value of any other type (a label,
- * a future) does not travel: {@link IllegalArgumentException}.
+ * proxy id), so that each side makes the same boxed type again; a label ({@code SLabel}'s value) as
+ * its key ({@code {"label":"2.1"}}), which each side makes its own label of (the mission's, or the
+ * container's view of it). A value of any other type (a future) does not travel:
+ * {@link IllegalArgumentException}.
  */
 final class Values {
+
+    /** The labels of one side by key: the mission's ({@link MissionLabels}), a container's views ({@link RemoteLabel}). */
+    interface Labels {
+        Label label(String key);
+
+        String key(Label label);
+    }
+
+    /** Where no label may travel: the arguments, results and attributes of primitives, which are never labels. */
+    static final Labels NONE = new Labels() {
+        @Override
+        public Label label(String key) {
+            throw new IllegalArgumentException("a label (" + key + ") is not a primitive's or an attribute's value");
+        }
+
+        @Override
+        public String key(Label label) {
+            throw new IllegalArgumentException("a label is not a primitive's or an attribute's value");
+        }
+    };
 
     private static final JsonNodeFactory JSON = JsonNodeFactory.instance;
 
     private Values() {
     }
 
+    /** {@code value}, which is no label, as it travels. */
     static JsonNode toJson(Object value) {
+        return toJson(value, NONE);
+    }
+
+    static JsonNode toJson(Object value, Labels labels) {
         ObjectNode tagged = JSON.objectNode();
         if (value == null) {
             return tagged.putNull("null");
@@ -43,6 +71,8 @@ final class Values {
             tagged.put("string", s);
         } else if (value instanceof AgentImplementation agent) {
             tagged.put("agent", AgentImplementation.proxyIdOf(agent));
+        } else if (value instanceof Label label) {
+            tagged.put("label", labels.key(label));
         } else {
             throw new IllegalArgumentException("a " + value.getClass().getSimpleName()
                     + " value cannot travel to a deployed agent");
@@ -50,8 +80,13 @@ final class Values {
         return tagged;
     }
 
-    /** The value {@code json} stands for; agents are this side's implementations, by proxy id. */
+    /** The value {@code json} stands for, which is no label; agents are this side's implementations, by proxy id. */
     static Object fromJson(JsonNode json, List<? extends AgentImplementation> agents) {
+        return fromJson(json, agents, NONE);
+    }
+
+    /** The value {@code json} stands for; agents are this side's implementations, by proxy id, labels its {@code labels}. */
+    static Object fromJson(JsonNode json, List<? extends AgentImplementation> agents, Labels labels) {
         String tag = json.fieldNames().hasNext() ? json.fieldNames().next() : "";
         JsonNode value = json.get(tag);
         return switch (tag) {
@@ -66,6 +101,7 @@ final class Values {
             case "char" -> value.textValue().charAt(0);
             case "string" -> value.textValue();
             case "agent" -> agents.get(value.intValue());
+            case "label" -> labels.label(value.textValue());
             default -> throw new IllegalArgumentException("not a value: " + json);
         };
     }
