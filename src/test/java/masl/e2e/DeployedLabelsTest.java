@@ -1,5 +1,7 @@
 package masl.e2e;
 
+import java.util.List;
+import java.util.function.Consumer;
 import masl.testing.MaslMission;
 import masl.testing.MissionPlatform;
 import masl.testing.MissionRun;
@@ -8,10 +10,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * The manual's labels (§10) with the agents' programs deployed to a container: the mission holds
- * the labels, the programs' views ask it; the journals are those in-process gives. Every agent's
- * program deployed, then one agent's alone, so that a label travels between the mission's JVM and
- * the container (an {@code SLabel} one side made, the other reads).
+ * The manual's labels (§10) with the agents' programs deployed: the mission holds the labels, the
+ * programs' views ask it; the journals are those in-process gives. Every agent's program in one
+ * container, then over two, then one agent's alone, so that a label travels between containers and
+ * between a container and the mission's JVM (an {@code SLabel} one side made, the other reads).
  */
 @Timeout(120)
 class DeployedLabelsTest {
@@ -60,9 +62,9 @@ class DeployedLabelsTest {
                 "2: id 1, remaining 0"));
     }
 
-    private static void everyDeployment(MaslMission mission, String alone, java.util.function.Consumer<MissionRun> journal) {
-        for (MissionPlatform deployment : new MissionPlatform[] {DeployedInMemory.everyAgent(),
-                DeployedInMemory.agents(alone)}) {
+    private static void everyDeployment(MaslMission mission, String alone, Consumer<MissionRun> journal) {
+        for (MissionPlatform deployment : List.of(DeployedInMemory.everyAgent(), DeployedInMemory.spread(),
+                DeployedInMemory.agents(alone))) {
             for (int run = 0; run < RUNS; run++) {
                 journal.accept(mission.runOn(deployment));
             }

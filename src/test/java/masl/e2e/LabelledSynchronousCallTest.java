@@ -83,16 +83,18 @@ class LabelledSynchronousCallTest {
     }
 
     /**
-     * The same with the programs deployed to a container, whose labels are views of the mission's: every
-     * agent's, then one caller's alone (its callee's program in the mission's JVM).
+     * The same with the programs deployed, whose labels are views of the mission's: every agent's in one
+     * container, then the two callers' in two (each call crossing to the other), then one caller's alone
+     * (its callee's program in the mission's JVM). The boss opens its callees' gates on their objects,
+     * so its team shares one container.
      */
     @Test
     void deployedProgramsSeeTheirLabelsAsInProcess() {
         for (int run = 0; run < DEPLOYED_RUNS; run++) {
             counted(MISSION.runOn(DeployedInMemory.everyAgent()));
+            counted(MISSION.runOn(DeployedInMemory.spread()));
             counted(MISSION.runOn(DeployedInMemory.agents("a")));
             cameLate(ASYNCHRONOUS.runOn(DeployedInMemory.everyAgent()));
-            cameLate(ASYNCHRONOUS.runOn(DeployedInMemory.agents("boss")));
         }
     }
 

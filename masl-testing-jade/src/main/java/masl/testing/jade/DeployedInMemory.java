@@ -22,11 +22,11 @@ import masl.jade.deployment.Coordination;
 import masl.jade.deployment.DeployedTeam;
 import masl.jade.deployment.Wire;
 import masl.runtime.AgentImplementation;
+import masl.runtime.DeployedPrograms;
 import masl.runtime.Mission;
 import masl.runtime.MissionOutcome;
 import masl.runtime.MissionProgram;
 import masl.runtime.descriptor.AgentType;
-import masl.runtime.descriptor.DescriptorLoader;
 import masl.runtime.scheduling.ThreadPerAgentScheduler;
 import masl.runtime.trace.Trace;
 import masl.testing.MissionPlatform;
@@ -88,10 +88,12 @@ public final class DeployedInMemory implements MissionPlatform {
 
     @Override
     public MissionOutcome run(TranslatedMission mission, Trace trace, Duration timeout) throws InterruptedException {
-        DescriptorLoader descriptors = new DescriptorLoader(mission.descriptors());
         List<String> names = mission.loader().program().agents().stream().map(MissionProgram.AgentSpec::name).toList();
+        // The types the translation gave the agents, as each side makes them.
+        List<AgentType> types = DeployedPrograms.outsideAMission(mission.loader().program(),
+                mission.loader()::newImplementation).types();
         return run(mission.loader()::program, deployment.apply(names), mission.loader()::newImplementation,
-                spec -> descriptors.loadByClassName(spec.typeClassName()), trace, timeout).outcome();
+                spec -> types.get(names.indexOf(spec.name())), trace, timeout).outcome();
     }
 
     /**
