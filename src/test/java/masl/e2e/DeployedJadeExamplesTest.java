@@ -51,18 +51,7 @@ class DeployedJadeExamplesTest {
     /** The manual's labels (§10): an {@code SLabel} the agent running main waits on, one robot in each container. */
     @Test
     void labels(@TempDir Path folder) throws Exception {
-        Path program = Files.writeString(folder.resolve("calibrate.masl"), """
-                import SoftWheeledRobot.xml as Rover;
-                Rover r1, r2 = newAgent(Rover);
-                scalar entry main (true) {
-                  SLabel all;
-                  local boolean ok1, ok2;
-                  all.ok1 = r1.calibrate();
-                  all.ok2 = r2.calibrate();
-                  while (!all.isFinished()) {}
-                  .logln("both calibrated: " + (ok1 && ok2));
-                }
-                """);
+        Path program = Files.writeString(folder.resolve("calibrate.masl"), DeployedLabelsTest.CALIBRATE);
         assertEquals("both calibrated: true\n", deployed(program).journal());
     }
 

@@ -20,21 +20,23 @@ class DeployedLabelsTest {
 
     private static final int RUNS = 5;
 
-    /** Two robots calibrate at once (an asynchronous primitive), the agent running main waits for both. */
+    /** The manual's two robots: they calibrate at once (an asynchronous primitive), the agent running main waits for both. */
+    static final String CALIBRATE = """
+            import SoftWheeledRobot.xml as Rover;
+            Rover r1, r2 = newAgent(Rover);
+            scalar entry main (true) {
+              SLabel all;
+              local boolean ok1, ok2;
+              all.ok1 = r1.calibrate();
+              all.ok2 = r2.calibrate();
+              while (!all.isFinished()) {}
+              .logln("both calibrated: " + (ok1 && ok2));
+            }
+            """;
+
     @Test
     void twoRobotsCalibrateAndTheAgentRunningMainWaitsForBoth() {
-        MaslMission mission = MaslMission.fromString("calibrate.masl", """
-                import SoftWheeledRobot.xml as Rover;
-                Rover r1, r2 = newAgent(Rover);
-                scalar entry main (true) {
-                  SLabel all;
-                  local boolean ok1, ok2;
-                  all.ok1 = r1.calibrate();
-                  all.ok2 = r2.calibrate();
-                  while (!all.isFinished()) {}
-                  .logln("both calibrated: " + (ok1 && ok2));
-                }
-                """);
+        MaslMission mission = MaslMission.fromString("calibrate.masl", CALIBRATE);
         everyDeployment(mission, "r2", run -> run.assertJournal("both calibrated: true\n"));
     }
 
