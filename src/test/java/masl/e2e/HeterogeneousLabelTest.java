@@ -24,7 +24,10 @@ class HeterogeneousLabelTest {
 
     private static final int RUNS = 20;
     private static final int SEEDS = 200;
-    /** Runs with the agents' programs deployed to a container: every agent's, then the scout's alone. */
+    /**
+     * Runs with every agent's program deployed to one container: a label's store into another agent's
+     * attribute reaches it only there (the bridge's README, "Not there yet").
+     */
     private static final int DEPLOYED_RUNS = 5;
 
     static List<Schedule> schedules() {
@@ -118,7 +121,6 @@ class HeterogeneousLabelTest {
             mission.explore(LongStream.range(0, SEEDS), 0).assertEveryRun(property);
             for (int run = 0; run < DEPLOYED_RUNS; run++) {
                 property.accept(mission.runOn(DeployedInMemory.everyAgent()));
-                property.accept(mission.runOn(DeployedInMemory.agents("s")));
             }
         }
     }
