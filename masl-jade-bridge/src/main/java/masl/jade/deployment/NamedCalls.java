@@ -7,6 +7,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import masl.runtime.AgentImplementation;
 import masl.runtime.descriptor.AgentType;
@@ -23,7 +24,7 @@ final class NamedCalls {
 
     private final Coordination coordination;
     private final Map<Integer, Members> members = new ConcurrentHashMap<>();
-    private final Map<Integer, Boolean> deployed = new ConcurrentHashMap<>();
+    private final Set<Integer> deployed = ConcurrentHashMap.newKeySet();
 
     NamedCalls(Coordination coordination) {
         this.coordination = coordination;
@@ -39,7 +40,7 @@ final class NamedCalls {
         if (!isDeployed) {
             return made;
         }
-        deployed.put(proxyId, true);
+        deployed.add(proxyId);
         DeployedBody body = new DeployedBody(proxyId, bound, this);
         AgentImplementation stub = Members.STUBS.instantiate(made.getClass(), bound.methods(), body);
         body.of(stub);
@@ -56,7 +57,7 @@ final class NamedCalls {
     /** The value of attribute {@code attribute} of agent {@code proxyId}, read where the agent runs. */
     Object read(int proxyId, String attribute) {
         Members owner = of(proxyId);
-        if (deployed.containsKey(proxyId)) {
+        if (deployed.contains(proxyId)) {
             JsonNode value = coordination.ask(proxyId, request("read").put("attribute", attribute)).get("value");
             return Values.fromJson(value, coordination.agents());
         }
@@ -66,7 +67,7 @@ final class NamedCalls {
     /** Sets attribute {@code attribute} of agent {@code proxyId} to {@code value} (tagged), where the agent runs. */
     void write(int proxyId, String attribute, JsonNode value) {
         Members owner = of(proxyId);
-        if (deployed.containsKey(proxyId)) {
+        if (deployed.contains(proxyId)) {
             ObjectNode write = request("write").put("attribute", attribute);
             write.set("value", value);
             coordination.ask(proxyId, write);
