@@ -292,8 +292,8 @@ public final class Bench {
     private static void deployed(Options options) throws Exception {
         int runs = 3;
         System.out.println("10. Deployed: agents spread over two masl container JVMs of the installed command (--deploy '*=c2+c3',"
-                + " --place likewise), the mission in this JVM; steps per second and coordination messages per step and"
-                + " container, sent/taken by the coordinator (median of " + runs + ", " + loadAverage() + ")");
+                + " --place likewise), the mission in this JVM; steps per second and messages per step and container,"
+                + " sent/taken by the coordinator (median of " + runs + ", " + loadAverage() + ")");
         DeployedMissions missions = DeployedMissions.installed();
         JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer());
         try {
@@ -314,8 +314,8 @@ public final class Bench {
             double deployed = printDeployed("ten own primitives a step, deployed", agents, figures.get(0));
             double placed = printDeployed("ten own primitives a step, placed", agents, figures.get(1));
             double inProcess = printDeployed("ten own primitives a step, in-process", agents, figures.get(2));
-            System.out.printf(Locale.ROOT, "   deployed/placed %s, deployed/in-process %s%n", ratio(deployed, placed),
-                    ratio(deployed, inProcess));
+            System.out.printf(Locale.ROOT, "   deployed/placed %s, in-process/deployed %s%n", ratio(deployed, placed),
+                    ratio(inProcess, deployed));
         } finally {
             closeQuietly(platform);
         }

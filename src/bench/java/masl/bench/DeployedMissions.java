@@ -32,8 +32,9 @@ import masl.translator.TranslationKey;
  * in this JVM, where the mission runs through {@link JadeLauncher} as {@code masl run --platform jade}
  * runs it. Agents are spread over the two containers in turn ({@code --deploy '*=c2+c3'}, or
  * {@code --place} likewise). Steps are the barrier trips of the mission's trace, timed as
- * {@link StepClock} times them (the containers' start and the first step left out); messages are the
- * coordination messages the coordinator sent to and took from the containers ({@link ContainerTraffic}).
+ * {@link StepClock} times them (the containers' start and the first step left out); messages are those
+ * the coordinator sent to and took from the containers ({@link ContainerTraffic}): deployed agents'
+ * coordination messages, or placed bodies' primitive calls and their answers.
  */
 final class DeployedMissions {
 

@@ -131,7 +131,10 @@ public final class JadeLauncher {
         return this;
     }
 
-    /** Counts the coordination messages of the deployed agents, to and from each container, into {@code counts}. */
+    /**
+     * Counts into {@code counts} the messages between the coordinator and each container: deployed
+     * agents' coordination messages, and placed bodies' requests and answers.
+     */
     public JadeLauncher traffic(ContainerTraffic counts) {
         this.traffic = Objects.requireNonNull(counts, "counts");
         return this;
@@ -239,6 +242,9 @@ public final class JadeLauncher {
         }
         Distribution distribution = placement.isEmpty() && deployment.isEmpty() ? null
                 : new Distribution(platform, placement, secret, AGENTS_TIMEOUT, containersWithin, problems);
+        if (distribution != null && traffic != null) {
+            distribution.countInto(traffic);
+        }
         List<AgentController> controllers = new ArrayList<>();
         List<MaslJadeAgent> locals = new ArrayList<>();
         Duration limit = callTimeout == null ? OutsideCalls.DEFAULT_LIMIT : callTimeout;
@@ -357,9 +363,6 @@ public final class JadeLauncher {
         if (coordination != null) {
             coordination.agents(created);
             distribution.deploy(deployment, deployedSource, coordination, names);
-            if (traffic != null) {
-                distribution.countInto(traffic);
-            }
         }
         if (distribution != null) {
             distribution.place(mission, names, tables, created, outside);

@@ -204,18 +204,31 @@ public final class Coordination {
     }
 
     /**
-     * The outbox of agent {@code proxyId}'s container, one per wire. The agent waits for the mission
-     * from the first time it is named here: for its first step, or for the end of a call run there.
+     * The outbox of agent {@code proxyId}'s container, one per wire. An agent waits for the mission
+     * from the first time one is named here: for its first step, or for the end of a call run there.
+     * The first use names every stand-in there is (once the mission runs, every one), so that the
+     * first steps of a container's agents go together too.
      */
     private Outbox outbox(int proxyId) {
-        return outboxOf.computeIfAbsent(proxyId, id -> {
-            Outbox outbox;
-            synchronized (outboxOfWire) {
-                outbox = outboxOfWire.computeIfAbsent(wireOf.apply(id), wire -> new Outbox(wire, 0));
-            }
-            outbox.busy(1);
+        Outbox outbox = outboxOf.get(proxyId);
+        if (outbox != null) {
             return outbox;
-        });
+        }
+        synchronized (outboxOfWire) {
+            if (outboxOf.isEmpty()) {
+                standIns.keySet().forEach(this::waiting);
+            }
+            outbox = outboxOf.get(proxyId);
+            return outbox != null ? outbox : waiting(proxyId);
+        }
+    }
+
+    /** Agent {@code proxyId} waits for the mission in its container's outbox, made if need be; under the lock. */
+    private Outbox waiting(int proxyId) {
+        Outbox outbox = outboxOfWire.computeIfAbsent(wireOf.apply(proxyId), wire -> new Outbox(wire, 0));
+        outbox.busy(1);
+        outboxOf.put(proxyId, outbox);
+        return outbox;
     }
 
     /** The next message for a stand-in's step; throws once its container is gone. */

@@ -6,10 +6,11 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.LongAdder;
 
 /**
- * The coordination messages of deployed agents ({@code masl-deployed}) the coordinator sent to and
- * took from each container, counted as they cross the wire: what a mission's steps cost on the
- * network, one ACL message each however many requests it carries. Counting is an addition per
- * message; reading is for after (or between) missions.
+ * The messages the coordinator sent to and took from each container, counted as they cross the wire:
+ * deployed agents' coordination messages ({@code masl-deployed}, one ACL message however many
+ * requests it carries) and placed bodies' primitive calls ({@code masl-body}, a request and its
+ * answer). What a mission's steps cost on the network. Counting is an addition per message; reading
+ * is for after (or between) missions.
  */
 public final class ContainerTraffic {
 

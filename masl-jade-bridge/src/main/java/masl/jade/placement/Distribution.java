@@ -155,7 +155,10 @@ public final class Distribution {
     public AgentImplementation stub(int proxyId, String name, String container, AgentType type,
             Class<? extends AgentImplementation> implementation) {
         List<Method> methods = new PrimitiveTable(type, implementation).methods();
-        RemoteBody body = new RemoteBody(name, new AID(name, AID.ISLOCALNAME), methods, coordinator);
+        RemoteBody body = new RemoteBody(name, new AID(name, AID.ISLOCALNAME), methods, coordinator, () -> {
+            traffic.sentTo(container);
+            traffic.receivedFrom(container);
+        });
         remotes.put(proxyId, new Remote(name, container, implementation.getName(), body));
         return stubs.instantiate(implementation, methods, body);
     }
@@ -171,7 +174,10 @@ public final class Distribution {
         coordinator.deployedTo(this::takeDeployed);
     }
 
-    /** Counts the deployed agents' coordination messages into {@code counts} from now on. */
+    /**
+     * Counts into {@code counts} from now on the deployed agents' coordination messages, and the
+     * requests to placed bodies and their answers.
+     */
     public void countInto(ContainerTraffic counts) {
         this.traffic = counts;
     }

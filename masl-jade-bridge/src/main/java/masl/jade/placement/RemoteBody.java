@@ -36,13 +36,16 @@ final class RemoteBody implements BodyStub {
     private final AID body;
     private final List<Method> methods;
     private final CoordinatorAgent coordinator;
+    /** Told of each request sent to the body and answered. */
+    private final Runnable roundTrip;
     private volatile Journal journal;
 
-    RemoteBody(String agent, AID body, List<Method> methods, CoordinatorAgent coordinator) {
+    RemoteBody(String agent, AID body, List<Method> methods, CoordinatorAgent coordinator, Runnable roundTrip) {
         this.agent = agent;
         this.body = body;
         this.methods = List.copyOf(methods);
         this.coordinator = coordinator;
+        this.roundTrip = roundTrip;
     }
 
     /** The mission's journal, once the mission is built: before any primitive is called. */
@@ -56,6 +59,7 @@ final class RemoteBody implements BodyStub {
         ACLMessage request = AclInvocations.request(body, method.getName(), Arrays.asList(args), null);
         request.setConversationId(Conversations.BODY);
         ACLMessage answer = await(coordinator.ask(request), method);
+        roundTrip.run();
         Reply reply;
         try {
             reply = AclInvocations.readReply(answer);
