@@ -17,7 +17,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * type lacks the primitive, the label's invocation is a {@code nop()} that counts as done at once and
  * stores nothing. A team of a Worker and a Scout ({@code src/test/resources/workers}): only the Scout
  * has {@code sweep} (asynchronous), {@code scan} (synchronous) and {@code range}. The same
- * journals with the agents' programs deployed to a container, the mission holding the labels.
+ * journals with the agents' programs deployed to containers, the mission holding the labels.
  */
 @Timeout(60)
 class HeterogeneousLabelTest {
@@ -25,8 +25,8 @@ class HeterogeneousLabelTest {
     private static final int RUNS = 20;
     private static final int SEEDS = 200;
     /**
-     * Runs with every agent's program deployed to one container: a label's store into another agent's
-     * attribute reaches it only there (the bridge's README, "Not there yet").
+     * Runs with the agents' programs deployed over two containers, then the scout's alone (the worker's
+     * in the mission's JVM): a label's store into the other agent's attribute crosses to where it runs.
      */
     private static final int DEPLOYED_RUNS = 5;
 
@@ -120,7 +120,8 @@ class HeterogeneousLabelTest {
         if (schedule.equals(Schedule.threads())) {
             mission.explore(LongStream.range(0, SEEDS), 0).assertEveryRun(property);
             for (int run = 0; run < DEPLOYED_RUNS; run++) {
-                property.accept(mission.runOn(DeployedInMemory.everyAgent()));
+                property.accept(mission.runOn(DeployedInMemory.spread()));
+                property.accept(mission.runOn(DeployedInMemory.agents("s")));
             }
         }
     }

@@ -49,7 +49,10 @@ class LabelledSynchronousCallTest {
             }
             """);
 
-    /** A boss collects two asynchronous calls with a label, opening the callees once it has launched both. */
+    /**
+     * A boss collects two asynchronous calls of {@code a} with a label, one stored into {@code b}'s
+     * attribute, and opens {@code a}'s gate once it has launched both.
+     */
     private static final MaslMission ASYNCHRONOUS = MaslMission.fromString("labelled-asynchronous.masl", """
             import workers/Worker.xml;
             Worker a, b, boss = newAgent(Worker);
@@ -58,10 +61,9 @@ class LabelledSynchronousCallTest {
                 LLabel l;
                 local int ra = 0;
                 l.ra = a.slow(1);
-                l.b.battery = b.slow(2);
+                l.b.battery = a.slow(2);
                 .logln("launched: remaining " + l.getRemainingInvocations() + ", ra " + ra);
                 .open(a);
-                .open(b);
                 while (l.getRemainingInvocations() > 0) {}
                 .logln("came: ra " + ra + ", battery " + b.battery);
               }
@@ -85,8 +87,8 @@ class LabelledSynchronousCallTest {
     /**
      * The same with the programs deployed, whose labels are views of the mission's: every agent's in one
      * container, then the two callers' in two (each call crossing to the other), then one caller's alone
-     * (its callee's program in the mission's JVM). The boss opens its callees' gates on their objects,
-     * so its team shares one container.
+     * (its callee's program in the mission's JVM). The boss opens its callee's gate on its object, so the
+     * two share a container; spread over two, {@code b}, whose attribute the label stores into, is in the other.
      */
     @Test
     void deployedProgramsSeeTheirLabelsAsInProcess() {
@@ -94,7 +96,7 @@ class LabelledSynchronousCallTest {
             counted(MISSION.runOn(DeployedInMemory.everyAgent()));
             counted(MISSION.runOn(DeployedInMemory.spread()));
             counted(MISSION.runOn(DeployedInMemory.agents("a")));
-            cameLate(ASYNCHRONOUS.runOn(DeployedInMemory.everyAgent()));
+            cameLate(ASYNCHRONOUS.runOn(DeployedInMemory.spread()));
         }
     }
 

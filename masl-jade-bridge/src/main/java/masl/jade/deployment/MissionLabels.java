@@ -76,7 +76,12 @@ final class MissionLabels {
                 yield null;
             }
             case "register" -> {
-                register(agent, label, request);
+                register(agent, ctx, label, request);
+                yield null;
+            }
+            case "store" -> {
+                coordination.named().write(request.get("owner").intValue(), request.get("attribute").textValue(),
+                        request.get("value"));
                 yield null;
             }
             default -> throw new IllegalArgumentException("no label request " + op);
@@ -87,14 +92,40 @@ final class MissionLabels {
      * Registers the call the agent's program made with {@code label}; the program is told the call is
      * over once the label has counted it and its store (if any) has run in the container.
      */
-    private void register(StandIn agent, Label label, JsonNode request) {
+    private void register(StandIn agent, AgentContext ctx, Label label, JsonNode request) {
         long call = request.get("call").longValue();
         CompletableFuture<Object> invocation = agent.call(call);
         if (invocation == null) {
             throw new IllegalArgumentException("agent " + agent.id() + " has no call " + call + " under way");
         }
         JsonNode store = request.get("store");
-        agent.track(call, store == null ? label.register(invocation) : label.register(invocation,
-                value -> coordination.run(agent.id(), store.longValue(), StandIn.ended(value))));
+        if (store == null) {
+            agent.track(call, label.register(invocation));
+        } else if (request.has("attribute")) {
+            int owner = request.get("owner").intValue();
+            String attribute = request.get("attribute").textValue();
+            agent.track(call, label.register(invocation, value -> storedElsewhere(agent, ctx, store.longValue(),
+                    owner, attribute, value)));
+        } else {
+            agent.track(call, label.register(invocation,
+                    value -> coordination.run(agent.id(), store.longValue(), StandIn.ended(value))));
+        }
+    }
+
+    /**
+     * A store into attribute {@code attribute} of agent {@code owner}, which runs elsewhere than the
+     * caller: the caller's container makes the value (the call's result is there), written where the
+     * owner runs. As in-process, a label's store checks no permeability. A value that does not travel,
+     * or a container gone, makes the caller perceive {@code uncaught_exception}, as a write by name
+     * does; the label still counts the call.
+     */
+    private void storedElsewhere(StandIn agent, AgentContext ctx, long store, int owner, String attribute,
+            Object value) {
+        try {
+            JsonNode written = coordination.apply(agent.id(), store, StandIn.ended(value));
+            coordination.named().write(owner, attribute, written);
+        } catch (RuntimeException failed) {
+            ctx.uncaughtException(failed);
+        }
     }
 }

@@ -21,6 +21,7 @@ import masl.runtime.AgentContext;
 import masl.runtime.AgentImplementation;
 import masl.runtime.AgentProgram;
 import masl.runtime.Arrival;
+import masl.runtime.AttributeStore;
 import masl.runtime.DeployedPrograms;
 import masl.runtime.ESequence;
 import masl.runtime.EntryDefinition;
@@ -181,6 +182,19 @@ final class RemoteContext implements AgentContext, Values.Labels {
 
     Callbacks callbacks() {
         return team.callbacks();
+    }
+
+    /** Whether {@code agent} runs elsewhere than this container: its attributes are written by name. */
+    boolean runsElsewhere(AgentImplementation agent) {
+        return agent != null && team.members().accessedByName(proxyId(agent));
+    }
+
+    /** The value (tagged) {@code store} writes when it stores {@code value}, found on its owner's stub here. */
+    @SuppressWarnings("unchecked")
+    JsonNode stored(AttributeStore<?> store, Object value) {
+        AgentImplementation owner = store.owner();
+        return team.members().written(proxyId(owner), owner, store.attribute(),
+                ((AttributeStore<Object>) store).writing(value));
     }
 
     Object entryCall(EntryDefinition block, String op, int n) {

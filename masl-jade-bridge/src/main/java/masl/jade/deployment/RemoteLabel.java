@@ -1,9 +1,13 @@
 package masl.jade.deployment;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.Consumer;
+import java.util.function.Function;
+import masl.runtime.AgentImplementation;
+import masl.runtime.AttributeStore;
 import masl.runtime.Label;
 import masl.runtime.scheduling.ChangeEpoch;
 
@@ -13,7 +17,8 @@ import masl.runtime.scheduling.ChangeEpoch;
  * program made (the mission holds its future); the store of its result stays here, run when the
  * mission's label counts the call, and the program's future of the call completes only after that,
  * so a program that saw the label finished, or awaited a labelled synchronous call, reads the result
- * stored, as in-process.
+ * stored, as in-process. A store into an attribute of an agent that runs elsewhere ({@code l.b.x = b.m()})
+ * makes its value here and the mission writes it where {@code b} runs.
  */
 final class RemoteLabel extends Label {
 
@@ -32,7 +37,8 @@ final class RemoteLabel extends Label {
 
     /**
      * A call already over (a {@code nop()} for an addressee whose type lacks the primitive, or one the
-     * mission has said is over) counts as done at once, in-process too: it is stored here, with no message.
+     * mission has said is over) counts as done at once, in-process too: it is stored here, with no message,
+     * unless it stores into an agent that runs elsewhere (then the mission writes it there).
      */
     @Override
     public <T> CompletableFuture<T> register(CompletableFuture<T> invocation, Consumer<? super T> store) {
@@ -48,7 +54,9 @@ final class RemoteLabel extends Label {
     @SuppressWarnings("unchecked")
     private <T> CompletableFuture<T> registered(CompletableFuture<T> invocation, Consumer<? super T> store) {
         if (invocation.isDone()) {
-            if (store != null) {
+            if (store instanceof AttributeStore<?> into && context.runsElsewhere(into.owner())) {
+                storeElsewhere(into, invocation.join());
+            } else if (store != null) {
                 store.accept(invocation.join());
             }
             return invocation;
@@ -60,11 +68,32 @@ final class RemoteLabel extends Label {
         ObjectNode request = request().put("call", call);
         if (store != null) {
             Object defaultValue = context.defaultValue(call);
-            request.put("store", context.callbacks().store(ended -> context.resultOf(call, ended, defaultValue, false),
-                    value -> store.accept((T) value)));
+            Function<JsonNode, Object> result = ended -> context.resultOf(call, ended, defaultValue, false);
+            if (store instanceof AttributeStore<?> into && context.runsElsewhere(into.owner())) {
+                // The result is here, the attribute where its owner runs: the value goes to the mission,
+                // which writes it there.
+                request.put("store", context.callbacks().function(ended -> context.stored(into, result.apply(ended))))
+                        .put("owner", AgentImplementation.proxyIdOf(into.owner())).put("attribute", into.attribute());
+            } else {
+                request.put("store", context.callbacks().store(result, value -> store.accept((T) value)));
+            }
         }
         context.call("label-register", request);
         return invocation;
+    }
+
+    /** A store into an agent that runs elsewhere of a call already over: the mission writes it there. */
+    private void storeElsewhere(AttributeStore<?> into, Object value) {
+        ObjectNode request = request().put("owner", AgentImplementation.proxyIdOf(into.owner()))
+                .put("attribute", into.attribute());
+        try {
+            request.set("value", context.stored(into, value));
+        } catch (IllegalArgumentException cannotTravel) {
+            // A value of a type that does not travel: as a primitive that throws, in-process.
+            context.uncaughtException(cannotTravel);
+            return;
+        }
+        context.call("label-store", request);
     }
 
     @Override

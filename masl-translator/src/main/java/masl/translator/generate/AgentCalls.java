@@ -272,7 +272,8 @@ final class AgentCalls {
     /**
      * {@code store$x(owner)}: the consumer a label stores a result with into attribute
      * {@code attribute} (§10), declared by {@code ownerClass}, of an agent whose static class is
-     * {@code receiverClass}; one that does nothing for an agent without the attribute (§4).
+     * {@code receiverClass}: an {@code AttributeStore} naming the owner and the attribute, so that the
+     * runtime writes it where the owner runs; one that does nothing for an agent without the attribute (§4).
      */
     String store(Attribute attribute, String ownerClass, String receiverClass, String owner) {
         String key = "store " + attribute.name() + " " + ownerClass + " " + receiverClass;
@@ -289,7 +290,9 @@ final class AgentCalls {
             if (dispatches) {
                 lines.addAll(dispatch(ownerClass, "owner", "return value -> { };", attribute.name()));
             }
-            lines.add("        return value -> " + field + " = value;");
+            // Through the runtime, which writes where the owner's state is: another JVM's for a deployed agent.
+            lines.add("        return new masl.runtime.AttributeStore<>(owner, " + JavaText.quote(attribute.name())
+                    + ", value -> " + field + " = value);");
             lines.add("    }");
             helpers.put(name, lines);
         }

@@ -234,6 +234,28 @@ class GeneratorTest {
         assertTrue(program.contains("case 4: // init.masl:5: after .position()"), program);
     }
 
+    /**
+     * A label's store into another agent's attribute names the owner and the attribute, so that the
+     * runtime writes it where the owner runs (another JVM's for a deployed agent); in-process it is the
+     * field write it always was.
+     */
+    @Test
+    void aLabelsStoreIntoAnAttributeNamesItsOwnerAndTheAttribute() {
+        Translation translation = Programs.translate("store.masl", """
+                import robots/Khepera.xml;
+                Khepera k, j = newAgent(Khepera);
+                synchronous entry main (true) {
+                  LLabel l;
+                  l.j.battery = j.getProximity(1);
+                }
+                """);
+        assertTrue(translation.succeeded(), () -> translation.diagnostics().sorted().toString());
+        String program = translation.javaSources().get("masl.generated.store.KheperaProgram");
+        assertTrue(program.contains("return new masl.runtime.AttributeStore<>(owner, \"battery\", value -> owner.battery"
+                + " = value);"), program);
+        MissionLoader.load(translation, AgentPath.parse(""));
+    }
+
     @Test
     void unsupportedConstructsArePositionedErrors() {
         Translation translation = Programs.translate("wait.masl", """
