@@ -318,6 +318,7 @@ public final class Bench {
                     ratio(inProcess, deployed));
         } finally {
             closeQuietly(platform);
+            missions.close();
         }
         System.out.println("   (goals: >= 1,000 steps/s at N=1000 deployed; deployed/placed >= 10x)");
         System.out.println();

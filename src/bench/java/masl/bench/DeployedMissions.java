@@ -157,6 +157,15 @@ final class DeployedMissions {
                 sum(traffic.received()) / perContainerStep);
     }
 
+    /** Deletes the containers' logs and the folder they were written to. */
+    void close() throws IOException {
+        try (java.util.stream.Stream<Path> files = Files.walk(work)) {
+            for (Path file : files.sorted(java.util.Comparator.reverseOrder()).toList()) {
+                Files.deleteIfExists(file);
+            }
+        }
+    }
+
     private static long sum(Map<String, Long> counts) {
         return counts.values().stream().mapToLong(Long::longValue).sum();
     }
