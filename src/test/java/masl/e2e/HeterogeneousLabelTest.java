@@ -25,8 +25,9 @@ class HeterogeneousLabelTest {
     private static final int RUNS = 20;
     private static final int SEEDS = 200;
     /**
-     * Runs with the agents' programs deployed over two containers, then the scout's alone (the worker's
-     * in the mission's JVM): a label's store into the other agent's attribute crosses to where it runs.
+     * Runs with the agents' programs deployed over two containers, then the scout's alone, then the
+     * worker's alone (the other's in the mission's JVM): a label's store into the other agent's attribute
+     * crosses to where it runs, in each direction.
      */
     private static final int DEPLOYED_RUNS = 5;
 
@@ -122,6 +123,7 @@ class HeterogeneousLabelTest {
             for (int run = 0; run < DEPLOYED_RUNS; run++) {
                 property.accept(mission.runOn(DeployedInMemory.spread()));
                 property.accept(mission.runOn(DeployedInMemory.agents("s")));
+                property.accept(mission.runOn(DeployedInMemory.agents("w")));
             }
         }
     }
