@@ -361,7 +361,7 @@ public final class JadeLauncher {
         }
         externals.start(platform);
         if (coordination != null) {
-            coordination.agents(created);
+            coordination.agents(mission, created);
             distribution.deploy(deployment, deployedSource, coordination, names);
         }
         if (distribution != null) {

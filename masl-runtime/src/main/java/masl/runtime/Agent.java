@@ -62,6 +62,8 @@ public final class Agent extends SteppingAgent implements AgentContext {
     public final AgentImplementation implementation;
     private final Invoker invoker;
     private final Emitter emitter;
+    /** Why the agent's program is over from outside ({@link #failFromOutside}), or null. */
+    private volatile Throwable failedFromOutside;
 
     Agent(int id, String name, AgentImplementation implementation, AgentType type, AgentProgram program,
             Mission mission) {
@@ -97,9 +99,41 @@ public final class Agent extends SteppingAgent implements AgentContext {
         return true;
     }
 
+    /**
+     * The agent's program is over for a reason outside it: the agent dies with {@code cause} as if
+     * its program had thrown it, in a slice of its own, so that it fires its countermeasures and leaves
+     * every block as any failed agent does, the barriers it was counted in no longer waiting for it.
+     * For a program that runs elsewhere (a deployed agent's, whose container is lost): a parked agent
+     * (at a barrier, in a wait, a sleep, a blocked entry) is woken for it now, one whose slice runs
+     * dies when the slice ends, or at its next park. The first cause given counts. Any thread.
+     *
+     * <p><b>Memory consistency effects.</b> The cause is written before the pending ticket is read,
+     * and the slice reads it after its park's compare-and-set: either this call finds the park's
+     * ticket and ends it, or the slice finds the cause and ends its own park.
+     */
+    public void failFromOutside(Throwable cause) {
+        if (failedFromOutside == null) {
+            failedFromOutside = cause;
+        }
+        if (finished || halted()) {
+            return;
+        }
+        mission.outsideWakeUpStarted();
+        try {
+            unpark(pendingTicket());
+        } finally {
+            mission.outsideWakeUpEnded();
+        }
+    }
+
     /** The slice of a running agent: its program until it suspends or finishes, then where it goes. */
     private void runProgram() {
         stepsThisSlice = 0;
+        Throwable outside = failedFromOutside;
+        if (outside != null) {
+            die(outside);
+            return;
+        }
         try {
             do {
                 suspended = false;
@@ -124,6 +158,9 @@ public final class Agent extends SteppingAgent implements AgentContext {
             mission.countSchedule();
             run.reschedule();
             mission.scheduler().schedule(this);
+        } else if (failedFromOutside != null) {
+            // Failed from outside while the slice ran: the park just made may be one nobody ends.
+            unpark(pendingTicket());
         }
     }
 

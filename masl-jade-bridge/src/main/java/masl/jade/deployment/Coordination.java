@@ -20,6 +20,7 @@ import masl.runtime.AgentImplementation;
 import masl.runtime.AgentProgram;
 import masl.runtime.DeployedPrograms;
 import masl.runtime.EntryDefinition;
+import masl.runtime.Mission;
 import masl.runtime.MissionProgram;
 import masl.runtime.RemotePrimitiveException;
 import masl.runtime.descriptor.AgentType;
@@ -51,6 +52,7 @@ public final class Coordination {
     /** Why each container is gone, by the proxy ids of its agents. */
     private final Map<Integer, String> lost = new ConcurrentHashMap<>();
     private volatile List<AgentImplementation> agents = List.of();
+    private volatile Mission mission;
     /** The outbox of each deployed agent's container, by proxy id, and by wire. */
     private final Map<Integer, Outbox> outboxOf = new ConcurrentHashMap<>();
     private final Map<Wire, Outbox> outboxOfWire = new IdentityHashMap<>();
@@ -110,9 +112,13 @@ public final class Coordination {
         return named.implementationOf(proxyId, type, made, deployed);
     }
 
-    /** The mission's agents' implementations, by proxy id: what requests naming agents mean here. */
-    public void agents(List<AgentImplementation> implementations) {
+    /**
+     * The mission's agents' implementations, by proxy id: what requests naming agents mean here; and
+     * the mission that runs them, which fails those whose container is lost.
+     */
+    public void agents(Mission mission, List<AgentImplementation> implementations) {
         this.agents = List.copyOf(implementations);
+        this.mission = mission;
     }
 
     /**
@@ -166,11 +172,17 @@ public final class Coordination {
     }
 
     /**
-     * The container of the agents {@code proxyIds} is gone ({@code why}): their steps and the calls
-     * waiting for it throw, so those agents fail and the others go on.
+     * The container of the agents {@code proxyIds} is gone ({@code why}): those agents fail and the
+     * others go on. A step in flight and a call waiting for the container throw; an agent whose step
+     * is suspended in the mission (at a barrier, in a wait, a sleep, a blocked entry) is failed by
+     * the mission now, which wakes it to die, so that nothing waits for it.
      */
     public void lose(List<Integer> proxyIds, String why) {
         proxyIds.forEach(id -> lost.put(id, why));
+        Mission running = mission;
+        if (running != null) {
+            proxyIds.forEach(id -> running.agentOf(agents.get(id)).failFromOutside(new ContainerLostException(why)));
+        }
     }
 
     Blocks blocks() {

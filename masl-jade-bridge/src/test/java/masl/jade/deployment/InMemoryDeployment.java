@@ -38,8 +38,14 @@ public final class InMemoryDeployment {
      */
     public static Run run(Supplier<MissionProgram> program, Map<String, String> containerOfAgent, Duration timeout)
             throws InterruptedException {
+        return run(program, containerOfAgent, Trace.NONE, new DeployedInMemory.Wires(), timeout);
+    }
+
+    /** As {@link #run(Supplier, Map, Duration)}, recording to {@code trace}, over {@code wires}, which the test may cut. */
+    public static Run run(Supplier<MissionProgram> program, Map<String, String> containerOfAgent, Trace trace,
+            DeployedInMemory.Wires wires, Duration timeout) throws InterruptedException {
         DeployedInMemory.Run run = DeployedInMemory.run(program, containerOfAgent, InMemoryDeployment::newAgent,
-                TestPrograms::type, Trace.NONE, timeout);
+                TestPrograms::type, trace, wires, timeout);
         return new Run(run.outcome(), run.messagesFromContainers(), run.messagesToContainers());
     }
 

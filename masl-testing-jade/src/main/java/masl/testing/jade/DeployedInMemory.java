@@ -12,10 +12,12 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import masl.jade.deployment.Coordination;
@@ -97,6 +99,26 @@ public final class DeployedInMemory implements MissionPlatform {
     }
 
     /**
+     * The wires between a mission and its containers, which a test may cut while the mission runs, as
+     * the death of a container's JVM does: nothing goes either way any more, and the mission learns
+     * that the container is gone, as its coordinator would from JADE.
+     */
+    public static final class Wires {
+        private final Set<String> cut = ConcurrentHashMap.newKeySet();
+        private volatile Consumer<String> lose = container -> { };
+
+        /** Cuts the wires of {@code container}; its agents fail with a cause naming it. */
+        public void cut(String container) {
+            cut.add(container);
+            lose.accept(container);
+        }
+
+        private boolean carry(String container) {
+            return !cut.contains(container);
+        }
+    }
+
+    /**
      * Runs a mission of {@code program} (called once for each side) whose agents {@code containerOfAgent}
      * names run their programs in those containers, each joined to the mission by wires of its own;
      * every side makes the agents' objects with {@code implementations}, of the types {@code types} gives.
@@ -104,6 +126,13 @@ public final class DeployedInMemory implements MissionPlatform {
     public static Run run(Supplier<MissionProgram> program, Map<String, String> containerOfAgent,
             MissionProgram.ImplementationFactory implementations, Function<MissionProgram.AgentSpec, AgentType> types,
             Trace trace, Duration timeout) throws InterruptedException {
+        return run(program, containerOfAgent, implementations, types, trace, new Wires(), timeout);
+    }
+
+    /** Runs a mission as {@link #run(Supplier, Map, MissionProgram.ImplementationFactory, Function, Trace, Duration)}, over {@code wires}. */
+    public static Run run(Supplier<MissionProgram> program, Map<String, String> containerOfAgent,
+            MissionProgram.ImplementationFactory implementations, Function<MissionProgram.AgentSpec, AgentType> types,
+            Trace trace, Wires wires, Duration timeout) throws InterruptedException {
         AtomicInteger messages = new AtomicInteger();
         AtomicInteger answers = new AtomicInteger();
         ExecutorService toMission = Executors.newSingleThreadExecutor();
@@ -111,7 +140,7 @@ public final class DeployedInMemory implements MissionPlatform {
         AtomicReference<Mission> running = new AtomicReference<>();
         Map<String, DeployedTeam> teams = new HashMap<>();
         Map<String, ExecutorService> toContainers = new HashMap<>();
-        Map<String, Wire> wires = new HashMap<>();
+        Map<String, Wire> wireOf = new HashMap<>();
         try {
             for (String container : new TreeSet<>(containerOfAgent.values())) {
                 Set<String> here = new HashSet<>();
@@ -122,20 +151,24 @@ public final class DeployedInMemory implements MissionPlatform {
                 });
                 teams.put(container, new DeployedTeam(program.get(), here, implementations, message -> {
                     messages.incrementAndGet();
-                    toMission.execute(() -> mission.get().receive(overTheWire(message)));
+                    if (wires.carry(container)) {
+                        toMission.execute(() -> mission.get().receive(overTheWire(message)));
+                    }
                 }));
                 ExecutorService toContainer = Executors.newSingleThreadExecutor();
                 toContainers.put(container, toContainer);
                 // One wire per container, as over JADE: its agents' messages go together.
-                wires.put(container, message -> {
+                wireOf.put(container, message -> {
                     answers.incrementAndGet();
-                    toContainer.execute(() -> teams.get(container).receive(overTheWire(message)));
+                    if (wires.carry(container)) {
+                        toContainer.execute(() -> teams.get(container).receive(overTheWire(message)));
+                    }
                 });
             }
             MissionProgram here = program.get();
             List<String> names = here.agents().stream().map(MissionProgram.AgentSpec::name).toList();
             Coordination coordination = new Coordination(Coordination.mainOf(program.get(), implementations),
-                    proxyId -> wires.get(containerOfAgent.get(names.get(proxyId))),
+                    proxyId -> wireOf.get(containerOfAgent.get(names.get(proxyId))),
                     text -> running.get().journal().append(text));
             mission.set(coordination);
             List<AgentImplementation> created = new ArrayList<>();
@@ -149,7 +182,9 @@ public final class DeployedInMemory implements MissionPlatform {
                 return agent;
             });
             running.set(builder.build());
-            coordination.agents(created);
+            coordination.agents(running.get(), created);
+            wires.lose = container -> coordination.lose(names.stream().filter(name -> container.equals(
+                    containerOfAgent.get(name))).map(names::indexOf).toList(), "the container " + container + " is gone");
             return new Run(running.get().run(timeout), messages.get(), answers.get());
         } finally {
             teams.values().forEach(DeployedTeam::close);
