@@ -68,15 +68,28 @@ public class Label {
         });
     }
 
+    /**
+     * Counts a completion and runs its store. A store that fails (its owner's state is in a JVM that
+     * is gone) still counts the call, so that no one waits for ever on {@link #isFinished}; the failure
+     * completes the future {@link #register} gave back.
+     */
     private void completed(long registeredIn, Runnable store) {
+        RuntimeException failure = null;
         synchronized (this) {
             if (registeredIn != generation) {
                 return;
             }
-            store.run();
             pending--;
+            try {
+                store.run();
+            } catch (RuntimeException e) {
+                failure = e;
+            }
         }
         changes.advance();
+        if (failure != null) {
+            throw failure;
+        }
     }
 
     /** {@code l.isFinished()} / {@code isFinished(l)}: every registered invocation has completed. Zero duration. */

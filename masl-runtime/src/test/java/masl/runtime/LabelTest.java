@@ -95,6 +95,17 @@ class LabelTest {
     }
 
     @Test
+    void aStoreThatFailsStillCountsTheCallAndFailsTheAwait() {
+        Label l = new Label(new ChangeEpoch());
+        CompletableFuture<Integer> call = new CompletableFuture<>();
+        CompletableFuture<Integer> awaited = l.register(call, v -> {
+            throw new IllegalStateException("the owner's container is gone");
+        });
+        call.complete(5);
+        assertEquals(List.of(true, true), List.of(l.isFinished(), awaited.isCompletedExceptionally()));
+    }
+
+    @Test
     void aCompletionAfterFreeIsIgnoredButStillEndsTheAwait() {
         Label l = new Label(new ChangeEpoch());
         CompletableFuture<Integer> call = new CompletableFuture<>();
