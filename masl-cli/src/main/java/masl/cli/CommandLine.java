@@ -24,12 +24,13 @@ final class CommandLine {
             "run", Set.of("--agent-path", "--threads", "--quiet", "--seed", "--timeout", "--call-timeout", "--trace",
                     "--trace-limit", "--platform", "--main-host", "--main-port", "--sim", "--out", "--place", "--port",
                     "--deploy", "--secret-file", "--no-cache"),
-            "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout", "--secret-file"),
+            "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout", "--secret-file",
+                    "--serve"),
             "timeline", Set.of("-o"),
             "lsp", Set.of("--agent-path"));
     /** A size: digits, then a unit K, M or G, with or without {@code iB} or {@code B}. */
     private static final Pattern SIZE = Pattern.compile("([0-9]+)(?i:([KMG])(?:i?B)?)?");
-    private static final Set<String> FLAGS = Set.of("--threads", "--quiet", "--no-cache");
+    private static final Set<String> FLAGS = Set.of("--threads", "--quiet", "--no-cache", "--serve");
     /**
      * The longest {@code --timeout}: ten years, within the nanosecond arithmetic of deadlines
      * ({@code Long.MAX_VALUE} ns is 292 years), and longer than any mission.
@@ -45,6 +46,8 @@ final class CommandLine {
     /** No progress lines on standard error ({@link Progress}). */
     boolean quiet;
     boolean noCache;
+    /** {@code masl container} serves one mission after another ({@code --serve}). */
+    boolean serve;
     Long seed;
     Long timeoutSeconds;
     Long callTimeoutMillis;
@@ -94,6 +97,8 @@ final class CommandLine {
                     line.threads = true;
                 } else if (name.equals("--no-cache")) {
                     line.noCache = true;
+                } else if (name.equals("--serve")) {
+                    line.serve = true;
                 } else {
                     line.quiet = true;
                 }

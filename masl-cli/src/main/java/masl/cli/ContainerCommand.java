@@ -1,5 +1,6 @@
 package masl.cli;
 
+import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -26,11 +27,19 @@ import masl.runtime.descriptor.DescriptorLoader;
  * It obeys only the platform's coordinator, and only messages signed with the secret {@code masl run}
  * wrote to {@code --secret-file} (read when the coordinator first writes); each message refused is one
  * line on standard error.
+ * <p>With {@code --serve} it serves one mission after another, as a robot's runtime does: once a
+ * mission ended (or was lost), it waits until the secret file holds another mission's secret, which a
+ * new {@code masl run} writes once its platform is up, joins that platform, and so on; a mission that
+ * fails here is said in its line and the next is served. {@code --timeout} then bounds each mission,
+ * the wait for it included, and the main container is waited for that long too; it exits 2 once a
+ * mission did not end within it, and ends otherwise when stopped (SIGTERM, Ctrl-C).
  */
 final class ContainerCommand {
 
     private static final long JOIN_SECONDS = 30;
     private static final Duration NO_TIMEOUT = Duration.ofDays(3650);
+    /** How often a serving container looks for the next mission's secret. */
+    private static final long SECRET_POLL_MILLIS = 100;
 
     private final PrintStream out;
     private final PrintStream err;
@@ -49,39 +58,131 @@ final class ContainerCommand {
         }
         DescriptorLoader descriptors = new DescriptorLoader(AgentPath.parse(line.agentPath));
         Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
+        MissionSecret.Source secret = MissionSecret.Source.file(line.secretFile != null ? Path.of(line.secretFile)
+                : SecretFile.defaultFor(Path.of(""), line.mainPort));
+        MissionSecret previous = null;
+        while (true) {
+            Served served = serve(line, descriptors, secret, timeout, previous);
+            if (!line.serve || served.last()) {
+                return served.status();
+            }
+            previous = served.secret();
+        }
+    }
+
+    /**
+     * What one mission left: the status of a container that served it alone, the secret of that
+     * mission (null if none could be had), and whether no further mission can be served.
+     */
+    private record Served(int status, MissionSecret secret, boolean last) {
+    }
+
+    /**
+     * Serves one mission, at most {@code timeout} from now: joins the platform (serving: once the
+     * secret file holds a secret other than {@code previous}, the last mission's), hosts what the
+     * coordinator places here, and waits for the mission's end.
+     */
+    private Served serve(CommandLine line, DescriptorLoader descriptors, MissionSecret.Source secret, Duration timeout,
+            MissionSecret previous) {
         long deadline = System.nanoTime() + timeout.toNanos();
-        try (ContainerTranslator translator = new ContainerTranslator(AgentPath.parse(line.agentPath));
-                MaslContainer container = join(line, descriptors, translator)) {
-            if (container.awaitBodies(timeout)) {
-                err.println(container.readiness());
-                err.flush();
+        try (ContainerTranslator translator = new ContainerTranslator(AgentPath.parse(line.agentPath))) {
+            if (line.serve && !awaitNewSecret(secret, previous, deadline)) {
+                return new Served(noMission(line, timeout), null, true);
             }
-            boolean ended = container.awaitMissionEnd(Duration.ofNanos(Math.max(0, deadline - System.nanoTime())));
-            if (!ended) {
-                err.println("masl: container " + line.containerName + ": no mission ended within " + timeout.toSeconds()
-                        + " s");
-                return Masl.MISSION_FAILED;
+            MaslContainer container = join(line, descriptors, secret, translator,
+                    line.serve ? deadline : System.nanoTime() + Duration.ofSeconds(JOIN_SECONDS).toNanos());
+            Served served;
+            try {
+                served = awaitEnd(line, container, timeout, deadline);
+            } finally {
+                out.flush();
+                if (!leave(line, container)) {
+                    served = new Served(Masl.MISSION_FAILED, container.missionSecret().orElse(null), !line.serve);
+                }
             }
-            if (container.unhosted().isPresent()) {
-                err.println("masl: " + container.unhosted().get());
-                return Masl.MISSION_FAILED;
-            }
-            if (container.lostPlatform().isPresent()) {
-                err.println("masl: container " + line.containerName + ": " + container.lostPlatform().get()
-                        + (container.hostedAgents().isEmpty() ? "" : "; its agents were stopped"));
-                return Masl.MISSION_FAILED;
-            }
-            out.println("masl-ended hosted " + String.join(",", container.hostedAgents()));
-            return Masl.OK;
+            return served.secret() != null ? served : new Served(served.status(), readOrNull(secret), served.last());
         } catch (JadeException cannotJoin) {
             err.println("masl: container " + line.containerName + ": " + cannotJoin.getMessage());
-            return Masl.MISSION_FAILED;
+            return new Served(Masl.MISSION_FAILED, null, true);
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
-            return Masl.MISSION_FAILED;
+            return new Served(Masl.MISSION_FAILED, null, true);
         } finally {
             out.flush();
+            err.flush();
         }
+    }
+
+    /** Says that the container's bodies are placed, waits for the mission's end, and says how it ended. */
+    private Served awaitEnd(CommandLine line, MaslContainer container, Duration timeout, long deadline)
+            throws InterruptedException {
+        if (container.awaitBodies(timeout)) {
+            err.println(container.readiness());
+            err.flush();
+        }
+        boolean ended = container.awaitMissionEnd(Duration.ofNanos(Math.max(0, deadline - System.nanoTime())));
+        MissionSecret served = container.missionSecret().orElse(null);
+        if (!ended) {
+            return new Served(noMission(line, timeout), served, true);
+        }
+        if (container.unhosted().isPresent()) {
+            err.println("masl: " + container.unhosted().get());
+            return new Served(Masl.MISSION_FAILED, served, false);
+        }
+        if (container.lostPlatform().isPresent()) {
+            err.println("masl: container " + line.containerName + ": " + container.lostPlatform().get()
+                    + (container.hostedAgents().isEmpty() ? "" : "; its agents were stopped"));
+            return new Served(Masl.MISSION_FAILED, served, false);
+        }
+        out.println("masl-ended hosted " + String.join(",", container.hostedAgents()));
+        return new Served(Masl.OK, served, false);
+    }
+
+    /** Closes the container; false, said in one line, if JADE did not end as it should. */
+    private boolean leave(CommandLine line, MaslContainer container) {
+        try {
+            container.close();
+            return true;
+        } catch (JadeException unended) {
+            err.println("masl: container " + line.containerName + ": " + unended.getMessage());
+            return false;
+        }
+    }
+
+    private int noMission(CommandLine line, Duration timeout) {
+        err.println("masl: container " + line.containerName + ": no mission ended within " + timeout.toSeconds() + " s");
+        return Masl.MISSION_FAILED;
+    }
+
+    /**
+     * The secret in the file now, or null if it holds none: a container its coordinator never wrote to
+     * learns that the platform it was in is gone only once its {@code masl run} deleted the secret, or
+     * never will (killed), leaving that mission's secret behind.
+     */
+    private static MissionSecret readOrNull(MissionSecret.Source secret) {
+        try {
+            return secret.get();
+        } catch (IOException none) {
+            return null;
+        }
+    }
+
+    /**
+     * Waits until the secret file holds a secret other than {@code previous} (any, if null): that of a
+     * mission whose {@code masl run} wrote it once its platform listened, so that the platform at the
+     * container's address is that mission's and not the last one's shutting down; false if
+     * {@code deadline} passed first.
+     */
+    private static boolean awaitNewSecret(MissionSecret.Source secret, MissionSecret previous, long deadline)
+            throws InterruptedException {
+        while (System.nanoTime() - deadline < 0) {
+            MissionSecret now = readOrNull(secret);
+            if (now != null && (previous == null || !now.sameAs(previous))) {
+                return true;
+            }
+            Thread.sleep(SECRET_POLL_MILLIS);
+        }
+        return false;
     }
 
     /**
@@ -90,16 +191,13 @@ final class ContainerCommand {
      * last failure is reported in one line. The port is not probed with a bare connection: JADE
      * would log that as an error.
      */
-    private MaslContainer join(CommandLine line, DescriptorLoader descriptors, ContainerTranslator translator)
-            throws InterruptedException {
-        long deadline = System.nanoTime() + Duration.ofSeconds(JOIN_SECONDS).toNanos();
+    private MaslContainer join(CommandLine line, DescriptorLoader descriptors, MissionSecret.Source secret,
+            ContainerTranslator translator, long deadline) throws InterruptedException {
         while (true) {
             try {
                 return MaslContainer.start(JadeOptions.join(line.mainHost, line.mainPort), line.containerName,
                         descriptors::loadByClassName, descriptors.implementationClasses(),
-                        event -> out.println("masl-event " + event.getContent()), MissionSecret.Source.file(
-                                line.secretFile != null ? Path.of(line.secretFile)
-                                        : SecretFile.defaultFor(Path.of(""), line.mainPort)),
+                        event -> out.println("masl-event " + event.getContent()), secret,
                         refusal -> err.println("masl: container " + line.containerName + ": " + refusal), translator);
             } catch (JadeException notYet) {
                 if (System.nanoTime() - deadline > 0) {

@@ -41,12 +41,13 @@ final class Help {
                 "--out")));
         COMMANDS.put("container", new Command("""
                 masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
-                        [--timeout SECONDS] [--secret-file FILE]
+                        [--timeout SECONDS] [--secret-file FILE] [--serve]
                 """, "masl container --main-host HOST --main-port PORT --name CONTAINER [OPTION]...", """
                 join a JADE platform as container CONTAINER and host the bodies (the primitives) of the
                 agents a run --place puts there, their programs running in the run's JVM; and run the
-                programs of the agents a run --deploy puts there, translated here; ends with the mission
-                """, List.of("--main-host", "--name", "--agent-path", "--timeout", "--secret-file")));
+                programs of the agents a run --deploy puts there, translated here; ends with the mission,
+                or with --serve serves the next one
+                """, List.of("--main-host", "--name", "--agent-path", "--timeout", "--secret-file", "--serve")));
         COMMANDS.put("compile", new Command("""
                 masl compile FILE -d DIR [--agent-path PATH] [--quiet]
                 """, null, """
@@ -85,7 +86,7 @@ final class Help {
                 """);
         OPTIONS.put("--timeout", """
                 --timeout SECONDS   stop the mission after SECONDS (default: no limit); for container, stop
-                                    waiting for the mission's end after SECONDS
+                                    waiting for the mission's end after SECONDS (with --serve: for each mission)
                 """);
         OPTIONS.put("--call-timeout", """
                 --call-timeout MS   a primitive running longer than MS milliseconds gives its caller its default
@@ -145,6 +146,11 @@ final class Help {
                 """);
         OPTIONS.put("--out", """
                 --out DIR           with --sim: where trajectories, events, trace, journal and picture go
+                """);
+        OPTIONS.put("--serve", """
+                --serve             for container: once a mission ended, join the platform of the next one
+                                    at the same address (a new masl run, a new secret in --secret-file)
+                                    and serve it too, until stopped
                 """);
         OPTIONS.put("--name", """
                 --name CONTAINER    the name the container takes on the platform, as --place names it

@@ -179,6 +179,11 @@ final class ContainerHost extends Agent {
         return unhosted;
     }
 
+    /** The mission's secret, once a control message confirmed it; null before. */
+    MissionSecret secret() {
+        return channel.secret();
+    }
+
     /** The names of the bodies the coordinator placed here. */
     List<String> hosted() {
         return List.copyOf(hosted);

@@ -23,7 +23,7 @@ import masl.runtime.descriptor.AgentType;
  * ({@code masl container --main-host H --main-port P --name C}): the programs run in the
  * coordinator's JVM ({@link JadeLauncher#place}), the primitives here. It waits for the
  * coordinator, hosts the bodies it asks for, and its mission ends when the coordinator says so.
- * It serves one mission: close it once that has ended. The coordinator's end of the mission waits
+ * It serves one mission: close it once that has ended (and start another for the next mission). The coordinator's end of the mission waits
  * (up to 10 s) for the containers it ended to leave the platform.
  *
  * <pre>{@code
@@ -140,6 +140,16 @@ public final class MaslContainer implements AutoCloseable {
      */
     public Optional<String> unhosted() {
         return Optional.ofNullable(host.unhosted());
+    }
+
+    /**
+     * The secret of the mission this container served, once a control message of its coordinator
+     * bore it; empty before. A container serving one mission after another ({@code masl container
+     * --serve}) joins the next platform only once the secret file holds another secret: until then
+     * the platform at its address is the one whose mission just ended.
+     */
+    public Optional<MissionSecret> missionSecret() {
+        return Optional.ofNullable(host.secret());
     }
 
     /** The agents whose bodies the coordinator placed in this container, in its order. */

@@ -88,6 +88,14 @@ public final class MissionSecret {
     }
 
     /**
+     * Whether {@code other} has the same bits (compared in constant time): the same mission's secret,
+     * read again. Not {@code equals}, lest a secret land in a hash table and its hash code in a log.
+     */
+    public boolean sameAs(MissionSecret other) {
+        return MessageDigest.isEqual(key.getEncoded(), other.key.getEncoded());
+    }
+
+    /**
      * Signs {@code message}, the {@code sequence}th message {@code sender} sends {@code receiver}
      * (local names): sets {@value #SEQUENCE} and {@value #PARAMETER}.
      */
