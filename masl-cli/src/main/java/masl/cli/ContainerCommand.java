@@ -138,10 +138,17 @@ final class ContainerCommand {
         return new Served(Masl.OK, served, false);
     }
 
-    /** Closes the container; false, said in one line, if JADE did not end as it should. */
+    /**
+     * Closes the container (serving: without waiting for JADE's threads, which the next container of
+     * this JVM reuses); false, said in one line, if JADE did not end as it should.
+     */
     private boolean leave(CommandLine line, MaslContainer container) {
         try {
-            container.close();
+            if (line.serve) {
+                container.leave();
+            } else {
+                container.close();
+            }
             return true;
         } catch (JadeException unended) {
             err.println("masl: container " + line.containerName + ": " + unended.getMessage());

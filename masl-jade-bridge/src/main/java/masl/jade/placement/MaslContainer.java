@@ -162,4 +162,12 @@ public final class MaslContainer implements AutoCloseable {
     public void close() {
         platform.close();
     }
+
+    /**
+     * Closes the container as {@link #close()} does, without waiting for JADE's threads to end
+     * ({@link JadePlatform#leave()}): this JVM joins the next mission's platform at once.
+     */
+    public void leave() {
+        platform.leave();
+    }
 }

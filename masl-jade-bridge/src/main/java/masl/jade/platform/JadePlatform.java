@@ -43,6 +43,8 @@ public final class JadePlatform implements AutoCloseable {
 
     /** How long closing waits for the platform to end and for JADE's threads to finish. */
     public static final Duration SHUTDOWN_TIMEOUT = Duration.ofSeconds(30);
+    /** How long {@link #leave()} waits for JADE's threads to end before it leaves them. */
+    private static final Duration LEAVE_THREADS_WAIT = Duration.ofSeconds(5);
     /** How long the AMS has to end the platform before it is asked again. */
     private static final Duration AMS_RETRY_AFTER = Duration.ofSeconds(10);
 
@@ -219,6 +221,24 @@ public final class JadePlatform implements AutoCloseable {
      */
     @Override
     public void close() {
+        end(SHUTDOWN_TIMEOUT, true);
+    }
+
+    /**
+     * Ends this container as {@link #close()} does, but waits for JADE's threads to end for
+     * {@link #LEAVE_THREADS_WAIT} only, and leaves those still there: for a JVM that joins the next
+     * platform at once (a container serving one mission after another). JADE 4.3 keeps its message
+     * delivery threads, and gives them to the JVM's next container, once its platform's shutdown
+     * removed a container that was never placed (seen every time in a serving container, not
+     * explained); waiting 30 s for them would only delay every later mission.
+     *
+     * @throws JadeException if the container did not end within {@link #SHUTDOWN_TIMEOUT}
+     */
+    public void leave() {
+        end(LEAVE_THREADS_WAIT, false);
+    }
+
+    private void end(Duration threadsWithin, boolean threadsMustEnd) {
         synchronized (LIFECYCLE) {
             if (closed) {
                 return;
@@ -232,8 +252,8 @@ public final class JadePlatform implements AutoCloseable {
                     killContainer();
                 }
                 if (last) {
-                    List<Thread> left = JadeThreads.awaitNone(SHUTDOWN_TIMEOUT);
-                    if (!left.isEmpty()) {
+                    List<Thread> left = JadeThreads.awaitNone(threadsWithin);
+                    if (!left.isEmpty() && threadsMustEnd) {
                         throw new JadeException("JADE threads still alive after shutdown: " + left);
                     }
                 }
