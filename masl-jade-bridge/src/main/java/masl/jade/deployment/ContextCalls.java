@@ -101,8 +101,9 @@ final class ContextCalls {
                 ctx.setAcceptState(text(request, "state"));
                 return text(ctx.getAcceptState());
             case "getAcceptState": {
-                int of = request.get("agent").intValue();
-                return text(of == id ? ctx.getAcceptState() : ctx.getAcceptState(agent(request, "agent")));
+                // "of", not "agent": every call names its caller as "agent".
+                int of = request.get("of").intValue();
+                return text(of == id ? ctx.getAcceptState() : ctx.getAcceptState(agent(request, "of")));
             }
             case "waitFor": {
                 long ms = request.get("ms").longValue();

@@ -462,12 +462,12 @@ final class RemoteContext implements AgentContext, Values.Labels {
 
     @Override
     public String getAcceptState() {
-        return call("getAcceptState", JSON.objectNode().put("agent", id)).textValue();
+        return call("getAcceptState", JSON.objectNode().put("of", id)).textValue();
     }
 
     @Override
     public String getAcceptState(AgentImplementation agent) {
-        return call("getAcceptState", JSON.objectNode().put("agent", proxyId(agent))).textValue();
+        return call("getAcceptState", JSON.objectNode().put("of", proxyId(agent))).textValue();
     }
 
     @Override
