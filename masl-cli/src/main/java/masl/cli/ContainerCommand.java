@@ -72,7 +72,7 @@ final class ContainerCommand {
 
     /**
      * What one mission left: the status of a container that served it alone, the secret of that
-     * mission (null if none could be had), and whether no further mission can be served.
+     * mission (null if none is known), and whether no further mission can be served.
      */
     private record Served(int status, MissionSecret secret, boolean last) {
     }
@@ -86,7 +86,8 @@ final class ContainerCommand {
             MissionSecret previous) {
         long deadline = System.nanoTime() + timeout.toNanos();
         try (ContainerTranslator translator = new ContainerTranslator(AgentPath.parse(line.agentPath))) {
-            if (line.serve && !awaitNewSecret(secret, previous, deadline)) {
+            MissionSecret joinedUnder = line.serve ? awaitNewSecret(secret, previous, deadline) : null;
+            if (line.serve && joinedUnder == null) {
                 return new Served(noMission(line, timeout), null, true);
             }
             MaslContainer container = join(line, descriptors, secret, translator,
@@ -100,7 +101,7 @@ final class ContainerCommand {
                     served = new Served(Masl.MISSION_FAILED, container.missionSecret().orElse(null), !line.serve);
                 }
             }
-            return served.secret() != null ? served : new Served(served.status(), readOrNull(secret), served.last());
+            return served.secret() != null ? served : new Served(served.status(), joinedUnder, served.last());
         } catch (JadeException cannotJoin) {
             err.println("masl: container " + line.containerName + ": " + cannotJoin.getMessage());
             return new Served(Masl.MISSION_FAILED, null, true);
@@ -161,11 +162,7 @@ final class ContainerCommand {
         return Masl.MISSION_FAILED;
     }
 
-    /**
-     * The secret in the file now, or null if it holds none: a container its coordinator never wrote to
-     * learns that the platform it was in is gone only once its {@code masl run} deleted the secret, or
-     * never will (killed), leaving that mission's secret behind.
-     */
+    /** The secret in the file now, or null if it holds none. */
     private static MissionSecret readOrNull(MissionSecret.Source secret) {
         try {
             return secret.get();
@@ -177,19 +174,20 @@ final class ContainerCommand {
     /**
      * Waits until the secret file holds a secret other than {@code previous} (any, if null): that of a
      * mission whose {@code masl run} wrote it once its platform listened, so that the platform at the
-     * container's address is that mission's and not the last one's shutting down; false if
+     * container's address is that mission's and not the last one's shutting down. The secret, which
+     * stands for that mission after it even if its coordinator never writes here; null if
      * {@code deadline} passed first.
      */
-    private static boolean awaitNewSecret(MissionSecret.Source secret, MissionSecret previous, long deadline)
+    private static MissionSecret awaitNewSecret(MissionSecret.Source secret, MissionSecret previous, long deadline)
             throws InterruptedException {
         while (System.nanoTime() - deadline < 0) {
             MissionSecret now = readOrNull(secret);
             if (now != null && (previous == null || !now.sameAs(previous))) {
-                return true;
+                return now;
             }
             Thread.sleep(SECRET_POLL_MILLIS);
         }
-        return false;
+        return null;
     }
 
     /**
