@@ -31,7 +31,12 @@ final class StandIn extends AgentProgram {
 
     /**
      * The calls after which generated code returns from its step when they answer false
-     * ({@code if (!ctx.stepBoundary()) return;}): boundaries, waits and sleeps.
+     * ({@code if (!ctx.stepBoundary()) return;}): boundaries, waits and sleeps. No label request
+     * ({@code label-…}) ends a step: waiting on a label is a busy-wait ({@code while
+     * (!isFinished(l)) {}}, each iteration a {@code busyWaitIteration}), and a labelled synchronous
+     * call ends in an {@code await} of the call's future, both listed. An {@code enter} that answers
+     * {@code WAITING} ends the step too, but answers a name, not false, and is not listed: it is
+     * answered, and the container ends its step.
      */
     private static final Set<String> SUSPENDING = Set.of("stepBoundary", "loopIteration", "busyWaitIteration",
             "endOfChild", "endOfSequence", "leave", "endReaction", "resumeInterrupted", "sleep", "await", "waitFor");
