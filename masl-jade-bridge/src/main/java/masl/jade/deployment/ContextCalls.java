@@ -182,7 +182,7 @@ final class ContextCalls {
         Values.Labels labels = coordination.labels().of(agent, ctx);
         long call = request.path("call").longValue();
         UnaryOperator<Object> remote = value -> Values.fromJson(
-                coordination.apply(agent.id(), call, Values.toJson(value, labels)), agents, labels);
+                agent.runInStep(ctx, call, Values.toJson(value, labels)).get("value"), agents, labels);
         return switch (op) {
             case "get" -> Values.toJson(variable.get(), labels);
             case "set" -> {

@@ -144,7 +144,10 @@ public final class Coordination {
 
     private boolean waitsForTheMission(JsonNode message) {
         String kind = message.path("kind").asText();
-        return ("call".equals(kind) || "yield".equals(kind)) && standIns.containsKey(message.path("agent").intValue());
+        // A step that ran code for the mission waits for the answer to its request again.
+        boolean waits = "call".equals(kind) || "yield".equals(kind)
+                || "ran".equals(kind) && message.path("inStep").booleanValue();
+        return waits && standIns.containsKey(message.path("agent").intValue());
     }
 
     private void take(ObjectNode message) {
@@ -293,14 +296,35 @@ public final class Coordination {
         long number = runNumbers.incrementAndGet();
         CompletableFuture<ObjectNode> answer = new CompletableFuture<>();
         runs.put(number, new Run(proxyId, answer));
-        ObjectNode ran;
         try {
             // The container runs it while the agent waits for the mission: it goes at once.
             outbox(proxyId).now(request.put("run", number).put("agent", proxyId));
-            ran = awaitRun(proxyId, answer);
+            return outcome(awaitRun(proxyId, answer));
         } finally {
             runs.remove(number);
         }
+    }
+
+    /**
+     * Has agent {@code proxyId}'s step, which waits in its container for the request being performed
+     * on this thread, run the code {@code call} on {@code argument}: the step runs it, and the requests
+     * it makes meanwhile (an initialiser's {@code main.count}) come to {@code standIn} to perform, as
+     * in-process, where the runtime runs that code on the agent's thread. The answer completes the
+     * future; the agent no longer waits for the mission until then.
+     */
+    CompletableFuture<ObjectNode> runInStep(int proxyId, long call, JsonNode argument) {
+        long number = runNumbers.incrementAndGet();
+        CompletableFuture<ObjectNode> answer = new CompletableFuture<>();
+        runs.put(number, new Run(proxyId, answer));
+        answer.whenComplete((ran, failed) -> runs.remove(number));
+        Outbox outbox = outbox(proxyId);
+        outbox.now(runOf(call, argument).put("inStep", true).put("run", number).put("agent", proxyId));
+        outbox.busy(-1);
+        return answer;
+    }
+
+    /** The answer {@code ran} of a run; throws what ran there threw, named as there. */
+    static ObjectNode outcome(ObjectNode ran) {
         if (!"ran".equals(ran.path("outcome").asText())) {
             throw new RemotePrimitiveException(ran.path("class").asText(), ran.path("message").asText());
         }

@@ -100,7 +100,8 @@ public final class DeployedTeam implements AutoCloseable {
 
     private boolean letsGoOn(JsonNode message) {
         String kind = message.path("kind").asText();
-        return ("resume".equals(kind) || "answer".equals(kind)) && hosted.containsKey(message.path("agent").intValue());
+        boolean goesOn = "resume".equals(kind) || "answer".equals(kind) || inStep(message);
+        return goesOn && hosted.containsKey(message.path("agent").intValue());
     }
 
     private void take(ObjectNode message) {
@@ -108,11 +109,36 @@ public final class DeployedTeam implements AutoCloseable {
         switch (message.path("kind").textValue()) {
             case "resume" -> steps.execute(() -> step(agent, message));
             case "answer" -> agent.answered(message);
-            case "run" -> calls.execute(() -> ran(agent, message,
-                    callbacks.run(message.get("call").longValue(), message.get("argument"))));
+            case "run" -> {
+                if (inStep(message)) {
+                    // The agent's step waits for the mission and runs it: see RemoteContext#call.
+                    agent.answered(message);
+                } else {
+                    calls.execute(() -> ran(agent, message, run(message)));
+                }
+            }
             case "primitive", "read", "write" -> calls.execute(() -> ran(agent, message, named(agent, message)));
             default -> throw new IllegalArgumentException("not a message of the mission: " + message);
         }
+    }
+
+    /** Whether {@code message} asks the step that waits for the mission to run code (a shared variable's function). */
+    private static boolean inStep(JsonNode message) {
+        return "run".equals(message.path("kind").asText()) && message.path("inStep").booleanValue();
+    }
+
+    private ObjectNode run(ObjectNode request) {
+        return callbacks.run(request.get("call").longValue(), request.get("argument"));
+    }
+
+    /**
+     * Runs the code {@code request} names on the thread of the step that waits for the mission (the
+     * requests it makes are that step's), and answers; the step waits for the mission again.
+     */
+    void runInStep(RemoteContext agent, ObjectNode request) {
+        ObjectNode answer = run(request);
+        ran(agent, request, answer.put("inStep", true));
+        outbox.busy(-1);
     }
 
     private void ran(RemoteContext agent, ObjectNode request, ObjectNode answer) {

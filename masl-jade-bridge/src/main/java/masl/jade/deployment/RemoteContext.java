@@ -123,6 +123,12 @@ final class RemoteContext implements AgentContext, Values.Labels {
         request.put("kind", "call").put("agent", id).put("op", op).put("pc", program.pc());
         team.send(request);
         ObjectNode answer = team.await(answers);
+        // The mission performs the request holding a lock (a shared variable's) and has this step run
+        // the variable's function meanwhile, whose own requests to the mission nest in this one.
+        while ("run".equals(answer.path("kind").asText())) {
+            team.runInStep(this, answer);
+            answer = team.await(answers);
+        }
         completeDone(answer.get("done"));
         DeployedPrograms.jump(program, answer.get("pc").intValue());
         resumedInCall = answer.path("resumed").booleanValue();

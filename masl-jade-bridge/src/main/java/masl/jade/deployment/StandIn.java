@@ -44,6 +44,9 @@ final class StandIn extends AgentProgram {
     private final int id;
     private final AgentProgram twin;
     private final Coordination coordination;
+    /** Marks the answer of code run in the step coming in, after the requests that code made. */
+    private static final ObjectNode RAN = JsonNodeFactory.instance.objectNode();
+
     private final BlockingQueue<ObjectNode> requests = new LinkedBlockingQueue<>();
     /** The futures of calls the program made that it has not been told the end of, by call number. */
     private final Map<Long, CompletableFuture<Object>> calls = new ConcurrentHashMap<>();
@@ -106,9 +109,35 @@ final class StandIn extends AgentProgram {
                 suspended = true;
                 return;
             }
-            ObjectNode answer = JsonNodeFactory.instance.objectNode().put("kind", "answer").put("pc", pc);
-            answer.set("value", value);
-            coordination.send(id, withDone(answer));
+            answer(value);
+        }
+    }
+
+    private void answer(JsonNode value) {
+        ObjectNode answer = JsonNodeFactory.instance.objectNode().put("kind", "answer").put("pc", pc);
+        answer.set("value", value);
+        coordination.send(id, withDone(answer));
+    }
+
+    /**
+     * Runs the program's code {@code call} on {@code argument} (a shared variable's initialiser or
+     * update function) in the step that waits in its container for the request being performed, and
+     * performs the requests that code makes meanwhile on this thread, which may hold the variable's
+     * lock: the code's answer ({@code ran}), or what it threw.
+     */
+    ObjectNode runInStep(AgentContext ctx, long call, JsonNode argument) {
+        CompletableFuture<ObjectNode> ran = coordination.runInStep(id, call, argument);
+        ran.whenComplete((answer, failed) -> requests.add(RAN));
+        while (true) {
+            ObjectNode request = coordination.await(id, requests);
+            if (request == RAN) {
+                return Coordination.outcome(ran.join());
+            }
+            if (!"call".equals(request.path("kind").textValue())) {
+                throw new IllegalStateException("agent " + id + "'s step ended while it ran code for the mission");
+            }
+            pc = request.get("pc").intValue();
+            answer(coordination.calls().perform(this, ctx, request));
         }
     }
 
