@@ -275,7 +275,7 @@ public final class Coordination {
         return ContextCalls.RAN;
     }
 
-    /** Applies the update function {@code call} of agent {@code proxyId}'s program to {@code value} in its container: its result, as {@link Values} writes it. */
+    /** Applies the function {@code call} of agent {@code proxyId}'s program (a label's store) to {@code value} in its container: its result, as {@link Values} writes it. */
     JsonNode apply(int proxyId, long call, JsonNode value) {
         return ask(proxyId, runOf(call, value)).get("value");
     }

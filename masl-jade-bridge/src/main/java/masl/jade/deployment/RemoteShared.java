@@ -8,8 +8,10 @@ import masl.runtime.scheduling.ChangeEpoch;
 
 /**
  * A shared variable as a deployed agent's program sees it: every read and write is a request to the
- * mission, which owns the wave's copy; an update's function runs here, asked by the mission while it
- * holds the variable's lock, so that no other write comes in between, as in-process.
+ * mission, which owns the wave's copy; an update's function and the initialiser run here, in the step
+ * that waits for the mission's answer, asked by the mission while it holds the variable's lock, so that
+ * no other write comes in between, as in-process; the requests they make (an initialiser's {@code
+ * main.count}) nest in the one the step waits for.
  */
 final class RemoteShared<T> extends SharedVariable<T> {
 
