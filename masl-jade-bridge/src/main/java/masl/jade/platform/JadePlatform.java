@@ -44,7 +44,7 @@ public final class JadePlatform implements AutoCloseable {
     /** How long closing waits for the platform to end and for JADE's threads to finish. */
     public static final Duration SHUTDOWN_TIMEOUT = Duration.ofSeconds(30);
     /** How long {@link #leave()} waits for JADE's threads to end before it leaves them. */
-    private static final Duration LEAVE_THREADS_WAIT = Duration.ofSeconds(5);
+    private static final Duration LEAVE_THREADS_WAIT = Duration.ofSeconds(1);
     /** How long the AMS has to end the platform before it is asked again. */
     private static final Duration AMS_RETRY_AFTER = Duration.ofSeconds(10);
 
