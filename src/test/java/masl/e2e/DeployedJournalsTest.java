@@ -44,7 +44,7 @@ import org.junit.jupiter.api.Timeout;
 class DeployedJournalsTest {
 
     /** How often the programs whose journal depends most on the order of coordination messages run. */
-    private static final int REPEATS = 3;
+    private static final int REPEATS = 2;
     private static final Path MANUAL = Path.of("docs/manual/language.md");
     /** The manual's sections whose examples run deployed: events, primitives (countermeasures), labels, permeability. */
     private static final List<String> SECTIONS = List.of("## 8. ", "## 9. ", "## 10. ", "## 11. ");
