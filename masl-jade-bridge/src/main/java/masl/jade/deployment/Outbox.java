@@ -5,8 +5,8 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 
@@ -36,12 +36,12 @@ final class Outbox {
      */
     static final long HOLD_NANOS = TimeUnit.MILLISECONDS.toNanos(200);
 
-    /** One thread of the JVM times every outbox's held messages. */
-    private static final ScheduledExecutorService TIMER = Executors.newSingleThreadScheduledExecutor(work -> {
-        Thread thread = new Thread(work, "masl-deployed-outbox");
-        thread.setDaemon(true);
-        return thread;
-    });
+    /**
+     * One thread of the JVM times every outbox's held messages; it ends a second after its last
+     * timing, so that no thread of masl's outlives the missions of a JVM that goes on (a library
+     * user's, a serving container's between missions).
+     */
+    private static final ScheduledExecutorService TIMER = timer();
 
     private final Wire wire;
     private int busy;
@@ -49,6 +49,17 @@ final class Outbox {
     private long firstHeld;
     private long lastHeld;
     private boolean timed;
+
+    private static ScheduledExecutorService timer() {
+        ScheduledThreadPoolExecutor timer = new ScheduledThreadPoolExecutor(1, work -> {
+            Thread thread = new Thread(work, "masl-deployed-outbox");
+            thread.setDaemon(true);
+            return thread;
+        });
+        timer.setKeepAliveTime(1, TimeUnit.SECONDS);
+        timer.allowCoreThreadTimeOut(true);
+        return timer;
+    }
 
     /** @param busy how many agents of the link are busy on this side to begin with */
     Outbox(Wire wire, int busy) {
