@@ -113,6 +113,16 @@ class DeployedInJadeTest {
     }
 
     @Test
+    void aForgedEntryIsRefused() throws Exception {
+        assertForgedRefused("{\"kind\":\"call\",\"agent\":0,\"op\":\"leave\",\"pc\":3,\"block\":\"0\"}");
+    }
+
+    @Test
+    void aForgedLabelRequestIsRefused() throws Exception {
+        assertForgedRefused("{\"kind\":\"call\",\"agent\":0,\"op\":\"label-free\",\"pc\":3,\"label\":\"0.0\"}");
+    }
+
+    @Test
     void aForgedInvocationIsRefused() throws Exception {
         assertForgedRefused("{\"kind\":\"call\",\"agent\":0,\"op\":\"invoke\",\"pc\":3,\"callee\":1,"
                 + "\"primitive\":\"logln\",\"args\":[{\"string\":\"forged\"}],\"call\":1}");
