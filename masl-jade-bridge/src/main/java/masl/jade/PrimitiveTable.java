@@ -23,7 +23,7 @@ import masl.runtime.descriptor.Primitive;
  * Immutable.
  *
  * <p>Public for {@code placement}, {@code outside} and {@code external}, which bind requests and make
- * stubs through it.
+ * stubs through it, and for {@code deployment}, which runs the calls of agents in other JVMs by name.
  */
 public final class PrimitiveTable {
 
@@ -41,7 +41,7 @@ public final class PrimitiveTable {
          *
          * @throws InvocationTargetException wrapping what the primitive threw
          */
-        Object invoke(AgentImplementation target) throws InvocationTargetException {
+        public Object invoke(AgentImplementation target) throws InvocationTargetException {
             try {
                 return method.invoke(Modifier.isStatic(method.getModifiers()) ? null : target, args);
             } catch (IllegalAccessException e) {
@@ -78,6 +78,21 @@ public final class PrimitiveTable {
     /** The methods bound to the primitives, in the order of {@link #primitives()}. */
     public List<Method> methods() {
         return primitives.values().stream().map(Binding::method).toList();
+    }
+
+    /**
+     * Binds a call whose arguments are already values of the parameters' types (a deployed agent's
+     * call of an agent of this JVM, named in a mission's message).
+     *
+     * @throws IllegalArgumentException if the type has no such primitive, or not of that many arguments
+     */
+    public Call bind(String primitive, List<Object> args) {
+        Binding binding = primitives.get(primitive);
+        if (binding == null || binding.method().getParameterCount() != args.size()) {
+            throw new IllegalArgumentException(type.shortName() + " has no primitive " + primitive + " of "
+                    + args.size() + " arguments");
+        }
+        return new Call(binding.primitive(), binding.method(), args.toArray());
     }
 
     /**

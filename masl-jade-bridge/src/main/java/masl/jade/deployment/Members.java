@@ -3,7 +3,6 @@ package masl.jade.deployment;
 import java.lang.reflect.Field;
 import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
-import java.lang.reflect.Modifier;
 import java.util.List;
 import masl.jade.PrimitiveTable;
 import masl.jade.stub.StubClasses;
@@ -52,15 +51,8 @@ final class Members {
      * @throws IllegalArgumentException if the type has no such primitive, or not with those arguments
      */
     Object invoke(AgentImplementation target, String primitive, List<Object> args) {
-        Method method = methods().stream()
-                .filter(candidate -> candidate.getName().equals(primitive) && candidate.getParameterCount() == args.size())
-                .findFirst()
-                .orElseThrow(() -> new IllegalArgumentException(type.shortName() + " has no primitive " + primitive
-                        + " of " + args.size() + " arguments"));
         try {
-            return method.invoke(Modifier.isStatic(method.getModifiers()) ? null : target, args.toArray());
-        } catch (IllegalAccessException notPublic) {
-            throw new IllegalStateException(method + " is not public", notPublic);
+            return primitives.bind(primitive, args).invoke(target);
         } catch (InvocationTargetException thrown) {
             Throwable cause = thrown.getCause();
             if (cause instanceof RuntimeException unchecked) {
