@@ -76,6 +76,11 @@ public final class Distribution {
     /** The agent of each container that hosts bodies, once found; read by emitting agents' threads. */
     private final Map<String, AID> containers = new ConcurrentHashMap<>();
     private volatile Served served;
+    /**
+     * The containers that accepted what was placed in them: only their departure leaves calls to fail,
+     * and is said. One that refused may end before its refusal is read; the refusal says why.
+     */
+    private final Set<String> hosting = ConcurrentHashMap.newKeySet();
     /** The containers found gone, each said once. */
     private final Set<String> goneContainers = ConcurrentHashMap.newKeySet();
     /** The containers running deployed agents found gone, each said once. */
@@ -266,6 +271,7 @@ public final class Distribution {
                 hosted.addAll(programs);
                 throw new JadeException(cannotHost(placed.getKey(), hosted, JsonContent.failureMessage(answer.getContent())));
             }
+            hosting.add(placed.getKey());
         }
         // Every container, cleanly closed or killed: a body in the middle of a call sends nothing either.
         watch = new ContainerWatch(coordinator, containers::values);
@@ -368,7 +374,7 @@ public final class Distribution {
         if (agents.isEmpty() || !goneContainers.add(container)) {
             return;
         }
-        if (!ending) {
+        if (!ending && hosting.contains(container)) {
             // The departure itself may have been said already, from what JADE logged of it.
             System.err.println(ContainerDepartures.said(container)
                     ? "masl: calls to " + String.join(", ", agents) + ", whose container " + container
@@ -392,7 +398,7 @@ public final class Distribution {
         if (agents.isEmpty() || !goneDeployments.add(container)) {
             return;
         }
-        if (!ending) {
+        if (!ending && hosting.contains(container)) {
             // The departure itself may have been said already, from what JADE logged of it.
             System.err.println(ContainerDepartures.said(container)
                     ? "masl: the deployed agents " + String.join(", ", agents) + ", whose container " + container
