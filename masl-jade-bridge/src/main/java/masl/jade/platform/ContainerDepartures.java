@@ -11,7 +11,7 @@ import java.util.regex.Pattern;
  * words: one line per container, {@code masl: container c9 left the platform (…)}, instead of what
  * JADE says of it on the main container's standard error, in its log ({@code EOF reached}, then
  * {@code --- Node <c9> UNREACHABLE ---}) or with {@code printStackTrace} when its AMS removes the
- * container twice ({@code jade.core.NotFoundException: No container named c9 was found}). Every
+ * container twice ({@code jade.core.NotFoundException: No container named c9 was found.}, JADE 4.3's words). Every
  * coordinator hears of such a departure, a body's container as an outside agents' one; the bodies'
  * calls that now fail are said by the coordinator itself ({@code Distribution}). Uses no JADE class:
  * the {@code masl} command passes its standard error through it.
@@ -20,7 +20,7 @@ public final class ContainerDepartures {
 
     private static final Pattern UNREACHABLE = Pattern.compile("--- Node <(.+)> UNREACHABLE ---");
     private static final Pattern REMOVED_TWICE = Pattern.compile(
-            "jade\\.core\\.NotFoundException: No container named (\\S+) was found");
+            "jade\\.core\\.NotFoundException: No container named (\\S+) was found\\.?");
     /** What JADE's connection reader logs when a peer's connection ends: the departure says it. */
     private static final String CONNECTION_ENDED = "EOF reached";
 

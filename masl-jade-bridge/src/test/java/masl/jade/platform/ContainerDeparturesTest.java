@@ -14,13 +14,21 @@ class ContainerDeparturesTest {
         assertEquals(Optional.of("masl: container lab-7 left the platform (its JVM ended or its connection broke)"),
                 ContainerDepartures.inMaslWords("--- Node <lab-7> UNREACHABLE ---"));
         assertEquals(Optional.of(""), ContainerDepartures.inMaslWords(
-                "jade.core.NotFoundException: No container named lab-7 was found"));
+                "jade.core.NotFoundException: No container named lab-7 was found."));
     }
 
     @Test
     void anAmsRemovingAContainerTwiceSaysItsDepartureIfNothingElseDid() {
         assertEquals(Optional.of("masl: container lab-8 left the platform (its JVM ended or its connection broke)"),
                 ContainerDepartures.inMaslWords("jade.core.NotFoundException: No container named lab-8 was found"));
+    }
+
+    @Test
+    void jadesOwnWordsEndWithAFullStop() {
+        assertEquals(Optional.of("masl: container lab-9 left the platform (its JVM ended or its connection broke)"),
+                ContainerDepartures.inMaslWords("jade.core.NotFoundException: No container named lab-9 was found."));
+        assertEquals(Optional.of(""),
+                ContainerDepartures.inMaslWords("jade.core.NotFoundException: No container named lab-9 was found."));
     }
 
     @Test
