@@ -18,9 +18,11 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * A deployed mission loses a JVM: {@code away}'s program runs in container {@code c2} (a JVM of its
- * own), {@code stay}'s in the coordinator's. Container killed: {@code away} fails, naming the
- * container, {@code stay}'s journal is complete, the mission ends with status 2 long before its
- * timeout. Coordinator killed: the container stops its agent, says why in one line and exits 2.
+ * own), {@code stay}'s in the coordinator's. Container killed while {@code away} is parked in a
+ * sleep and {@code stay} waits for it at their block's barrier: {@code away} fails, naming the
+ * container, the barrier stops waiting for it, {@code stay} goes on to the end of its journal, the
+ * mission ends with status 2 long before its timeout and its trace is complete. Coordinator killed:
+ * the container stops its agent, says why in one line and exits 2.
  */
 @Timeout(180)
 @Tag("slow")
@@ -42,13 +44,29 @@ class DeployedContainerFaultsTest {
             }
             """;
 
+    /** {@code away} sleeps through step 5 of a lock-step in which {@code stay} says it waits. */
+    private static final String LOCK_STEP = """
+            import Default.xml as Default;
+            Default stay, away = newAgent(Default);
+            synchronous entry main (true) {
+              local int i = 0;
+              while (i < 10) {
+                i++;
+                if (i == 5) {
+                  if (.getProxyID() == 1) { .sleep(600000); } else { .logln("stay waits"); }
+                }
+              }
+              if (.getProxyID() == 0) { .logln("stay done after " + i); }
+            }
+            """;
+
     @TempDir
     Path folder;
 
     @Test
     void aKilledContainerFailsItsAgentsAndTheOthersGoOn() throws Exception {
         int port = freePort();
-        Path program = Files.writeString(folder.resolve("faults.masl"), PROGRAM);
+        Path program = Files.writeString(folder.resolve("faults.masl"), LOCK_STEP);
         File journal = folder.resolve("journal.txt").toFile();
         Path trace = folder.resolve("trace.jsonl");
         Path secret = folder.resolve("secret");
@@ -56,10 +74,10 @@ class DeployedContainerFaultsTest {
                 MaslProcess run = MaslProcess.start(journal, "run", program.toString(), "--platform", "jade", "--port",
                         String.valueOf(port), "--deploy", "away=c2", "--timeout", "120", "--secret-file", secret.toString(),
                         "--trace", trace.toString(), "--quiet")) {
-            awaitJournal(journal, "stay done\n");
+            awaitJournal(journal, "stay waits\n");
             c2.kill();
             assertEquals(2, run.awaitExit(), run.err());
-            assertEquals("stay done\n", Files.readString(journal.toPath()));
+            assertEquals("stay waits\nstay done after 10\n", Files.readString(journal.toPath()));
             assertTrue(run.err().lines().anyMatch(line -> line.equals("masl: the container c2 is gone (its JVM ended or"
                     + " died): its deployed agents away fail") || line.equals("masl: the deployed agents away, whose"
                     + " container c2 left, fail")), run.err());
