@@ -19,6 +19,17 @@ public final class DeployedPrograms {
     public record Made(EntryDefinition main, List<AgentProgram> programs, List<AgentType> types) {
     }
 
+    /**
+     * What the container of a deployed agent needs to pass its program's loop heads itself, as the
+     * runtime would pass them without doing anything but count: the place of the program's latest
+     * step, a loop's head or the case after an instruction ({@code latestStep}; an iteration of the
+     * loop at head {@code h} ran no instruction if {@code latestStep <= h}), and whether the agent's
+     * innermost block is synchronous and it active there ({@code barrierDue}), so that such an
+     * iteration meets the barrier and must come to the mission.
+     */
+    public record LoopHeads(int latestStep, boolean barrierDue) {
+    }
+
     private DeployedPrograms() {
     }
 
@@ -49,6 +60,33 @@ public final class DeployedPrograms {
     public static void resume(AgentProgram program, int pc, AgentContext ctx) {
         program.jump(pc);
         program.resume(ctx);
+    }
+
+    /**
+     * What {@code agent}'s container needs to pass its loop heads itself until something arrives that
+     * a boundary must act on, or null if its next loop head must come to the mission. Called by the
+     * agent's slice; {@code agent} is the context the mission runs the stand-in's steps against.
+     */
+    public static LoopHeads loopHeadsAtRest(AgentContext agent) {
+        return ((SteppingAgent) agent).loopHeadsAtRest();
+    }
+
+    /**
+     * {@code count} loop iterations {@code agent}'s container passed itself since its last request,
+     * its program's latest step then at {@code latestStep}: counted as the runtime counts its own.
+     * Called by the agent's slice.
+     */
+    public static void loopIterationsElsewhere(AgentContext agent, long count, int latestStep) {
+        ((SteppingAgent) agent).loopIterationsElsewhere(count, latestStep);
+    }
+
+    /**
+     * Has {@code hook} run each time an occurrence or an invocation arrives for {@code agent}: its
+     * container then brings its next loop head to the mission. Any thread runs it, the flag that the
+     * boundary reads set before.
+     */
+    public static void onBoundaryWork(Agent agent, Runnable hook) {
+        agent.onBoundaryWork(hook);
     }
 
     /** Sets {@code program}'s resumption point: the mission's runtime moved it (a reaction, a resume). */

@@ -34,6 +34,16 @@ final class IdleIterations {
         latestStep = BEFORE_EVERY_LOOP;
     }
 
+    /** Where the agent's latest step was, as {@link #endIteration} compares it: for a program that runs elsewhere. */
+    int latestStep() {
+        return latestStep;
+    }
+
+    /** Iterations ended elsewhere (a deployed agent's container), the latest step then at {@code latest}. */
+    void endedElsewhere(int latest) {
+        latestStep = latest;
+    }
+
     /** The end of an iteration of the loop whose head is the case {@code head}: true if it ran no instruction. */
     boolean endIteration(int head) {
         boolean idle = latestStep <= head;

@@ -123,6 +123,30 @@ abstract class SteppingAgent extends ServingAgent implements AgentContext {
     }
 
     /**
+     * For a program that runs elsewhere (a deployed agent's): what its loop heads need of the runtime
+     * to be passed there, with no request, while nothing arrives ({@link #onBoundaryWork}); null if
+     * the next loop head must come here. A loop head passed there is one that here would do nothing
+     * but count: no occurrence perceived, no invocation queued, no reaction underway, the mission
+     * going on, and no barrier due ({@link #idleStepDue}: the program's place of its latest step and
+     * whether its innermost block is synchronous say so there). Called by the agent's slice.
+     */
+    final DeployedPrograms.LoopHeads loopHeadsAtRest() {
+        if (reactionsUnderway || eventsPending() || invocationsQueued || halted()) {
+            return null;
+        }
+        return new DeployedPrograms.LoopHeads(iterations.latestStep(), barrierDue != null);
+    }
+
+    /**
+     * {@code count} loop iterations the program passed elsewhere ({@link #loopHeadsAtRest}), its
+     * latest step then at {@code latestStep}: counted as {@link #loopIteration} counts them.
+     */
+    final void loopIterationsElsewhere(long count, int latestStep) {
+        progress += count;
+        iterations.endedElsewhere(latestStep);
+    }
+
+    /**
      * The barrier the iteration ending here meets as an instruction of its own (§5): that of the
      * innermost block, if it is synchronous and the iteration ran no instruction; else null.
      */

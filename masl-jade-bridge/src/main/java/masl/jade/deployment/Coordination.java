@@ -119,6 +119,8 @@ public final class Coordination {
     public void agents(Mission mission, List<AgentImplementation> implementations) {
         this.agents = List.copyOf(implementations);
         this.mission = mission;
+        standIns.forEach((id, standIn) ->
+                DeployedPrograms.onBoundaryWork(mission.agentOf(agents.get(id)), standIn::boundaryWork));
     }
 
     /**
@@ -211,6 +213,14 @@ public final class Coordination {
     /** Sends {@code message} to the container of agent {@code proxyId}, whose agent it lets go on. */
     void send(int proxyId, ObjectNode message) {
         outbox(proxyId).add(message.put("agent", proxyId), -1);
+    }
+
+    /**
+     * Sends {@code message} to the container of agent {@code proxyId}, whose step runs there: with
+     * the others the outbox holds, at once if none of its agents waits for the mission.
+     */
+    void push(int proxyId, ObjectNode message) {
+        outbox(proxyId).add(message.put("agent", proxyId), 0);
     }
 
     /** Agent {@code proxyId}'s container no longer waits for the mission for it: it ended. */

@@ -64,6 +64,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
     /** This program's views of the mission's labels, by key; the labels it made are numbered here. */
     private final Map<String, RemoteLabel> labels = new ConcurrentHashMap<>();
     private final AtomicLong labelNumbers = new AtomicLong();
+    private final LoopHeads loopHeads = new LoopHeads();
 
     RemoteContext(int id, AgentProgram program, OwnPermeability own, DeployedTeam team) {
         this.id = id;
@@ -78,6 +79,11 @@ final class RemoteContext implements AgentContext, Values.Labels {
 
     AgentProgram program() {
         return program;
+    }
+
+    /** The mission's loop heads of this agent's program: what its messages say of them. */
+    LoopHeads loopHeads() {
+        return loopHeads;
     }
 
     /** An answer of the mission to this agent's request. */
@@ -121,6 +127,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
     /** Request {@code op} to the mission, answered with its value (a label's view asks the mission's label so). */
     JsonNode call(String op, ObjectNode request) {
         request.put("kind", "call").put("agent", id).put("op", op).put("pc", program.pc());
+        loopHeads.request(request);
         team.send(request);
         ObjectNode answer = team.await(answers);
         // The mission performs the request holding a lock (a shared variable's) and has this step run
@@ -130,6 +137,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
             answer = team.await(answers);
         }
         completeDone(answer.get("done"));
+        loopHeads.told(answer);
         DeployedPrograms.jump(program, answer.get("pc").intValue());
         resumedInCall = answer.path("resumed").booleanValue();
         return answer.get("value");
@@ -226,8 +234,13 @@ final class RemoteContext implements AgentContext, Values.Labels {
         return bool("stepBoundary", JSON.objectNode());
     }
 
+    /** Passed here, with no message, while nothing waits for it in the mission ({@link LoopHeads}). */
     @Override
     public boolean loopIteration() {
+        team.requireMission();
+        if (loopHeads.pass(program.pc())) {
+            return true;
+        }
         return bool("loopIteration", JSON.objectNode());
     }
 

@@ -50,6 +50,15 @@ final class StandIn extends AgentProgram {
     private final BlockingQueue<ObjectNode> requests = new LinkedBlockingQueue<>();
     /** The futures of calls the program made that it has not been told the end of, by call number. */
     private final Map<Long, CompletableFuture<Object>> calls = new ConcurrentHashMap<>();
+    /** Orders the messages to the step that say whether its loop heads are at rest, and numbers them. */
+    private final Object toStep = new Object();
+    /** The number of the latest message to the step; guarded by {@link #toStep}. */
+    private long sent;
+    /**
+     * Whether the step runs in its container, passing its loop heads there, since the latest message
+     * said they are at rest; guarded by {@link #toStep}.
+     */
+    private boolean passingLoopHeads;
     /** Whether the program waits in a call that suspended its step, confined to the step's thread. */
     private boolean suspended;
     private boolean finished;
@@ -81,14 +90,13 @@ final class StandIn extends AgentProgram {
         if (suspended) {
             // The program waits in the call that suspended it: the answer is its resumption, from pc.
             suspended = false;
-            coordination.send(id, withDone(JsonNodeFactory.instance.objectNode().put("kind", "answer")
-                    .put("value", false).put("resumed", true).put("pc", pc)));
+            toStep(ctx, JsonNodeFactory.instance.objectNode().put("kind", "answer")
+                    .put("value", false).put("resumed", true).put("pc", pc));
         } else {
-            coordination.send(id, withDone(JsonNodeFactory.instance.objectNode().put("kind", "resume").put("pc", pc)));
+            toStep(ctx, JsonNodeFactory.instance.objectNode().put("kind", "resume").put("pc", pc));
         }
         while (true) {
-            ObjectNode request = coordination.await(id, requests);
-            pc = request.get("pc").intValue();
+            ObjectNode request = taken(ctx, coordination.await(id, requests));
             if ("yield".equals(request.get("kind").textValue())) {
                 if (request.has("failed")) {
                     coordination.ended(id);
@@ -109,14 +117,60 @@ final class StandIn extends AgentProgram {
                 suspended = true;
                 return;
             }
-            answer(value);
+            answer(ctx, value);
         }
     }
 
-    private void answer(JsonNode value) {
+    private void answer(AgentContext ctx, JsonNode value) {
         ObjectNode answer = JsonNodeFactory.instance.objectNode().put("kind", "answer").put("pc", pc);
         answer.set("value", value);
-        coordination.send(id, withDone(answer));
+        toStep(ctx, answer);
+    }
+
+    /**
+     * Sends {@code message}, which lets the step go on in its container, numbered and saying whether
+     * its loop heads are at rest ({@link LoopHeads}): read after what arrived before the lock.
+     */
+    private void toStep(AgentContext ctx, ObjectNode message) {
+        synchronized (toStep) {
+            DeployedPrograms.LoopHeads heads = DeployedPrograms.loopHeadsAtRest(ctx);
+            message.put("seq", ++sent);
+            if (heads != null) {
+                message.putObject("loopHeads").put("latest", heads.latestStep()).put("barrier", heads.barrierDue());
+            }
+            passingLoopHeads = heads != null;
+            coordination.send(id, withDone(message));
+        }
+    }
+
+    /**
+     * An event or invocation arrived for the agent (any thread): if its step runs in its container
+     * passing its loop heads there, the next one comes here ({@code attend}). Otherwise the step
+     * waits for a message of the mission, which says so.
+     */
+    void boundaryWork() {
+        synchronized (toStep) {
+            if (passingLoopHeads) {
+                passingLoopHeads = false;
+                coordination.push(id, JsonNodeFactory.instance.objectNode().put("kind", "attend").put("seq", ++sent));
+            }
+        }
+    }
+
+    /**
+     * A message of the step: it waits for the mission from now on; the loop heads it passed in its
+     * container since its last request count as the runtime's own, before the request is performed.
+     */
+    private ObjectNode taken(AgentContext ctx, ObjectNode request) {
+        synchronized (toStep) {
+            passingLoopHeads = false;
+        }
+        pc = request.path("pc").intValue();
+        if (request.has("passed")) {
+            DeployedPrograms.loopIterationsElsewhere(ctx, request.get("passed").longValue(),
+                    request.get("latest").intValue());
+        }
+        return request;
     }
 
     /**
@@ -136,8 +190,7 @@ final class StandIn extends AgentProgram {
             if (!"call".equals(request.path("kind").textValue())) {
                 throw new IllegalStateException("agent " + id + "'s step ended while it ran code for the mission");
             }
-            pc = request.get("pc").intValue();
-            answer(coordination.calls().perform(this, ctx, request));
+            answer(ctx, coordination.calls().perform(this, ctx, taken(ctx, request)));
         }
     }
 

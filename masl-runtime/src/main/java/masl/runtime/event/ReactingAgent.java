@@ -63,6 +63,7 @@ public abstract class ReactingAgent extends MemberAgent {
     public final void perceive(EventOccurrence occurrence) {
         events.perceive(occurrence);
         eventsPerceived = true;
+        boundaryWorkArrived();
         // A stale ticket (the agent has woken since, or parks elsewhere) is ignored by unpark.
         long ticket = busyWaitTicket;
         if (ticket != 0) {
@@ -91,6 +92,11 @@ public abstract class ReactingAgent extends MemberAgent {
         progress++;
         redirectToNextReaction();
         return true;
+    }
+
+    /** Whether an occurrence was perceived that no boundary has taken yet. */
+    protected final boolean eventsPending() {
+        return eventsPerceived;
     }
 
     /** The end of a reaction (AgentContext): false if the program was redirected to the next one. */

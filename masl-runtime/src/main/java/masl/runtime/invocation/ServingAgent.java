@@ -119,6 +119,7 @@ public abstract class ServingAgent extends ReactingAgent {
     protected final void queue(PendingInvocation invocation) {
         invocations.add(invocation);
         invocationsQueued = true;
+        boundaryWorkArrived();
     }
 
     /** Turns the agent {@code SERVING} if it is blocked or done and something it may serve is queued. */

@@ -56,6 +56,8 @@ public abstract class ScheduledAgent implements AgentTask {
     protected boolean statementIsLoop;
     /** Whether the latest park is a {@code wait(state)}'s, the only one that makes the agent attentive. */
     protected boolean parkAttends;
+    /** Told when the agent's next boundary has work (an event, an invocation), or null: see {@link #onBoundaryWork}. */
+    private volatile Runnable boundaryWork;
 
     protected ScheduledAgent(int id, String name, AgentProgram program, Mission mission) {
         this.id = id;
@@ -173,6 +175,23 @@ public abstract class ScheduledAgent implements AgentTask {
             mission.outsideWakeUpEnded();
         });
         return false;
+    }
+
+    /**
+     * Has {@code hook} run, on the thread that brings it, each time something arrives that the
+     * agent's next boundary must act on (an occurrence perceived, an invocation queued): a program
+     * that runs elsewhere (a deployed agent's) passes its boundaries there while nothing does.
+     */
+    public final void onBoundaryWork(Runnable hook) {
+        boundaryWork = hook;
+    }
+
+    /** Something arrived that the agent's next boundary acts on: its flag is set already. */
+    protected final void boundaryWorkArrived() {
+        Runnable hook = boundaryWork;
+        if (hook != null) {
+            hook.run();
+        }
     }
 
     /** Its program is over: no slice runs it again. */

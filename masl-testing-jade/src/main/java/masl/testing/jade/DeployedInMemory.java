@@ -106,6 +106,12 @@ public final class DeployedInMemory implements MissionPlatform {
     public static final class Wires {
         private final Set<String> cut = ConcurrentHashMap.newKeySet();
         private volatile Consumer<String> lose = container -> { };
+        private volatile Mission mission;
+
+        /** The mission these wires join to its containers, once it is made (before it runs); else null. */
+        public Mission mission() {
+            return mission;
+        }
 
         /** Cuts the wires of {@code container}; its agents fail with a cause naming it. */
         public void cut(String container) {
@@ -182,6 +188,7 @@ public final class DeployedInMemory implements MissionPlatform {
                 return agent;
             });
             running.set(builder.build());
+            wires.mission = running.get();
             coordination.agents(running.get(), created);
             wires.lose = container -> coordination.lose(names.stream().filter(name -> container.equals(
                     containerOfAgent.get(name))).map(names::indexOf).toList(), "the container " + container + " is gone");
