@@ -9,6 +9,7 @@ import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.LogRecord;
 import java.util.logging.Logger;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
 
 /**
@@ -16,6 +17,8 @@ import java.util.stream.Stream;
  * the first line of the message only and never a stack trace (JADE attaches one to most failures it
  * logs, which a user of {@code masl run} must not see). Records below the chosen level are dropped.
  * What JADE logs of a container that left abruptly is said as masl says it ({@link ContainerDepartures}).
+ * A message that reached a container after its addressee left is not logged there: its sender is
+ * answered {@code FAILURE} and says what that means ({@link #toldToTheSender}).
  */
 final class JadeLog {
 
@@ -24,6 +27,16 @@ final class JadeLog {
      * strongly: java.util.logging keeps loggers weakly, and would forget their settings.
      */
     private static final List<Logger> LOGGERS = Stream.of("jade", "ams", "df").map(Logger::getLogger).toList();
+
+    /**
+     * What JADE 4.3's messaging service logs, at warning level, on the container where a message
+     * arrived for an agent that has left it: {@code Error serving H-Command
+     * jade.core.messaging.Messaging/1: jade.core.NotFoundException: Messaging service slice failed to
+     * find ( agent-identifier :name … )}.
+     */
+    private static final Pattern ADDRESSEE_LEFT = Pattern.compile(
+            "Error serving H-Command jade\\.core\\.messaging\\.Messaging/\\d+: jade\\.core\\.NotFoundException:"
+                    + " Messaging service slice failed to find .*");
 
     private static volatile boolean silenced;
 
@@ -36,6 +49,16 @@ final class JadeLog {
     }
 
     private JadeLog() {
+    }
+
+    /**
+     * Whether {@code line}, the first line of a log record, tells of a message that found its
+     * addressee gone, which the message's sender hears of as a {@code FAILURE} answer and reports
+     * itself. A serving container meets one whenever a mission's coordinator makes sure that it has
+     * left (it asks the container's agent, gone by then, whether it is there).
+     */
+    static boolean toldToTheSender(String line) {
+        return ADDRESSEE_LEFT.matcher(line).matches();
     }
 
     static void setLevel(Level level) {
@@ -75,6 +98,9 @@ final class JadeLog {
             String message = record.getMessage() == null ? "" : record.getMessage().strip();
             int newline = message.indexOf('\n');
             String first = newline < 0 ? message : message.substring(0, newline);
+            if (toldToTheSender(first)) {
+                return;
+            }
             Optional<String> departure = ContainerDepartures.inMaslWords(first);
             if (departure.isEmpty()) {
                 out.println("JADE " + record.getLevel().getName().toLowerCase() + ": " + first);
