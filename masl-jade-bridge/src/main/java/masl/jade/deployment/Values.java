@@ -12,8 +12,10 @@ import masl.runtime.Label;
  * with their Java type ({@code {"int":3}}, {@code {"string":"a"}}, {@code {"agent":2}} for an agent by
  * proxy id), so that each side makes the same boxed type again; a label ({@code SLabel}'s value) as
  * its key ({@code {"label":"2.1"}}), which each side makes its own label of (the mission's, or the
- * container's view of it). A value of any other type (a future) does not travel:
- * {@link IllegalArgumentException}.
+ * container's view of it); an array of numbers, booleans, chars, strings or agents, of any dimensions, as
+ * {@link ArrayValues} tags it ({@code {"string[]":["a",null]}}). A {@code double} or {@code float} that
+ * JSON has no number for ({@code NaN}, the infinities) travels as the string Java reads it back from. A
+ * value of any other type (a future) does not travel: {@link IllegalArgumentException}.
  */
 final class Values {
 
@@ -60,9 +62,9 @@ final class Values {
         } else if (value instanceof Byte b) {
             tagged.put("byte", b);
         } else if (value instanceof Double d) {
-            tagged.put("double", d);
+            return Double.isFinite(d) ? tagged.put("double", d) : tagged.put("double", d.toString());
         } else if (value instanceof Float f) {
-            tagged.put("float", f);
+            return Float.isFinite(f) ? tagged.put("float", f) : tagged.put("float", f.toString());
         } else if (value instanceof Boolean b) {
             tagged.put("boolean", b);
         } else if (value instanceof Character c) {
@@ -73,6 +75,8 @@ final class Values {
             tagged.put("agent", AgentImplementation.proxyIdOf(agent));
         } else if (value instanceof Label label) {
             tagged.put("label", labels.key(label));
+        } else if (value.getClass().isArray()) {
+            return ArrayValues.toJson(value);
         } else {
             throw new IllegalArgumentException("a " + value.getClass().getSimpleName()
                     + " value cannot travel to a deployed agent");
@@ -87,16 +91,27 @@ final class Values {
 
     /** The value {@code json} stands for; agents are this side's implementations, by proxy id, labels its {@code labels}. */
     static Object fromJson(JsonNode json, List<? extends AgentImplementation> agents, Labels labels) {
+        return fromJson(json, agents, labels, null);
+    }
+
+    /**
+     * The value {@code json} stands for, as {@link #fromJson(JsonNode, List, Labels)}; {@code type}, if
+     * not null, the type the receiver expects (a shared variable's), which an array of agents takes.
+     */
+    static Object fromJson(JsonNode json, List<? extends AgentImplementation> agents, Labels labels, Class<?> type) {
         String tag = json.fieldNames().hasNext() ? json.fieldNames().next() : "";
         JsonNode value = json.get(tag);
+        if (ArrayValues.isArrayTag(tag)) {
+            return ArrayValues.fromJson(tag, value, agents, type);
+        }
         return switch (tag) {
             case "null" -> null;
             case "int" -> value.intValue();
             case "long" -> value.longValue();
             case "short" -> (short) value.intValue();
             case "byte" -> (byte) value.intValue();
-            case "double" -> value.doubleValue();
-            case "float" -> value.floatValue();
+            case "double" -> decimal(value);
+            case "float" -> (float) decimal(value);
             case "boolean" -> value.booleanValue();
             case "char" -> value.textValue().charAt(0);
             case "string" -> value.textValue();
@@ -104,5 +119,10 @@ final class Values {
             case "label" -> labels.label(value.textValue());
             default -> throw new IllegalArgumentException("not a value: " + json);
         };
+    }
+
+    /** A {@code double} as it travels: a number, or the string of one JSON has no number for. */
+    static double decimal(JsonNode value) {
+        return value.isTextual() ? Double.parseDouble(value.textValue()) : value.doubleValue();
     }
 }
