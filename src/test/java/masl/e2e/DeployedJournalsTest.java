@@ -190,8 +190,6 @@ class DeployedJournalsTest {
 
     /**
      * The missions of {@code missions/} that need no simulation and no agent other than MASL's.
-     * {@code mixed-team.masl} is not among them yet: its shared array cannot travel to the agents'
-     * containers, and they fail at its declaration (the bridge's README, "Not there yet").
      */
     private static List<Program> missions() {
         // Which agent runs the scalar main is the mission's choice, in-process as deployed.

@@ -58,9 +58,21 @@ public final class EntryDefinition {
      * {@code initialValue} (the type's default value) until its initialiser runs.
      */
     public <T> SharedDeclaration<T> declareShared(String variableName, T initialValue) {
+        return declareShared(variableName, initialValue, null);
+    }
+
+    /**
+     * Declares a shared variable that holds an array of type {@code type} (MASL §7), null until its
+     * initialiser runs; the type is what a deployed agent's copy of the array is made of.
+     */
+    public <T> SharedDeclaration<T> declareSharedArray(String variableName, Class<T> type) {
+        return declareShared(variableName, null, type);
+    }
+
+    private <T> SharedDeclaration<T> declareShared(String variableName, T initialValue, Class<T> type) {
         synchronized (sharedDeclarations) {
             SharedDeclaration<T> declaration =
-                    new SharedDeclaration<>(this, variableName, sharedDeclarations.size(), initialValue);
+                    new SharedDeclaration<>(this, variableName, sharedDeclarations.size(), initialValue, type);
             sharedDeclarations.add(declaration);
             return declaration;
         }

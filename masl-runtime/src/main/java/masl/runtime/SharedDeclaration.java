@@ -13,12 +13,14 @@ public final class SharedDeclaration<T> {
     private final String name;
     private final int index;
     private final T initialValue;
+    private final Class<T> type;
 
-    SharedDeclaration(EntryDefinition block, String name, int index, T initialValue) {
+    SharedDeclaration(EntryDefinition block, String name, int index, T initialValue, Class<T> type) {
         this.block = block;
         this.name = name;
         this.index = index;
         this.initialValue = initialValue;
+        this.type = type;
     }
 
     public EntryDefinition block() {
@@ -32,6 +34,11 @@ public final class SharedDeclaration<T> {
     /** The value before the initialiser ran: the default value of the type. */
     public T initialValue() {
         return initialValue;
+    }
+
+    /** The array type of a variable that holds an array ({@link EntryDefinition#declareSharedArray}); null for others. */
+    public Class<T> arrayType() {
+        return type;
     }
 
     /** <b>Internal:</b> not part of the API. */

@@ -85,6 +85,32 @@ public class SharedVariable<T> {
         return previous;
     }
 
+    /**
+     * {@code a[i] = e}, {@code a[i] op= e}, {@code ++a[i]}, {@code a[i]++} as an instruction: the program
+     * has just stored {@code element} at {@code index} of the array {@link #get} gave it, as Java does;
+     * returns {@code element}, the assignment's value. Here that array is this variable's own, and
+     * nothing remains to do: an element store costs what it costs in Java, and is no more atomic than
+     * there (MASL §7 locks writes of the variable, not of its elements). A deployed agent's copy of the
+     * variable (the JADE bridge's) has the element stored in the mission's array, the owner's.
+     */
+    public <E> E stored(E element, int index) {
+        return element;
+    }
+
+    /** As {@link #stored(Object, int)} for an element of a nested array: {@code a[index][inner[0]]…}. */
+    public <E> E stored(E element, int index, int... inner) {
+        return element;
+    }
+
+    /**
+     * {@code a[i]++}, {@code a[i]--} inside an expression, as {@link #stored(Object, int, int...)}:
+     * {@code element} is the element stored, {@code before} the one it replaced, the expression's value,
+     * returned.
+     */
+    public <E> E postfixStored(E before, E element, int index, int... inner) {
+        return before;
+    }
+
     @Override
     public String toString() {
         return declaration.name() + "=" + value;

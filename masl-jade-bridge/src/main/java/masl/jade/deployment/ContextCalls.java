@@ -6,6 +6,7 @@ import com.fasterxml.jackson.databind.node.BooleanNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.NullNode;
 import com.fasterxml.jackson.databind.node.TextNode;
+import java.lang.reflect.Array;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
@@ -176,17 +177,23 @@ final class ContextCalls {
 
     @SuppressWarnings("unchecked")
     private JsonNode shared(StandIn agent, AgentContext ctx, String op, JsonNode request) {
-        SharedVariable<Object> variable = ctx.shared((SharedDeclaration<Object>) coordination.blocks()
-                .shared(text(request, "shared")));
+        SharedDeclaration<Object> declaration = (SharedDeclaration<Object>) coordination.blocks()
+                .shared(text(request, "shared"));
+        SharedVariable<Object> variable = ctx.shared(declaration);
         List<AgentImplementation> agents = coordination.agents();
         Values.Labels labels = coordination.labels().of(agent, ctx);
         long call = request.path("call").longValue();
+        Class<?> type = declaration.arrayType();
         UnaryOperator<Object> remote = value -> Values.fromJson(
-                agent.runInStep(ctx, call, Values.toJson(value, labels)).get("value"), agents, labels);
+                agent.runInStep(ctx, call, Values.toJson(value, labels)).get("value"), agents, labels, type);
         return switch (op) {
             case "get" -> Values.toJson(variable.get(), labels);
             case "set" -> {
-                variable.set(Values.fromJson(request.get("value"), agents, labels));
+                variable.set(Values.fromJson(request.get("value"), agents, labels, type));
+                yield null;
+            }
+            case "stored" -> {
+                storeElement(variable.get(), request.get("path"), request.get("value"), type, agents);
                 yield null;
             }
             case "initialise" -> {
@@ -197,6 +204,23 @@ final class ContextCalls {
             case "getAndUpdate" -> Values.toJson(variable.getAndUpdate(remote), labels);
             default -> throw new IllegalArgumentException("no shared request " + op);
         };
+    }
+
+    /**
+     * A deployed agent's store into an element of the array a shared variable holds, which it made in
+     * its copy of the array, made in the mission's: the owner's, which the others read. Not atomic, as
+     * in-process (MASL §7 locks writes of the variable, not of its elements).
+     */
+    private static void storeElement(Object array, JsonNode path, JsonNode value, Class<?> type,
+            List<AgentImplementation> agents) {
+        Object inner = array;
+        Class<?> element = type;
+        for (int level = 0; level < path.size() - 1; level++) {
+            inner = Array.get(inner, path.get(level).intValue());
+            element = element.getComponentType();
+        }
+        Array.set(inner, path.get(path.size() - 1).intValue(),
+                Values.fromJson(value, agents, Values.NONE, element.getComponentType()));
     }
 
     private static JsonNode entry(Entry entry, String op, int n) {

@@ -171,15 +171,27 @@ final class RemoteContext implements AgentContext, Values.Labels {
 
     Object sharedCall(String op, SharedDeclaration<?> declaration, Function<Object, Object> function, Object value) {
         ObjectNode request = JSON.objectNode().put("shared", Blocks.name(declaration));
+        Class<?> type = declaration.arrayType();
         if (function != null) {
             request.put("call", team.callbacks().function(
-                    json -> Values.toJson(function.apply(Values.fromJson(json, team.agents(), this)), this)));
+                    json -> Values.toJson(function.apply(Values.fromJson(json, team.agents(), this, type)), this)));
         }
         if ("set".equals(op)) {
             request.set("value", Values.toJson(value, this));
         }
         JsonNode answer = call("shared-" + op, request);
-        return answer == null || answer.isNull() ? null : Values.fromJson(answer, team.agents(), this);
+        return answer == null || answer.isNull() ? null : Values.fromJson(answer, team.agents(), this, type);
+    }
+
+    /** Has the mission store {@code element} at {@code path} of the array the shared variable holds there. */
+    void storeElement(SharedDeclaration<?> declaration, Object element, int... path) {
+        ObjectNode request = JSON.objectNode().put("shared", Blocks.name(declaration));
+        ArrayNode indices = request.putArray("path");
+        for (int index : path) {
+            indices.add(index);
+        }
+        request.set("value", Values.toJson(element, this));
+        call("shared-stored", request);
     }
 
     /** The number of the call whose future the program holds, or null if the program did not make it here. */

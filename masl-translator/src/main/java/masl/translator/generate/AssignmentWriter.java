@@ -18,7 +18,7 @@ import org.antlr.v4.runtime.ParserRuleContext;
 /**
  * Translates assignments, increments and decrements (MASL §7): locals are fields written directly;
  * a shared variable is written through its wave's {@code SharedVariable}, every read-modify-write as
- * one atomic update.
+ * one atomic update; an element of an array a shared variable holds as {@link SharedElementWriter} says.
  */
 final class AssignmentWriter {
 
@@ -30,6 +30,7 @@ final class AssignmentWriter {
     private final ExpressionWriter expressions;
     private final TreeQueries queries;
     private final Unsupported unsupported;
+    private final SharedElementWriter elements;
     /** Temporaries of split expressions, field name to Java type. */
     private final Map<String, String> temporaries = new LinkedHashMap<>();
     /** Statements to run before the one being translated: values hoisted out of atomic updates. */
@@ -42,6 +43,7 @@ final class AssignmentWriter {
         this.expressions = expressions;
         this.queries = queries;
         this.unsupported = unsupported;
+        this.elements = new SharedElementWriter(program, structure, expressions, this);
     }
 
     /** The temporaries used so far: field name to Java type. */
@@ -69,6 +71,11 @@ final class AssignmentWriter {
         if (target instanceof MASLParser.FieldAccessContext access
                 && expressions.labels().labelForm(access.expression()) != null) {
             return labelAssignment(access, symbol, value);
+        }
+        Variable array = elements.sharedArray(target);
+        if (array != null) {
+            String written = operator.equals("=") ? expressions.converted(type, value) : expressions.expr(value);
+            return elements.assignment(array, target, operator, written, isStatement);
         }
         if (symbol instanceof Variable variable) {
             if (!maySelfWrite(variable)) {
@@ -215,6 +222,10 @@ final class AssignmentWriter {
 
     /** {@code x++}, {@code --x}, …; on a shared variable an atomic update returning the old or new value. */
     String increment(ExpressionContext target, String operator, boolean prefix, boolean isStatement) {
+        Variable array = elements.sharedArray(target);
+        if (array != null) {
+            return elements.increment(array, target, operator, prefix, isStatement);
+        }
         Symbol symbol = program.symbolOf(target).orElse(null);
         if (symbol instanceof Variable variable) {
             if (!maySelfWrite(variable)) {

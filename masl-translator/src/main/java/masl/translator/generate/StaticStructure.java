@@ -8,6 +8,7 @@ import java.util.Map;
 import masl.translator.analysis.Block;
 import masl.translator.analysis.ESequence;
 import masl.translator.analysis.EventDecl;
+import masl.translator.analysis.MaslType;
 import masl.translator.analysis.Reaction;
 import masl.translator.analysis.Sharing;
 import masl.translator.analysis.Variable;
@@ -130,9 +131,12 @@ final class StaticStructure {
             if (variable.sharing() == Sharing.SHARED) {
                 String name = names.take(owner + "_" + JavaNames.constant(variable.name()));
                 shared.put(variable, name);
+                // An array's type says what a deployed agent's copy of it is made of (SharedElementWriter).
+                String declared = variable.type() instanceof MaslType.ArrayOf
+                        ? ".declareSharedArray(" + JavaText.quote(variable.name()) + ", " + JavaTypes.name(variable.type()) + ".class);"
+                        : ".declareShared(" + JavaText.quote(variable.name()) + ", " + JavaTypes.defaultValue(variable.type()) + ");";
                 declarations.add("static final SharedDeclaration<" + JavaTypes.boxed(variable.type()) + "> " + name
-                        + " = " + owner + ".declareShared(" + JavaText.quote(variable.name()) + ", "
-                        + JavaTypes.defaultValue(variable.type()) + ");");
+                        + " = " + owner + declared);
             }
         }
         for (masl.translator.analysis.Label label : block.labels()) {
