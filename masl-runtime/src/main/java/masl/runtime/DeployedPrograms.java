@@ -20,14 +20,14 @@ public final class DeployedPrograms {
     }
 
     /**
-     * What the container of a deployed agent needs to pass its program's loop heads itself, as the
+     * What the container of a deployed agent needs to pass its program's boundaries itself, as the
      * runtime would pass them without doing anything but count: the place of the program's latest
      * step, a loop's head or the case after an instruction ({@code latestStep}; an iteration of the
      * loop at head {@code h} ran no instruction if {@code latestStep <= h}), and whether the agent's
-     * innermost block is synchronous and it active there ({@code barrierDue}), so that such an
-     * iteration meets the barrier and must come to the mission.
+     * innermost block is synchronous and it active there ({@code barrierDue}): then a step boundary,
+     * and an iteration that ran no instruction, meet the barrier and must come to the mission.
      */
-    public record LoopHeads(int latestStep, boolean barrierDue) {
+    public record AtRest(int latestStep, boolean barrierDue) {
     }
 
     private DeployedPrograms() {
@@ -63,26 +63,26 @@ public final class DeployedPrograms {
     }
 
     /**
-     * What {@code agent}'s container needs to pass its loop heads itself until something arrives that
-     * a boundary must act on, or null if its next loop head must come to the mission. Called by the
+     * What {@code agent}'s container needs to pass its boundaries itself until something arrives that
+     * a boundary must act on, or null if its next boundary must come to the mission. Called by the
      * agent's slice; {@code agent} is the context the mission runs the stand-in's steps against.
      */
-    public static LoopHeads loopHeadsAtRest(AgentContext agent) {
-        return ((SteppingAgent) agent).loopHeadsAtRest();
+    public static AtRest atRest(AgentContext agent) {
+        return ((SteppingAgent) agent).boundariesAtRest();
     }
 
     /**
-     * {@code count} loop iterations {@code agent}'s container passed itself since its last request,
-     * its program's latest step then at {@code latestStep}: counted as the runtime counts its own.
-     * Called by the agent's slice.
+     * {@code count} boundaries (loop iterations, step boundaries, ends of e-sequences) {@code agent}'s
+     * container passed itself since its last request, its program's latest step then at
+     * {@code latestStep}: counted as the runtime counts its own. Called by the agent's slice.
      */
-    public static void loopIterationsElsewhere(AgentContext agent, long count, int latestStep) {
-        ((SteppingAgent) agent).loopIterationsElsewhere(count, latestStep);
+    public static void passedElsewhere(AgentContext agent, long count, int latestStep) {
+        ((SteppingAgent) agent).boundariesPassedElsewhere(count, latestStep);
     }
 
     /**
      * Has {@code hook} run each time an occurrence or an invocation arrives for {@code agent}: its
-     * container then brings its next loop head to the mission. Any thread runs it, the flag that the
+     * container then brings its next boundary to the mission. Any thread runs it, the flag that the
      * boundary reads set before.
      */
     public static void onBoundaryWork(Agent agent, Runnable hook) {

@@ -39,7 +39,7 @@ final class IdleIterations {
         return latestStep;
     }
 
-    /** Iterations ended elsewhere (a deployed agent's container), the latest step then at {@code latest}. */
+    /** Steps and iterations ended elsewhere (a deployed agent's container), the latest step then at {@code latest}. */
     void endedElsewhere(int latest) {
         latestStep = latest;
     }

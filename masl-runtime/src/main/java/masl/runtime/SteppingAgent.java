@@ -123,25 +123,26 @@ abstract class SteppingAgent extends ServingAgent implements AgentContext {
     }
 
     /**
-     * For a program that runs elsewhere (a deployed agent's): what its loop heads need of the runtime
-     * to be passed there, with no request, while nothing arrives ({@link #onBoundaryWork}); null if
-     * the next loop head must come here. A loop head passed there is one that here would do nothing
-     * but count: no occurrence perceived, no invocation queued, no reaction underway, the mission
-     * going on, and no barrier due ({@link #idleStepDue}: the program's place of its latest step and
-     * whether its innermost block is synchronous say so there). Called by the agent's slice.
+     * For a program that runs elsewhere (a deployed agent's): what it needs of the runtime to pass
+     * its boundaries there, with no request, while nothing arrives ({@link #onBoundaryWork}); null if
+     * its next boundary must come here. A boundary passed there is one that here would do nothing but
+     * count: no occurrence perceived, no invocation queued, no reaction underway, the mission going
+     * on, and no barrier due, which the program's place of its latest step and whether its innermost
+     * block is synchronous say there (a step boundary meets the barrier then; a loop iteration that
+     * ran no instruction too, {@link #idleStepDue}). Called by the agent's slice.
      */
-    final DeployedPrograms.LoopHeads loopHeadsAtRest() {
+    final DeployedPrograms.AtRest boundariesAtRest() {
         if (reactionsUnderway || eventsPending() || invocationsQueued || halted()) {
             return null;
         }
-        return new DeployedPrograms.LoopHeads(iterations.latestStep(), barrierDue != null);
+        return new DeployedPrograms.AtRest(iterations.latestStep(), barrierDue != null);
     }
 
     /**
-     * {@code count} loop iterations the program passed elsewhere ({@link #loopHeadsAtRest}), its
-     * latest step then at {@code latestStep}: counted as {@link #loopIteration} counts them.
+     * {@code count} boundaries the program passed elsewhere ({@link #boundariesAtRest}), its latest
+     * step then at {@code latestStep}: counted as the runtime counts its own.
      */
-    final void loopIterationsElsewhere(long count, int latestStep) {
+    final void boundariesPassedElsewhere(long count, int latestStep) {
         progress += count;
         iterations.endedElsewhere(latestStep);
     }

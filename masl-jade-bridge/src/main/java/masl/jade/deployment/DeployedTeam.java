@@ -109,7 +109,7 @@ public final class DeployedTeam implements AutoCloseable {
         switch (message.path("kind").textValue()) {
             case "resume" -> steps.execute(() -> step(agent, message));
             case "answer" -> agent.answered(message);
-            case "attend" -> agent.loopHeads().attend(message.get("seq").longValue());
+            case "attend" -> agent.quiet().attend(message.get("seq").longValue());
             case "run" -> {
                 if (inStep(message)) {
                     // The agent's step waits for the mission and runs it: see RemoteContext#call.
@@ -159,7 +159,7 @@ public final class DeployedTeam implements AutoCloseable {
         ObjectNode yield = resume.objectNode().put("kind", "yield").put("agent", agent.id());
         try {
             agent.completeDone(resume.get("done"));
-            agent.loopHeads().told(resume);
+            agent.quiet().told(resume);
             DeployedPrograms.resume(agent.program(), resume.get("pc").intValue(), agent);
             // A call that suspended the step and was answered with its resumption: the step goes on here.
             while (agent.resumedInCall()) {
@@ -214,14 +214,19 @@ public final class DeployedTeam implements AutoCloseable {
     }
 
     /**
-     * Throws {@link MissionLost} once the mission is gone: a step that passes its loop heads here
-     * without a message ({@link LoopHeads}) ends then, as one waiting for an answer does.
+     * Throws {@link MissionLost} once the mission is gone: a step that passes its boundaries here
+     * without a message ({@link QuietBoundaries}) ends then, as one waiting for an answer does.
      */
     void requireMission() {
         String why = lost;
         if (why != null) {
             throw new MissionLost(why);
         }
+    }
+
+    /** Whether this container's agents wrote to the journal since its last message. */
+    boolean written() {
+        return journal.written();
     }
 
     /** The mission is gone ({@code why}): steps waiting for it end, and no step starts. */

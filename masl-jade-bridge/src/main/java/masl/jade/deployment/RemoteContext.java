@@ -64,7 +64,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
     /** This program's views of the mission's labels, by key; the labels it made are numbered here. */
     private final Map<String, RemoteLabel> labels = new ConcurrentHashMap<>();
     private final AtomicLong labelNumbers = new AtomicLong();
-    private final LoopHeads loopHeads = new LoopHeads();
+    private final QuietBoundaries quiet = new QuietBoundaries();
 
     RemoteContext(int id, AgentProgram program, OwnPermeability own, DeployedTeam team) {
         this.id = id;
@@ -81,9 +81,9 @@ final class RemoteContext implements AgentContext, Values.Labels {
         return program;
     }
 
-    /** The mission's loop heads of this agent's program: what its messages say of them. */
-    LoopHeads loopHeads() {
-        return loopHeads;
+    /** This agent's boundaries passed here: what the mission's messages say of them. */
+    QuietBoundaries quiet() {
+        return quiet;
     }
 
     /** An answer of the mission to this agent's request. */
@@ -127,7 +127,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
     /** Request {@code op} to the mission, answered with its value (a label's view asks the mission's label so). */
     JsonNode call(String op, ObjectNode request) {
         request.put("kind", "call").put("agent", id).put("op", op).put("pc", program.pc());
-        loopHeads.request(request);
+        quiet.request(request);
         team.send(request);
         ObjectNode answer = team.await(answers);
         // The mission performs the request holding a lock (a shared variable's) and has this step run
@@ -137,7 +137,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
             answer = team.await(answers);
         }
         completeDone(answer.get("done"));
-        loopHeads.told(answer);
+        quiet.told(answer);
         DeployedPrograms.jump(program, answer.get("pc").intValue());
         resumedInCall = answer.path("resumed").booleanValue();
         return answer.get("value");
@@ -241,16 +241,21 @@ final class RemoteContext implements AgentContext, Values.Labels {
         return id;
     }
 
+    /** Passed here, with no message, while nothing waits for it in the mission ({@link QuietBoundaries}). */
     @Override
     public boolean stepBoundary() {
+        team.requireMission();
+        if (quiet.passStep(program.pc(), team.written())) {
+            return true;
+        }
         return bool("stepBoundary", JSON.objectNode());
     }
 
-    /** Passed here, with no message, while nothing waits for it in the mission ({@link LoopHeads}). */
+    /** Passed here, with no message, while nothing waits for it in the mission ({@link QuietBoundaries}). */
     @Override
     public boolean loopIteration() {
         team.requireMission();
-        if (loopHeads.pass(program.pc())) {
+        if (quiet.passLoopHead(program.pc())) {
             return true;
         }
         return bool("loopIteration", JSON.objectNode());
@@ -276,8 +281,13 @@ final class RemoteContext implements AgentContext, Values.Labels {
         return bool("endOfChild", block(block));
     }
 
+    /** Passed here, with no message, while nothing waits for it in the mission ({@link QuietBoundaries}). */
     @Override
     public boolean endOfSequence(ESequence sequence) {
+        team.requireMission();
+        if (quiet.passEndOfSequence()) {
+            return true;
+        }
         return bool("endOfSequence", JSON.objectNode().put("sequence", Blocks.name(sequence)));
     }
 

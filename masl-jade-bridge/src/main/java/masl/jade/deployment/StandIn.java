@@ -50,15 +50,15 @@ final class StandIn extends AgentProgram {
     private final BlockingQueue<ObjectNode> requests = new LinkedBlockingQueue<>();
     /** The futures of calls the program made that it has not been told the end of, by call number. */
     private final Map<Long, CompletableFuture<Object>> calls = new ConcurrentHashMap<>();
-    /** Orders the messages to the step that say whether its loop heads are at rest, and numbers them. */
+    /** Orders the messages to the step that say whether its boundaries are at rest, and numbers them. */
     private final Object toStep = new Object();
     /** The number of the latest message to the step; guarded by {@link #toStep}. */
     private long sent;
     /**
-     * Whether the step runs in its container, passing its loop heads there, since the latest message
+     * Whether the step runs in its container, passing its boundaries there, since the latest message
      * said they are at rest; guarded by {@link #toStep}.
      */
-    private boolean passingLoopHeads;
+    private boolean passing;
     /** Whether the program waits in a call that suspended its step, confined to the step's thread. */
     private boolean suspended;
     private boolean finished;
@@ -129,45 +129,45 @@ final class StandIn extends AgentProgram {
 
     /**
      * Sends {@code message}, which lets the step go on in its container, numbered and saying whether
-     * its loop heads are at rest ({@link LoopHeads}): read after what arrived before the lock.
+     * its boundaries are at rest ({@link QuietBoundaries}): read after what arrived before the lock.
      */
     private void toStep(AgentContext ctx, ObjectNode message) {
         synchronized (toStep) {
-            DeployedPrograms.LoopHeads heads = DeployedPrograms.loopHeadsAtRest(ctx);
+            DeployedPrograms.AtRest rest = DeployedPrograms.atRest(ctx);
             message.put("seq", ++sent);
-            if (heads != null) {
-                message.putObject("loopHeads").put("latest", heads.latestStep()).put("barrier", heads.barrierDue());
+            if (rest != null) {
+                message.putObject("atRest").put("latest", rest.latestStep()).put("barrier", rest.barrierDue());
             }
-            passingLoopHeads = heads != null;
+            passing = rest != null;
             coordination.send(id, withDone(message));
         }
     }
 
     /**
      * An event or invocation arrived for the agent (any thread): if its step runs in its container
-     * passing its loop heads there, the next one comes here ({@code attend}). Otherwise the step
+     * passing its boundaries there, the next one comes here ({@code attend}). Otherwise the step
      * waits for a message of the mission, which says so.
      */
     void boundaryWork() {
         synchronized (toStep) {
-            if (passingLoopHeads) {
-                passingLoopHeads = false;
+            if (passing) {
+                passing = false;
                 coordination.push(id, JsonNodeFactory.instance.objectNode().put("kind", "attend").put("seq", ++sent));
             }
         }
     }
 
     /**
-     * A message of the step: it waits for the mission from now on; the loop heads it passed in its
+     * A message of the step: it waits for the mission from now on; the boundaries it passed in its
      * container since its last request count as the runtime's own, before the request is performed.
      */
     private ObjectNode taken(AgentContext ctx, ObjectNode request) {
         synchronized (toStep) {
-            passingLoopHeads = false;
+            passing = false;
         }
         pc = request.path("pc").intValue();
         if (request.has("passed")) {
-            DeployedPrograms.loopIterationsElsewhere(ctx, request.get("passed").longValue(),
+            DeployedPrograms.passedElsewhere(ctx, request.get("passed").longValue(),
                     request.get("latest").intValue());
         }
         return request;

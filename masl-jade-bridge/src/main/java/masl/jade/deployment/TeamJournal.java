@@ -34,6 +34,13 @@ final class TeamJournal {
         };
     }
 
+    /** Whether anything was written since the last {@link #drain}. */
+    boolean written() {
+        synchronized (written) {
+            return written.length() > 0;
+        }
+    }
+
     /** What was written since the last call. */
     String drain() {
         synchronized (written) {

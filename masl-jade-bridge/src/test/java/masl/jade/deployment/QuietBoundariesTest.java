@@ -24,23 +24,45 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * A deployed agent's loop heads are passed in its container, with no message, while nothing waits
- * for them in the mission; an event that arrives for the agent is still handled at the loop head
- * where it is in-process.
+ * A deployed agent's boundaries with nothing to do (a loop head, a step boundary that meets no
+ * barrier) are passed in its container, with no message; an event or an invocation that arrives for
+ * the agent is still taken at the boundary where it is in-process, and what a step wrote is in the
+ * journal when its boundary is passed.
  */
 @Timeout(60)
-class LoopHeadsDeployedTest {
+class QuietBoundariesTest {
 
     private static final Duration TIMEOUT = Duration.ofSeconds(20);
 
     @Test
     void aLoopHeadWithNothingToDoCostsNoMessage() throws Exception {
-        InMemoryDeployment.Run run = InMemoryDeployment.run(() -> TestPrograms.of(Counting.MAIN, 1, Counting::new),
+        InMemoryDeployment.Run run = InMemoryDeployment.run(
+                () -> TestPrograms.of(Counting.LOCK_STEP, 1, self -> new Counting(self, Counting.LOCK_STEP)),
                 Map.of("a0", "c2"), TIMEOUT);
         assertEquals("done\n", run.outcome().journal(), run.outcome().toString());
-        // A request for each step's boundary, and a few to enter and leave; a loop head's own would be one more a step.
+        // A request for each step's barrier, and a few to enter and leave; a loop head's own would be one more a step.
         assertTrue(run.messagesFromContainer() < Counting.STEPS + 10,
                 run.messagesFromContainer() + " messages from the container");
+    }
+
+    @Test
+    void aStepBoundaryThatMeetsNoBarrierCostsNoMessage() throws Exception {
+        InMemoryDeployment.Run run = InMemoryDeployment.run(
+                () -> TestPrograms.of(Counting.FREE, 1, self -> new Counting(self, Counting.FREE)),
+                Map.of("a0", "c2"), TIMEOUT);
+        assertEquals("done\n", run.outcome().journal(), run.outcome().toString());
+        // Entering, leaving and finishing; a step's own would be one more a step.
+        assertTrue(run.messagesFromContainer() < 10, run.messagesFromContainer() + " messages from the container");
+    }
+
+    @Test
+    void whatAStepWroteIsInTheJournalOnceItsBoundaryIsPassed() throws Exception {
+        AtomicInteger said = new AtomicInteger();
+        AtomicBoolean released = new AtomicBoolean();
+        InMemoryDeployment.Run run = InMemoryDeployment.run(
+                () -> TestPrograms.of(Says.MAIN, 2, self -> new Says(self, said, released)), Map.of("a0", "c2"),
+                TIMEOUT);
+        assertEquals("a0 says\na1 heard a0\n", run.outcome().journal(), run.outcome().toString());
     }
 
     @Test
@@ -78,14 +100,20 @@ class LoopHeadsDeployedTest {
         return run.outcome().journal();
     }
 
-    /** {@code synchronous entry main (true) { local int i = 0; while (i < STEPS) { i++; } .logln("done"); }}. */
+    /**
+     * {@code synchronous entry main (true) { local int i = 0; while (i < STEPS) { i++; } .logln("done"); }},
+     * or with an asynchronous {@code main}.
+     */
     private static final class Counting extends CompactProgram {
-        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
+        static final EntryDefinition LOCK_STEP = EntryDefinition.main("main", Mode.SYNCHRONOUS);
+        static final EntryDefinition FREE = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
         static final int STEPS = 40;
+        private final EntryDefinition main;
         private int i;
 
-        Counting(TestAgent self) {
+        Counting(TestAgent self, EntryDefinition main) {
             super(self);
+            this.main = main;
         }
 
         @Override
@@ -93,7 +121,7 @@ class LoopHeadsDeployedTest {
             while (true) {
                 switch (pc) {
                     case 0:
-                        if (!arrive(ctx, MAIN, true, 1, 5)) return;
+                        if (!arrive(ctx, main, true, 1, 5)) return;
                         continue;
                     case 1:
                         pc = i < STEPS ? 2 : 4;
@@ -107,11 +135,11 @@ class LoopHeadsDeployedTest {
                         continue;
                     case 4:
                         self.logln("done");
-                        if (!leave(ctx, MAIN, 5)) return;
+                        if (!leave(ctx, main, 5)) return;
                         continue;
                     case 5:
                         pc = 6;
-                        if (!ctx.endOfSequence(MAIN.sequence())) return;
+                        if (!ctx.endOfSequence(main.sequence())) return;
                         continue;
                     case 6:
                         ctx.finish();
@@ -196,6 +224,72 @@ class LoopHeadsDeployedTest {
                         heard = true;
                         if (!resumeAfterReaction(ctx)) return;
                         continue;
+                    default:
+                        throw new IllegalStateException("pc " + pc);
+                }
+            }
+        }
+    }
+
+    /**
+     * {@code asynchronous entry main (true) { … }}: a0 says something, then loops, running no
+     * instruction, until a1 has said that it heard a0, once a0 has passed the boundary of its saying.
+     */
+    private static final class Says extends CompactProgram {
+        static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.ASYNCHRONOUS);
+        /** Whether a0 has passed the boundary of its saying, wherever its program runs: a1 reads it. */
+        private final AtomicInteger said;
+        private final AtomicBoolean released;
+
+        Says(TestAgent self, AtomicInteger said, AtomicBoolean released) {
+            super(self);
+            this.said = said;
+            this.released = released;
+        }
+
+        @Override
+        protected void resume(AgentContext ctx) {
+            while (true) {
+                switch (pc) {
+                    case 0:
+                        if (!arrive(ctx, MAIN, true, 1, 7)) return;
+                        continue;
+                    case 1:
+                        pc = self.getProxyID() == 0 ? 2 : 5;
+                        continue;
+                    case 2:
+                        self.logln("a0 says");
+                        if (!step(ctx, 3)) return;
+                        continue;
+                    case 3:
+                        said.set(1);
+                        pc = 4;
+                        continue;
+                    case 4:
+                        if (released.get()) {
+                            pc = 6;
+                            continue;
+                        }
+                        if (!loop(ctx, 4)) return;
+                        continue;
+                    case 5:
+                        while (said.get() < 1) {
+                            Thread.onSpinWait();
+                        }
+                        self.logln("a1 heard a0");
+                        released.set(true);
+                        if (!step(ctx, 6)) return;
+                        continue;
+                    case 6:
+                        if (!leave(ctx, MAIN, 7)) return;
+                        continue;
+                    case 7:
+                        pc = 8;
+                        if (!ctx.endOfSequence(MAIN.sequence())) return;
+                        continue;
+                    case 8:
+                        ctx.finish();
+                        return;
                     default:
                         throw new IllegalStateException("pc " + pc);
                 }

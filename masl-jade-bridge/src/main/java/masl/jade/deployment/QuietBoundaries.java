@@ -1,0 +1,98 @@
+package masl.jade.deployment;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
+/**
+ * A deployed agent's boundaries that have nothing to do, passed in its container with no message: a
+ * loop head, a step boundary that meets no barrier, the end of an e-sequence, while the mission says
+ * nothing waits for them. Every message the mission sends to the agent's step is numbered ({@code
+ * seq}) and says whether its boundaries are at rest ({@code atRest}, from the runtime's {@code
+ * DeployedPrograms.atRest}); once an event or an invocation arrives for the agent after such a
+ * message, the mission says so ({@code attend}, numbered after it). A boundary then comes to the
+ * mission again, as one does that meets the barrier of a synchronous block: a step boundary there,
+ * or the end of an iteration that ran no instruction. The next request carries how many boundaries
+ * were passed here, which the runtime counts as its own. The numbers order the pushes, taken on the
+ * container's receiving thread, with the answers, taken later by the step's: an answer says nothing
+ * of what arrived after it.
+ */
+final class QuietBoundaries {
+
+    /** The number of the mission's latest {@code attend}: written by the receiving thread only. */
+    private volatile long attendFrom;
+
+    // Confined to the thread running the agent's step.
+    private boolean atRest;
+    private long toldAt;
+    /** The place of the program's latest step, as the runtime's {@code IdleIterations} keeps it. */
+    private int latestStep;
+    private boolean barrierDue;
+    private long passed;
+
+    /** The mission's {@code attend} numbered {@code seq}: an event or invocation waits for a boundary. */
+    void attend(long seq) {
+        if (seq > attendFrom) {
+            attendFrom = seq;
+        }
+    }
+
+    /** What the mission's message {@code message} to the step (a resumption, an answer) says of its boundaries. */
+    void told(JsonNode message) {
+        JsonNode rest = message.get("atRest");
+        atRest = rest != null;
+        if (atRest) {
+            toldAt = message.get("seq").longValue();
+            latestStep = rest.get("latest").intValue();
+            barrierDue = rest.get("barrier").booleanValue();
+        }
+    }
+
+    /**
+     * Whether the loop head at case {@code head} is passed here: nothing arrived, and the iteration
+     * ending here ran an instruction ({@code latestStep > head}) or meets no barrier.
+     */
+    boolean passLoopHead(int head) {
+        if (!quiet() || latestStep <= head && barrierDue) {
+            return false;
+        }
+        latestStep = head;
+        passed++;
+        return true;
+    }
+
+    /**
+     * Whether the step boundary after an instruction, {@code next} the case after it, is passed here:
+     * nothing arrived, it meets no barrier, and {@code written} is false (what the step wrote to the
+     * journal goes to the mission at the boundary, as it would be there at once in-process).
+     */
+    boolean passStep(int next, boolean written) {
+        if (!quiet() || barrierDue || written) {
+            return false;
+        }
+        latestStep = next;
+        passed++;
+        return true;
+    }
+
+    /** Whether the end of an e-sequence, which meets no barrier, is passed here: nothing arrived. */
+    boolean passEndOfSequence() {
+        if (!quiet()) {
+            return false;
+        }
+        passed++;
+        return true;
+    }
+
+    private boolean quiet() {
+        return atRest && attendFrom <= toldAt;
+    }
+
+    /** Adds to {@code request} the boundaries passed since the last request; the next are the mission's until it answers. */
+    void request(ObjectNode request) {
+        if (passed > 0) {
+            request.put("passed", passed).put("latest", latestStep);
+            passed = 0;
+        }
+        atRest = false;
+    }
+}
