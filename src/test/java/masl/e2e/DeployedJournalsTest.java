@@ -194,7 +194,10 @@ class DeployedJournalsTest {
     private static List<Program> missions() {
         // Which agent runs the scalar main is the mission's choice, in-process as deployed.
         return List.of(new Program(Path.of("missions/hello.masl"), Same.CONSTRAINT, lines -> assertTrue(
-                lines.size() == 1 && Pattern.matches("Hello from agent [0-2]", lines.get(0)), lines.toString())));
+                lines.size() == 1 && Pattern.matches("Hello from agent [0-2]", lines.get(0)), lines.toString())),
+                // Each robot stores its report in its element of a shared array, which one of them reads out.
+                new Program(Path.of("missions/mixed-team.masl"), Same.TEXT, lines -> assertEquals(3, lines.size(),
+                        lines.toString())));
     }
 
     private static void assertSameJournal(Program program) throws Exception {
