@@ -64,4 +64,32 @@ class DeployedSharedArraysTest {
             mission.runOn(deployment).assertJournal(JOURNAL);
         }
     }
+
+    /**
+     * A busy-wait loop on an element (MASL §5) wakes when an agent in a container stores it: {@code a}
+     * runs in the mission's JVM and waits for {@code b}'s store, which the mission makes for it, while
+     * {@code b} waits for {@code a}'s next store, so that nothing else wakes {@code a}.
+     */
+    @Test
+    void aBusyWaitLoopWakesWhenAnAgentElsewhereStoresTheElementItWaitsFor() {
+        MaslMission mission = MaslMission.fromString("handshake.masl", """
+                import Default.xml as Default;
+                Default a, b = newAgent(Default);
+                asynchronous entry main (true) {
+                  shared int[] flags = new int[2];
+                  if (.getProxyID() == 0) {
+                    flags[0] = 1;
+                    while (flags[1] != 1) { }
+                    .logln("a saw b");
+                    flags[0] = 2;
+                  } else {
+                    while (flags[0] != 1) { }
+                    flags[1] = 1;
+                    while (flags[0] != 2) { }
+                    .logln("b saw a");
+                  }
+                }
+                """).timeout(TIMEOUT);
+        mission.runOn(DeployedInMemory.agents("b")).assertJournal("a saw b\nb saw a\n");
+    }
 }

@@ -88,17 +88,19 @@ public class SharedVariable<T> {
     /**
      * {@code a[i] = e}, {@code a[i] op= e}, {@code ++a[i]}, {@code a[i]++} as an instruction: the program
      * has just stored {@code element} at {@code index} of the array {@link #get} gave it, as Java does;
-     * returns {@code element}, the assignment's value. Here that array is this variable's own, and
-     * nothing remains to do: an element store costs what it costs in Java, and is no more atomic than
-     * there (MASL §7 locks writes of the variable, not of its elements). A deployed agent's copy of the
-     * variable (the JADE bridge's) has the element stored in the mission's array, the owner's.
+     * returns {@code element}, the assignment's value. Here that array is this variable's own: the store
+     * is Java's, no more atomic than there (MASL §7 locks writes of the variable, not of its elements),
+     * and only wakes the agents whose busy-wait loops may be waiting for it (§5). A deployed agent's
+     * copy of the variable (the JADE bridge's) has the element stored in the mission's array, the owner's.
      */
     public <E> E stored(E element, int index) {
+        changes.advance();
         return element;
     }
 
     /** As {@link #stored(Object, int)} for an element of a nested array: {@code a[index][inner[0]]…}. */
     public <E> E stored(E element, int index, int... inner) {
+        changes.advance();
         return element;
     }
 
@@ -108,6 +110,7 @@ public class SharedVariable<T> {
      * returned.
      */
     public <E> E postfixStored(E before, E element, int index, int... inner) {
+        changes.advance();
         return before;
     }
 

@@ -193,7 +193,10 @@ final class ContextCalls {
                 yield null;
             }
             case "stored" -> {
-                storeElement(variable.get(), request.get("path"), request.get("value"), type, agents);
+                JsonNode path = request.get("path");
+                Object element = storeElement(variable.get(), path, request.get("value"), type, agents);
+                // Stored in the array the variable gave, as the program's own store: busy-wait loops wake.
+                variable.stored(element, path.get(0).intValue());
                 yield null;
             }
             case "initialise" -> {
@@ -208,10 +211,10 @@ final class ContextCalls {
 
     /**
      * A deployed agent's store into an element of the array a shared variable holds, which it made in
-     * its copy of the array, made in the mission's: the owner's, which the others read. Not atomic, as
-     * in-process (MASL §7 locks writes of the variable, not of its elements).
+     * its copy of the array, made in the mission's, the owner's, which the others read; returns the
+     * element. Not atomic, as in-process (MASL §7 locks writes of the variable, not of its elements).
      */
-    private static void storeElement(Object array, JsonNode path, JsonNode value, Class<?> type,
+    private static Object storeElement(Object array, JsonNode path, JsonNode value, Class<?> type,
             List<AgentImplementation> agents) {
         Object inner = array;
         Class<?> element = type;
@@ -219,8 +222,9 @@ final class ContextCalls {
             inner = Array.get(inner, path.get(level).intValue());
             element = element.getComponentType();
         }
-        Array.set(inner, path.get(path.size() - 1).intValue(),
-                Values.fromJson(value, agents, Values.NONE, element.getComponentType()));
+        Object stored = Values.fromJson(value, agents, Values.NONE, element.getComponentType());
+        Array.set(inner, path.get(path.size() - 1).intValue(), stored);
+        return stored;
     }
 
     private static JsonNode entry(Entry entry, String op, int n) {

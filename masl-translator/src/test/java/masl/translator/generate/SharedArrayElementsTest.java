@@ -57,4 +57,32 @@ class SharedArrayElementsTest {
         String journal = Programs.journal(Programs.load(TEAM), new PoolScheduler());
         assertEquals("agent 0!,agent 1!,agent 2! 311 3 137 3\n", journal);
     }
+
+    /**
+     * A busy-wait loop (MASL §5) parks until something it can observe changes: an element stored by
+     * another agent is such a change, or the two agents below, each waiting for the other's element,
+     * were found deadlocked.
+     */
+    @Test
+    void aBusyWaitLoopWakesWhenAnotherAgentStoresTheElementItWaitsFor() {
+        String journal = Programs.journal(Programs.load(HANDSHAKE), new PoolScheduler());
+        assertEquals("seen\nanswered\n", journal);
+    }
+
+    static final String HANDSHAKE = """
+            import Default.xml as Default;
+            Default a, b = newAgent(Default);
+            asynchronous entry main (true) {
+              shared int[] flags = new int[1];
+              if (.getProxyID() == 0) {
+                flags[0] = 1;
+                while (flags[0] != 2) { }
+                .logln("answered");
+              } else {
+                while (flags[0] == 0) { }
+                .logln("seen");
+                flags[0] = 2;
+              }
+            }
+            """;
 }
