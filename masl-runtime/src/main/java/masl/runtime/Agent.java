@@ -78,13 +78,13 @@ public final class Agent extends SteppingAgent implements AgentContext {
 
     @Override
     public void runSlice() {
-        if (run.isServing()) {
+        if (isServing()) {
             serveWhileBlocked();
             return;
         }
-        if (!run.startSlice()) {
+        if (!startSlice()) {
             // A runtime bug, not the program's: fail the mission rather than the scheduler's thread.
-            mission.agentFailed(this, new IllegalStateException(describe() + " scheduled in state " + run.describeState()));
+            mission.agentFailed(this, new IllegalStateException(describe() + " scheduled in state " + describeState()));
             return;
         }
         runProgram();
@@ -92,7 +92,7 @@ public final class Agent extends SteppingAgent implements AgentContext {
 
     @Override
     public boolean runSliceWoken(long ticket) {
-        if (!run.resumeParked(ticket)) {
+        if (!resumeParked(ticket)) {
             return false;
         }
         runProgram();
@@ -156,7 +156,7 @@ public final class Agent extends SteppingAgent implements AgentContext {
             die(new IllegalStateException(describe() + ": resume returned without a suspension or finish()"));
         } else if (!endSliceParked(false)) {
             mission.countSchedule();
-            run.reschedule();
+            reschedule();
             mission.scheduler().schedule(this);
         } else if (failedFromOutside != null) {
             // Failed from outside while the slice ran: the park just made may be one nobody ends.
@@ -177,12 +177,12 @@ public final class Agent extends SteppingAgent implements AgentContext {
             return;
         }
         if (finished) {
-            run.done();
+            done();
             // An invocation queued after the queue was drained found the agent SERVING: serve it too.
             serveIfPending();
         } else if (!endSliceParked(true)) {
             mission.countSchedule();
-            run.reschedule();
+            reschedule();
             mission.scheduler().schedule(this);
         }
     }
@@ -222,7 +222,7 @@ public final class Agent extends SteppingAgent implements AgentContext {
      */
     public int warmUp() {
         return program.pc() + (barrierDue == null ? 0 : 1) + (reactionsUnderway ? 1 : 0) + stepsThisSlice
-                + (suspended ? 1 : 0) + (int) progress + (int) run.pendingTicket();
+                + (suspended ? 1 : 0) + (int) progress + (int) pendingTicket();
     }
 
     // ---- AgentContext --------------------------------------------------------------------------
@@ -263,7 +263,7 @@ public final class Agent extends SteppingAgent implements AgentContext {
         abandonEnding();
         invoker.fireCountermeasures(depthOf(block));
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.REELECT);
-        iterations.jumpedBack();
+        jumpedBack();
     }
 
     @Override
@@ -273,7 +273,7 @@ public final class Agent extends SteppingAgent implements AgentContext {
         abandonEnding();
         invoker.fireCountermeasures(depthOf(block) + 1);
         mission.coordinator().leaveUpTo(this, mission.entry(block), LeaveCause.RESTART);
-        iterations.jumpedBack();
+        jumpedBack();
     }
 
     @Override

@@ -23,11 +23,27 @@ import masl.runtime.trace.TraceEvent;
  */
 abstract class SteppingAgent extends ServingAgent implements AgentContext {
 
+    private static final int BEFORE_EVERY_LOOP = Integer.MIN_VALUE;
+
     // Confined to the thread running the current slice (successive slices are ordered).
     private long busyWaitEpoch = -1;
     private long busyWaitProgress = -1;
-    /** Which loop iterations ran no instruction; a restart or reelect in {@link Agent} resets it. */
-    final IdleIterations iterations = new IdleIterations();
+    /**
+     * Where the agent's latest step was, which tells the loop iterations that ran no instruction
+     * (MASL §5): in a synchronous block such an iteration is itself one instruction, with the full
+     * step boundary, barrier included; one that ran an instruction has met the barrier already and
+     * adds no step. The runtime sees a loop only at the end of each iteration, where {@code pc} names
+     * the loop's head (contract §3.8), and cases are numbered in program order (contract §1.2): a
+     * loop's body comes after its head, the code before the loop before it. So it is enough to
+     * remember the case after the latest instruction's step boundary, or the loop's head for the end
+     * of an iteration: an iteration of the loop at {@code head} ran an instruction exactly when the
+     * latest step comes after {@code head} (in its body, or at the head of a loop nested in it, whose
+     * iterations each ran an instruction or were one). On the first iteration the latest step is
+     * before the loop, on the next ones at its own head. A {@code restart} or {@code reelect} jumps
+     * back to the start of a block ({@link #jumpedBack}). A field of the agent, not an object of its
+     * own: every loop iteration reads and writes it.
+     */
+    private int latestStep = BEFORE_EVERY_LOOP;
 
     SteppingAgent(int id, String name, AgentProgram program, Mission mission, AgentType type) {
         super(id, name, program, mission, type, mission.coordinator(), mission.trace());
@@ -48,7 +64,7 @@ abstract class SteppingAgent extends ServingAgent implements AgentContext {
     private boolean instructionEnded(String what) {
         requireOutsideReaction(what);
         progress++;
-        iterations.stepped(program.pc());
+        latestStep = program.pc();
         SynchronisationBarrier barrier = barrierDue();
         if (startReactions(barrier != null)) {
             return false;
@@ -135,24 +151,33 @@ abstract class SteppingAgent extends ServingAgent implements AgentContext {
         if (reactionsUnderway || eventsPending() || invocationsQueued || halted()) {
             return null;
         }
-        return new DeployedPrograms.AtRest(iterations.latestStep(), barrierDue != null);
+        return new DeployedPrograms.AtRest(latestStep, barrierDue != null);
     }
 
     /**
      * {@code count} boundaries the program passed elsewhere ({@link #boundariesAtRest}), its latest
-     * step then at {@code latestStep}: counted as the runtime counts its own.
+     * step then at {@code latest}: counted as the runtime counts its own.
      */
-    final void boundariesPassedElsewhere(long count, int latestStep) {
+    final void boundariesPassedElsewhere(long count, int latest) {
         progress += count;
-        iterations.endedElsewhere(latestStep);
+        latestStep = latest;
     }
 
     /**
      * The barrier the iteration ending here meets as an instruction of its own (§5): that of the
-     * innermost block, if it is synchronous and the iteration ran no instruction; else null.
+     * innermost block, if it is synchronous and the iteration ran no instruction; else null. Called
+     * at a loop's head, where {@link #atLoopHead} has set {@link #statementPc} to it.
      */
     private SynchronisationBarrier idleStepDue() {
-        return iterations.endIteration(program.pc()) ? barrierDue() : null;
+        int head = statementPc;
+        boolean idle = latestStep <= head;
+        latestStep = head;
+        return idle ? barrierDue() : null;
+    }
+
+    /** A {@code restart} or {@code reelect}: the program goes back to the start of a block, and meets its loops afresh. */
+    final void jumpedBack() {
+        latestStep = BEFORE_EVERY_LOOP;
     }
 
     /**

@@ -26,7 +26,7 @@ import org.openjdk.jcstress.infra.results.ZZZ_Result;
 @State
 public class RunStateParkOrWakeUp {
 
-    private final RunState run = new RunState(() -> "agent", () -> { });
+    private final RunState run = new LoneRunState();
     private final long ticket;
 
     public RunStateParkOrWakeUp() {
@@ -41,7 +41,7 @@ public class RunStateParkOrWakeUp {
 
     @Actor
     public void waker(ZZZ_Result r) {
-        r.r2 = run.unpark(ticket);
+        r.r2 = run.endPark(ticket);
     }
 
     @Arbiter

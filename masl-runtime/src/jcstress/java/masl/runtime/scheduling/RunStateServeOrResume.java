@@ -27,7 +27,7 @@ import org.openjdk.jcstress.infra.results.ZZZ_Result;
 @State
 public class RunStateServeOrResume {
 
-    private final RunState run = new RunState(() -> "agent", () -> { });
+    private final RunState run = new LoneRunState();
     private final long ticket;
 
     public RunStateServeOrResume() {
@@ -43,7 +43,7 @@ public class RunStateServeOrResume {
 
     @Actor
     public void pass(ZZZ_Result r) {
-        r.r2 = run.resumeParked(ticket) || run.unpark(ticket);
+        r.r2 = run.resumeParked(ticket) || run.endPark(ticket);
     }
 
     @Arbiter

@@ -22,7 +22,7 @@ import org.openjdk.jcstress.infra.results.ZZ_Result;
 @State
 public class RunStateTwoWakeUps {
 
-    private final RunState run = new RunState(() -> "agent", () -> { });
+    private final RunState run = new LoneRunState();
     private final long ticket;
 
     public RunStateTwoWakeUps() {
@@ -33,11 +33,11 @@ public class RunStateTwoWakeUps {
 
     @Actor
     public void first(ZZ_Result r) {
-        r.r1 = run.unpark(ticket);
+        r.r1 = run.endPark(ticket);
     }
 
     @Actor
     public void second(ZZ_Result r) {
-        r.r2 = run.unpark(ticket);
+        r.r2 = run.endPark(ticket);
     }
 }

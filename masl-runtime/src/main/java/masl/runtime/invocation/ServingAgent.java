@@ -76,7 +76,7 @@ public abstract class ServingAgent extends ReactingAgent {
             mission.outsideWakeUpStarted();
         }
         try {
-            if (!run.park(serving)) {
+            if (!park(serving)) {
                 return false;
             }
             serveIfPending();
@@ -110,7 +110,7 @@ public abstract class ServingAgent extends ReactingAgent {
      * had set the flag before it looked.
      */
     protected final void serveIfPending() {
-        if (invocationsQueued && run.claimServing(servable)) {
+        if (invocationsQueued && claimServing(servable)) {
             mission.scheduler().schedule(this);
         }
     }
@@ -124,7 +124,7 @@ public abstract class ServingAgent extends ReactingAgent {
 
     /** Turns the agent {@code SERVING} if it is blocked or done and something it may serve is queued. */
     protected final boolean claimServing() {
-        return run.claimServing(servable);
+        return claimServing(servable);
     }
 
     /**
@@ -137,7 +137,7 @@ public abstract class ServingAgent extends ReactingAgent {
      */
     public final boolean isIdle() {
         boolean nothingQueued = invocations.nothingQueued();
-        return run.isIdle(nothingQueued, attentive);
+        return isIdle(nothingQueued, attentive);
     }
 
     /** {@code wait(state)} without a time-out (AgentContext). */

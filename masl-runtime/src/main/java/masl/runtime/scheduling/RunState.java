@@ -3,17 +3,19 @@ package masl.runtime.scheduling;
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
 import java.util.function.BooleanSupplier;
-import java.util.function.Supplier;
 
 /**
  * The scheduling state of one agent and the tickets of its parks: who may run it, and which
  * wake-up ends which wait. Safe from any thread; the ticket counter is confined to the agent's
- * slices.
+ * slices. The agent's bottom layer ({@link ScheduledAgent} extends it), not an object it points
+ * to: every agent-step in lock-step reads and updates the word twice, and a word in an object of
+ * its own was one more cache line and one more dependent load per agent-step (at 100,000 agents,
+ * one more miss to memory).
  *
  * <p><b>States.</b> {@code SCHEDULED → RUNNING} when a slice starts ({@link #startSlice}). A
  * runtime call that must wait issues a park <em>ticket</em> ({@link #issueTicket}) and the program
  * returns; the slice then ends {@code RUNNING → PARKED} ({@link #park}). Whoever ends the wait
- * {@linkplain #unpark unparks} the agent with that ticket: the first to come with the pending
+ * {@linkplain #endPark ends its park} the agent with that ticket: the first to come with the pending
  * ticket wins, a stale or repeated one does nothing. The winner finds the agent {@code PARKED},
  * turns it {@code SCHEDULED} and hands it to the scheduler; a wake-up that comes while the slice is
  * still running turns {@code RUNNING → RUNNING_WOKEN}, and the slice reschedules the agent when it
@@ -35,17 +37,17 @@ import java.util.function.Supplier;
  * word, its park and its unpark, besides the start of its slice.
  *
  * <p><b>Memory consistency effects.</b> Actions of a slice before it issues a ticket happen-before
- * the actions of whoever reads that ticket pending and {@linkplain #unpark unparks} with it (a
+ * the actions of whoever reads that ticket pending and {@linkplain #endPark ends its park} with it (a
  * release store, read by the unpark's volatile read and compare-and-set). Actions of a thread before
- * a successful {@code unpark} or {@code claimServing} happen-before the actions of the slice that the
+ * a successful {@code endPark} or {@code claimServing} happen-before the actions of the slice that the
  * scheduler then runs for the agent. Actions of a slice before {@link #park} happen-before the
- * actions of a waker whose {@code unpark} returns true. These races are checked by the jcstress
+ * actions of a waker whose {@code endPark} returns true. These races are checked by the jcstress
  * tests {@code RunStateParkOrWakeUp}, {@code RunStateTwoWakeUps} and {@code RunStateServeOrWakeUp}.
  *
  * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
  * friend packages), and may change without notice.
  */
-public final class RunState {
+public abstract class RunState {
 
     private static final int SCHEDULED = 0;
     private static final int RUNNING = 1;
@@ -76,17 +78,12 @@ public final class RunState {
     private volatile long word = SCHEDULED;
     /** Confined to the agent's slices (successive slices are ordered). */
     private long lastTicket;
-    private final Supplier<String> owner;
-    private final Runnable countSchedule;
 
-    /**
-     * @param owner describes the agent, for the messages of broken rules
-     * @param countSchedule counts a parked agent made runnable, for the deadlock watchdog
-     */
-    public RunState(Supplier<String> owner, Runnable countSchedule) {
-        this.owner = owner;
-        this.countSchedule = countSchedule;
-    }
+    /** Describes the agent, for the messages of broken rules. */
+    public abstract String describe();
+
+    /** Counts a parked agent made runnable, for the deadlock watchdog. */
+    protected abstract void countWakeUp();
 
     private static int stateOf(long word) {
         return (int) (word & STATE_MASK);
@@ -101,18 +98,18 @@ public final class RunState {
     }
 
     /** {@code SERVING} or {@code SERVING_WOKEN}: the slice about to run serves invocations only. */
-    public boolean isServing() {
+    protected final boolean isServing() {
         int current = stateOf(word);
         return current == SERVING || current == SERVING_WOKEN;
     }
 
     /** {@code SCHEDULED → RUNNING}; false, and no change, from any other state (a runtime bug). */
-    public boolean startSlice() {
+    protected final boolean startSlice() {
         return WORD.compareAndSet(this, (long) SCHEDULED, (long) RUNNING);
     }
 
     /** The state's name, for the message of a broken rule. */
-    public String describeState() {
+    protected final String describeState() {
         return String.valueOf(stateOf(word));
     }
 
@@ -121,27 +118,27 @@ public final class RunState {
      * a wake-up came meanwhile, and the caller must then {@link #reschedule}. Only a wake-up changes
      * the word of a running or serving slice, so a failed update is one.
      */
-    public boolean park(boolean serving) {
+    protected final boolean park(boolean serving) {
         long current = word;
         return stateOf(current) == (serving ? SERVING : RUNNING)
                 && WORD.compareAndSet(this, current, withState(current, PARKED));
     }
 
     /** Back to {@code SCHEDULED}, after a wake-up ended the park: the caller hands the agent to the scheduler. */
-    public void reschedule() {
+    protected final void reschedule() {
         word = SCHEDULED;
     }
 
     /** The agent's program is over. */
-    public void done() {
+    protected final void done() {
         word = DONE;
     }
 
-    public boolean isDone() {
+    public final boolean isDone() {
         return stateOf(word) == DONE;
     }
 
-    public boolean isParked() {
+    protected final boolean isParked() {
         return stateOf(word) == PARKED;
     }
 
@@ -150,7 +147,7 @@ public final class RunState {
      * or {@code attentive} (in {@code wait(state)}). The caller reads its queue before this call, so
      * the one read of the state here says whether the agent was idle at that instant.
      */
-    public boolean isIdle(boolean nothingQueued, BooleanSupplier attentive) {
+    protected final boolean isIdle(boolean nothingQueued, BooleanSupplier attentive) {
         int current = stateOf(word);
         if (current == DONE) {
             return nothingQueued;
@@ -164,12 +161,12 @@ public final class RunState {
      * {@code PARKED} is counted as a schedule, as a wake-up is; {@code SERVING} is not idle. The
      * pending ticket stays: the agent still waits for its park to end.
      */
-    public boolean claimServing(BooleanSupplier servable) {
+    protected final boolean claimServing(BooleanSupplier servable) {
         while (servable.getAsBoolean()) {
             long current = word;
             int state = stateOf(current);
             if (state == PARKED) {
-                countSchedule.run();
+                countWakeUp();
             } else if (state != DONE) {
                 return false;
             }
@@ -186,7 +183,7 @@ public final class RunState {
      * and whoever learns the ticket (through the barrier, the future or the queue it is handed to)
      * sees it pending.
      */
-    public long issueTicket() {
+    protected final long issueTicket() {
         long ticket = ++lastTicket;
         long current = (long) WORD.getOpaque(this);
         WORD.setRelease(this, ticket << STATE_BITS | stateOf(current));
@@ -194,25 +191,25 @@ public final class RunState {
     }
 
     /** Takes back the pending park {@code ticket}, which nobody has ended: false if someone has. */
-    public boolean takeBack(long ticket) {
+    protected final boolean takeBack(long ticket) {
         long current = word;
         return ticketOf(current) == ticket && WORD.compareAndSet(this, current, current & STATE_MASK);
     }
 
     /** The ticket of the pending park, or 0 if the agent has none (it is running, not waiting). */
-    public long pendingTicket() {
+    public final long pendingTicket() {
         return ticketOf(word);
     }
 
     /**
      * Ends the park {@code ticket} straight into a slice, {@code PARKED → RUNNING}, for a thread that
      * runs the slice itself at once and holds a pending wake-up for the agent (a pass over the
-     * agents a barrier trip let go): one update where an {@link #unpark} and the slice's
+     * agents a barrier trip let go): one update where an {@link #endPark} and the slice's
      * {@link #startSlice} take two. False, and no change, unless the agent is parked with that ticket
-     * (serving meanwhile, or that park has ended): the caller then ends the park as {@code unpark}
+     * (serving meanwhile, or that park has ended): the caller then ends the park as {@code endPark}
      * does. Counted for the deadlock watchdog as an unpark is, by the caller, before.
      */
-    public boolean resumeParked(long ticket) {
+    protected final boolean resumeParked(long ticket) {
         long parked = ticket << STATE_BITS | PARKED;
         return word == parked && WORD.compareAndSet(this, parked, (long) RUNNING);
     }
@@ -224,7 +221,7 @@ public final class RunState {
      * wake-up and reschedules it. The caller counts the wake-up for the deadlock watchdog before,
      * or holds a pending one.
      */
-    public boolean unpark(long ticket) {
+    public final boolean endPark(long ticket) {
         if (ticket == 0) {
             return false;
         }
@@ -239,7 +236,7 @@ public final class RunState {
                 case RUNNING -> RUNNING_WOKEN;
                 case SERVING -> SERVING_WOKEN;
                 case DONE -> DONE;
-                default -> throw new IllegalStateException(owner.get() + " woken twice");
+                default -> throw new IllegalStateException(describe() + " woken twice");
             };
             if (WORD.compareAndSet(this, current, (long) next)) {
                 return state == PARKED;

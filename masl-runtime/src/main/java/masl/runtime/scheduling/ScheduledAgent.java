@@ -6,10 +6,10 @@ import masl.runtime.AgentProgram;
 import masl.runtime.Mission;
 
 /**
- * The scheduling side of an agent ({@code masl.runtime.Agent}): its {@link RunState}, the park in
- * progress and its kind, the bookkeeping of the current slice and the statement the agent is at.
- * The layers of an agent are superclasses, each of its package (this one, then
- * {@code entry.MemberAgent}, {@code event.ReactingAgent}, {@code invocation.ServingAgent}, then the
+ * The scheduling side of an agent ({@code masl.runtime.Agent}): its {@link RunState}, the layer it
+ * extends, the park in progress and its kind, the bookkeeping of the current slice and the
+ * statement the agent is at. The layers of an agent are superclasses, each of its package (the run
+ * state, this one, then {@code entry.MemberAgent}, {@code event.ReactingAgent}, {@code invocation.ServingAgent}, then the
  * boundaries that tie them, {@code SteppingAgent}, under {@code Agent} itself), not
  * objects it points to: an agent-step in lock-step reads fields of all of them, and one object
  * keeps them in the cache lines of one object, with no load of another's address on the way.
@@ -27,13 +27,14 @@ import masl.runtime.Mission;
  * <p><b>Internal:</b> not part of the API; public only for the other packages of the runtime (Java has no
  * friend packages), and may change without notice.
  */
-public abstract class ScheduledAgent implements AgentTask {
+public abstract class ScheduledAgent extends RunState implements AgentTask {
 
     protected final int id;
     protected final String name;
     protected final AgentProgram program;
     protected final Mission mission;
-    protected final RunState run;
+    /** The scheduler's {@link Scheduler#stepsPerSlice}, read once: every boundary compares with it. */
+    private final int stepsPerSlice;
     protected volatile boolean finished;
     /** Whether the agent's latest park is a busy-wait's: for the deadlock watchdog (Mission). */
     protected volatile boolean busyWaitPark;
@@ -64,7 +65,7 @@ public abstract class ScheduledAgent implements AgentTask {
         this.name = name;
         this.program = program;
         this.mission = mission;
-        this.run = new RunState(this::describe, mission::countSchedule);
+        this.stepsPerSlice = mission.scheduler().stepsPerSlice();
     }
 
     @Override
@@ -73,7 +74,13 @@ public abstract class ScheduledAgent implements AgentTask {
     }
 
     /** The agent, where it is in its program, for error messages. */
+    @Override
     public abstract String describe();
+
+    @Override
+    protected final void countWakeUp() {
+        mission.countSchedule();
+    }
 
     /**
      * The MASL statement the agent is at ({@code "e6.masl:14: synchronous entry turn (…)"}), or null
@@ -95,7 +102,7 @@ public abstract class ScheduledAgent implements AgentTask {
             busyWaitPark = false;
         }
         parkAttends = false;
-        return run.issueTicket();
+        return issueTicket();
     }
 
     /**
@@ -103,46 +110,27 @@ public abstract class ScheduledAgent implements AgentTask {
      * it goes on without waiting after all (the arrival that completes a synchronisation barrier).
      */
     public final void cancelPark(long ticket) {
-        if (!run.takeBack(ticket)) {
+        if (!takeBack(ticket)) {
             throw new IllegalStateException(describe() + ": its park was ended before it was taken back");
         }
         suspended = false;
     }
 
-    /** The ticket of the pending park, or 0 if the agent has none (it is running, not waiting). */
-    public final long pendingTicket() {
-        return run.pendingTicket();
-    }
-
     /** Ends the park that issued {@code ticket}; ignored if that park already ended. */
     public final void unpark(long ticket) {
-        if (ticket != 0 && run.pendingTicket() == ticket) {
+        if (ticket != 0 && pendingTicket() == ticket) {
             // Counted before the agent leaves PARKED, for the deadlock watchdog (Mission). Another
             // thread may end the park first: one count too many only puts the watchdog's verdict off.
             mission.countSchedule();
-            if (run.unpark(ticket)) {
+            if (endPark(ticket)) {
                 mission.scheduler().schedule(this);
             }
         }
     }
 
-    /**
-     * Ends the park that issued {@code ticket} ({@link RunState#unpark}), as {@link #unpark} does but
-     * for a caller that counted the wake-up already or holds a pending one, and that schedules the
-     * agent itself: true if it must.
-     */
-    public final boolean endPark(long ticket) {
-        return run.unpark(ticket);
-    }
-
-    /** Its program is over (finished or died); the mission may not have counted it out yet. */
-    public final boolean isDone() {
-        return run.isDone();
-    }
-
     /** Parked in a busy-wait: waiting for a change, which an outside invocation is. */
     public final boolean isParkedInBusyWait() {
-        return run.isParked() && busyWaitPark;
+        return isParked() && busyWaitPark;
     }
 
     /** {@code sleep(ms)} (AgentContext): parks the agent until {@code ms} have passed. */
@@ -197,12 +185,12 @@ public abstract class ScheduledAgent implements AgentTask {
     /** Its program is over: no slice runs it again. */
     protected final void end() {
         finished = true;
-        run.done();
+        done();
     }
 
     /** Counts a step of the slice; at the slice's end, parks the agent and wakes it at once (the scheduler's turn). */
     protected final boolean yieldIfSliceUsed() {
-        if (++stepsThisSlice < mission.scheduler().stepsPerSlice() && !halted()) {
+        if (++stepsThisSlice < stepsPerSlice && !halted()) {
             return true;
         }
         long ticket = prepareToPark();

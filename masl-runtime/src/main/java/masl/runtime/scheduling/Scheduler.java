@@ -90,7 +90,8 @@ public interface Scheduler {
 
     /**
      * How many step boundaries an agent may pass in one slice before it yields its thread to other
-     * agents; {@link Integer#MAX_VALUE} when agents have threads of their own.
+     * agents; {@link Integer#MAX_VALUE} when agents have threads of their own. The same for the
+     * scheduler's whole life: each agent reads it once, when it is made.
      */
     int stepsPerSlice();
 

@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
 class RunStateTest {
 
     private final AtomicInteger counted = new AtomicInteger();
-    private final RunState run = new RunState(() -> "agent a", counted::incrementAndGet);
+    private final RunState run = new LoneRunState(counted::incrementAndGet);
 
     /** A slice that started and issued the ticket of a park: the state a waiting runtime call leaves. */
     private long runningWithTicket() {
@@ -31,9 +31,9 @@ class RunStateTest {
         assertTrue(run.park(false));
         assertTrue(run.isParked());
 
-        assertTrue(run.unpark(ticket), "the caller must schedule it");
+        assertTrue(run.endPark(ticket), "the caller must schedule it");
         assertEquals(0, run.pendingTicket());
-        assertFalse(run.unpark(ticket), "a repeated unpark");
+        assertFalse(run.endPark(ticket), "a repeated unpark");
         assertTrue(run.startSlice());
     }
 
@@ -47,7 +47,7 @@ class RunStateTest {
         assertTrue(run.resumeParked(ticket));
         assertEquals(0, run.pendingTicket());
         assertFalse(run.isParked());
-        assertFalse(run.unpark(ticket), "that park has ended");
+        assertFalse(run.endPark(ticket), "that park has ended");
         long next = run.issueTicket();
         assertTrue(run.park(false), "the slice runs as one its scheduler started");
         assertEquals(next, run.pendingTicket());
@@ -61,7 +61,7 @@ class RunStateTest {
 
         assertFalse(run.resumeParked(ticket));
         assertTrue(run.isServing());
-        assertFalse(run.unpark(ticket), "noted for the serving slice, which schedules the program");
+        assertFalse(run.endPark(ticket), "noted for the serving slice, which schedules the program");
         assertFalse(run.park(true), "woken while served");
     }
 
@@ -69,21 +69,21 @@ class RunStateTest {
     void aStaleTicketEndsNoLaterPark() {
         long first = runningWithTicket();
         assertTrue(run.park(false));
-        assertTrue(run.unpark(first));
+        assertTrue(run.endPark(first));
         assertTrue(run.startSlice());
         long second = run.issueTicket();
         assertTrue(run.park(false));
 
-        assertFalse(run.unpark(first));
+        assertFalse(run.endPark(first));
         assertTrue(run.isParked());
         assertEquals(second, run.pendingTicket());
-        assertTrue(run.unpark(second));
+        assertTrue(run.endPark(second));
     }
 
     @Test
     void anUnparkWhileTheSliceRunsIsLeftToTheSliceWhichReschedules() {
         long ticket = runningWithTicket();
-        assertFalse(run.unpark(ticket), "the slice is still running");
+        assertFalse(run.endPark(ticket), "the slice is still running");
         assertFalse(run.park(false), "the park ended before the slice did");
         assertFalse(run.isParked());
 
@@ -96,7 +96,7 @@ class RunStateTest {
         long ticket = runningWithTicket();
         assertTrue(run.takeBack(ticket));
         assertEquals(0, run.pendingTicket());
-        assertFalse(run.unpark(ticket));
+        assertFalse(run.endPark(ticket));
         assertFalse(run.takeBack(ticket));
     }
 
@@ -109,7 +109,7 @@ class RunStateTest {
         assertEquals(ticket, run.pendingTicket(), "the agent still waits for its park to end");
         assertEquals(1, counted.get(), "leaving PARKED is counted for the deadlock watchdog");
 
-        assertFalse(run.unpark(ticket), "the serving slice notes it");
+        assertFalse(run.endPark(ticket), "the serving slice notes it");
         assertTrue(run.isServing());
         assertFalse(run.park(true));
         run.reschedule();
@@ -124,7 +124,7 @@ class RunStateTest {
         assertTrue(run.park(true));
 
         assertTrue(run.isParked());
-        assertTrue(run.unpark(ticket));
+        assertTrue(run.endPark(ticket));
     }
 
     @Test
@@ -147,7 +147,7 @@ class RunStateTest {
         assertFalse(run.startSlice(), "already running");
         assertTrue(run.park(false));
         assertFalse(run.startSlice(), "parked");
-        assertTrue(run.unpark(ticket));
+        assertTrue(run.endPark(ticket));
         assertTrue(run.startSlice());
     }
 
@@ -174,7 +174,7 @@ class RunStateTest {
         } catch (Exception e) {
             throw new AssertionError(e);
         }
-        if (run.unpark(ticket)) {
+        if (run.endPark(ticket)) {
             winners.incrementAndGet();
         }
     }
