@@ -1,8 +1,10 @@
 package masl.runtime.entry;
 
 import java.util.Arrays;
+import java.util.function.Function;
 import masl.runtime.Agent;
 import masl.runtime.Mission;
+import masl.runtime.scheduling.Scheduler;
 import masl.runtime.scheduling.SliceRun;
 
 /**
@@ -49,6 +51,8 @@ final class ArrivalCombiner implements SliceRun.Deferred {
     private final EntryCoordinator coordinator;
     private final Mission mission;
     private final SliceRun run;
+    /** The thread whose run it is: it is made on that thread, at the run's first deferred arrival. */
+    private final Thread thread = Thread.currentThread();
     private SynchronisationBarrier barrier;
     /** The phase of {@link #barrier} the held arrivals count in. */
     private int phase;
@@ -69,6 +73,28 @@ final class ArrivalCombiner implements SliceRun.Deferred {
         this.coordinator = coordinator;
         this.mission = mission;
         this.run = run;
+    }
+
+    /**
+     * The combiner of the calling thread's run of slices, made by {@code create} on first use, or
+     * null if {@code scheduler} runs no runs: the one that held the agent's latest arrival if it is
+     * the calling thread's (an agent mostly stays on its worker from step to step), else the
+     * scheduler's. In lock-step every agent-step arrives, and the scheduler's way (its thread, its
+     * worker, the run's deferred work) was a tenth of an agent-step.
+     */
+    static ArrivalCombiner ofCallingThread(MemberAgent agent, Scheduler scheduler,
+            Function<SliceRun, ArrivalCombiner> create) {
+        ArrivalCombiner last = agent.heldBy;
+        if (last != null && last.thread == Thread.currentThread()) {
+            return last;
+        }
+        SliceRun run = scheduler.currentRun();
+        if (run == null) {
+            return null;
+        }
+        ArrivalCombiner combiner = (ArrivalCombiner) run.deferred(create);
+        agent.heldBy = combiner;
+        return combiner;
     }
 
     /** Holds the arrival of {@code agent}, which has issued the ticket of its park, at {@code at}. */

@@ -225,9 +225,9 @@ public final class EntryCoordinator {
      */
     public boolean arriveAtBarrier(Agent agent, SynchronisationBarrier barrier) {
         long ticket = agent.prepareToPark();
-        SliceRun run = mission.scheduler().currentRun();
-        if (run != null) {
-            ((ArrivalCombiner) run.deferred(newCombiner)).arrive(agent, barrier);
+        ArrivalCombiner combiner = ArrivalCombiner.ofCallingThread(agent, mission.scheduler(), newCombiner);
+        if (combiner != null) {
+            combiner.arrive(agent, barrier);
             return false;
         }
         int completedPhase = barrier.arrive(agent);

@@ -57,6 +57,12 @@ public abstract class MemberAgent extends ScheduledAgent {
     public SynchronisationBarrier arrivedAt;
     /** The phase of {@link #arrivedAt} its arrival counted in. */
     public int arrivalPhase;
+    /**
+     * The run that held its latest arrival, or null: the next arrival, mostly made on the same
+     * worker, finds the run here instead of asking the scheduler for the calling thread's. Confined
+     * to its slices; a stale one (another thread's) is only looked past.
+     */
+    ArrivalCombiner heldBy;
 
     protected MemberAgent(int id, String name, AgentProgram program, Mission mission) {
         super(id, name, program, mission);
