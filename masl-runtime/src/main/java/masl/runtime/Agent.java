@@ -235,14 +235,14 @@ public final class Agent extends SteppingAgent implements AgentContext {
     @Override
     public Arrival enter(EntryDefinition block, boolean test) {
         atCallBefore();
-        requireOutsideReaction("arriving at " + block);
+        requireOutsideReaction("arriving at", block);
         return mission.coordinator().enter(this, mission.entry(block), test);
     }
 
     @Override
     public boolean leave(EntryDefinition block) {
         atCallBefore();
-        requireOutsideReaction("leaving " + block);
+        requireOutsideReaction("leaving", block);
         invoker.fireCountermeasures(memberships.size() - 1);
         return mission.coordinator().leaveAtEnd(this, mission.entry(block));
     }

@@ -57,12 +57,12 @@ abstract class SteppingAgent extends ServingAgent implements AgentContext {
     @Override
     public final boolean stepBoundary() {
         atCallBefore();
-        return instructionEnded("a step boundary");
+        return instructionEnded("a step boundary", null);
     }
 
-    /** The boundary after an instruction (§5), {@code what} for the error of one inside a reaction. */
-    private boolean instructionEnded(String what) {
-        requireOutsideReaction(what);
+    /** The boundary after an instruction (§5), {@code what} and its {@code subject} for the error of one inside a reaction. */
+    private boolean instructionEnded(String what, Object subject) {
+        requireOutsideReaction(what, subject);
         progress++;
         latestStep = program.pc();
         SynchronisationBarrier barrier = barrierDue();
@@ -85,14 +85,14 @@ abstract class SteppingAgent extends ServingAgent implements AgentContext {
     public final boolean endOfChild(EntryDefinition block) {
         atCallBefore();
         requireAtLevelOf(block.parent(), block);
-        return instructionEnded("the end of " + block.name());
+        return instructionEnded("the end of", block.name());
     }
 
     @Override
     public final boolean endOfSequence(ESequence sequence) {
         atCallBefore();
         requireAtLevelOf(sequence.parent(), sequence);
-        requireOutsideReaction("the end of an e-sequence");
+        requireOutsideReaction("the end of an e-sequence", null);
         progress++;
         if (startReactions(false)) {
             return false;

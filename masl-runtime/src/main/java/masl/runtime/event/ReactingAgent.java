@@ -137,11 +137,20 @@ public abstract class ReactingAgent extends MemberAgent {
         }
     }
 
-    /** Neither in a reaction, nor between the last one's end and its ending (resume, break, …). */
-    protected final void requireOutsideReaction(String what) {
-        requireNoReactionRunning(what);
-        if (reactionsUnderway && events.isEnding()) {
-            throw new IllegalStateException(describe() + ": " + what
+    /**
+     * Neither in a reaction, nor between the last one's end and its ending (resume, break, …):
+     * {@code what}, followed by {@code subject} unless it is null, names the operation in the error.
+     * The two are joined only for the error: a boundary or a block's entry that joined them each time
+     * built a string (and lower-cased a block's mode) per agent-step.
+     */
+    protected final void requireOutsideReaction(String what, Object subject) {
+        if (!reactionsUnderway) {
+            return;
+        }
+        String operation = subject == null ? what : what + " " + subject;
+        requireNoReactionRunning(operation);
+        if (events.isEnding()) {
+            throw new IllegalStateException(describe() + ": " + operation
                     + " after endReaction(): a reaction ends with resumeInterrupted, break, restart or reelect");
         }
     }
