@@ -133,7 +133,8 @@ final class Help {
                 --deploy AGENT=CONTAINER,... (*=C1+C2: every agent not named, spread over C1, C2 in turn)
                                     with --platform jade: run these agents' programs in the containers named
                                     (masl container), which translate the program themselves; the mission's
-                                    blocks, barriers, shared variables and events stay in this JVM
+                                    blocks, barriers, shared variables and events stay in this JVM; * leaves
+                                    out placed agents and those external FIPA agents (<Fipa>) stand for
                 """);
         OPTIONS.put("--secret-file", """
                 --secret-file FILE  with --place or --deploy (and for masl container): where run writes a fresh secret for the

@@ -12,7 +12,9 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
+import java.util.stream.Collectors;
 import masl.jade.JadeLauncher;
+import masl.jade.external.ExternalAgents;
 import masl.jade.placement.DeployedSource;
 import masl.jade.placement.Deployment;
 import masl.jade.placement.Placement;
@@ -76,7 +78,7 @@ final class JadeRun {
         this.options = line.mainHost != null ? JadeOptions.join(line.mainHost, line.mainPort)
                 : line.port != null ? JadeOptions.mainContainer().withPort(line.port) : JadeOptions.mainContainer();
         this.placement = line.place == null ? Map.of() : placement(line.place, loaded);
-        this.deployment = line.deploy == null ? Map.of() : deployment(line.deploy, loaded, placement.keySet());
+        this.deployment = line.deploy == null ? Map.of() : deployment(line.deploy, loaded, placement.keySet(), descriptors);
         this.deployedSource = deployment.isEmpty() ? null : deployedSource(source);
         this.journal = journal;
         if (line.secretFile != null && placement.isEmpty() && deployment.isEmpty()) {
@@ -106,12 +108,16 @@ final class JadeRun {
         return placement;
     }
 
-    /** {@code --deploy}: agents the program declares, not placed, to containers. */
-    private static Map<String, String> deployment(String option, MissionLoader loaded, Set<String> placed)
-            throws UsageException {
+    /** {@code --deploy}: agents the program declares, neither placed nor external FIPA agents, to containers. */
+    private static Map<String, String> deployment(String option, MissionLoader loaded, Set<String> placed,
+            DescriptorLoader descriptors) throws UsageException {
+        List<MissionProgram.AgentSpec> agents = loaded.program().agents();
+        Set<String> external = agents.stream()
+                .filter(spec -> ExternalAgents.isExternal(descriptors.loadByClassName(spec.typeClassName())))
+                .map(MissionProgram.AgentSpec::name).collect(Collectors.toSet());
         try {
-            return Deployment.parse(option, loaded.program().agents().stream().map(MissionProgram.AgentSpec::name).toList(),
-                    placed);
+            return Deployment.parse(option, agents.stream().map(MissionProgram.AgentSpec::name).toList(), placed,
+                    external);
         } catch (IllegalArgumentException bad) {
             throw new UsageException(bad.getMessage());
         }

@@ -10,7 +10,8 @@ import masl.runtime.diagnostic.Diagnostic;
 
 /**
  * Which container runs each deployed agent's program ({@code masl run --deploy}): {@code a=c2,b=c3};
- * {@code *} stands for every agent the option does not name and the placement does not place, and
+ * {@code *} stands for every agent the option does not name, the placement does not place and no
+ * external FIPA agent stands behind (its program runs here, its primitives are that agent's), and
  * {@code +} spreads those agents over several containers in turn, in declaration order:
  * {@code *=c2+c3} deploys the whole team over two containers. Agents not deployed run in the
  * coordinator's JVM. A mistake is reported with its position ({@code --deploy:1:7: error: …}).
@@ -29,10 +30,14 @@ public final class Deployment {
      *
      * @param declared the program's agents, in declaration order
      * @param placed the agents whose bodies {@code --place} puts elsewhere: their programs stay here
+     * @param external the agents whose primitives an external FIPA agent answers (a type with
+     *     {@code <Fipa>}): their programs stay here too
      * @throws IllegalArgumentException positioned, for a malformed pair, an agent named twice, an agent
-     *     the program does not declare, one that is also placed, or several containers for one agent
+     *     the program does not declare, one that is also placed or external, or several containers
+     *     for one agent
      */
-    public static Map<String, String> parse(String option, List<String> declared, Set<String> placed) {
+    public static Map<String, String> parse(String option, List<String> declared, Set<String> placed,
+            Set<String> external) {
         Map<String, String> named = new LinkedHashMap<>();
         List<String> spread = null;
         int column = 1;
@@ -51,7 +56,7 @@ public final class Deployment {
                 }
                 spread = containers;
             } else {
-                checkAgent(agent, at, declared, placed);
+                checkAgent(agent, at, declared, placed, external);
                 if (containers.size() > 1) {
                     throw error(at + equals + 1, agent + " is one agent: give it one container, or spread * over several");
                 }
@@ -66,7 +71,7 @@ public final class Deployment {
         for (String agent : declared) {
             if (named.containsKey(agent)) {
                 deployment.put(agent, named.get(agent));
-            } else if (spread != null && !placed.contains(agent)) {
+            } else if (spread != null && !placed.contains(agent) && !external.contains(agent)) {
                 deployment.put(agent, spread.get(turn++ % spread.size()));
             }
         }
@@ -88,7 +93,8 @@ public final class Deployment {
         return containers;
     }
 
-    private static void checkAgent(String agent, int column, List<String> declared, Set<String> placed) {
+    private static void checkAgent(String agent, int column, List<String> declared, Set<String> placed,
+            Set<String> external) {
         if (!NAME.matcher(agent).matches()) {
             throw error(column, "'" + agent + "' is not an agent name (or *)");
         }
@@ -98,6 +104,10 @@ public final class Deployment {
         if (placed.contains(agent)) {
             throw error(column, agent + " is placed with --place: its program runs here, its body there; deploy it"
                     + " or place it, not both");
+        }
+        if (external.contains(agent)) {
+            throw error(column, agent + " stands for an external FIPA agent (its type has <Fipa>): its program runs"
+                    + " here, its primitives are that agent's; it cannot be deployed");
         }
     }
 

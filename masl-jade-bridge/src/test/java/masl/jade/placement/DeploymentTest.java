@@ -15,7 +15,7 @@ class DeploymentTest {
 
     @Test
     void namedAgentsGoWhereNamedInDeclarationOrder() {
-        Map<String, String> deployment = Deployment.parse("w2=c3, leader=c2", TEAM, Set.of());
+        Map<String, String> deployment = Deployment.parse("w2=c3, leader=c2", TEAM, Set.of(), Set.of());
         assertEquals(List.of("leader", "w2"), List.copyOf(deployment.keySet()));
         assertEquals(Map.of("leader", "c2", "w2", "c3"), deployment);
         assertEquals(List.of("c2", "c3"), Deployment.containersOf(deployment));
@@ -24,14 +24,23 @@ class DeploymentTest {
     @Test
     void starSpreadsTheAgentsNotNamedOverItsContainersInTurn() {
         assertEquals(Map.of("leader", "c2", "w1", "c3", "w2", "c2", "w3", "c3"),
-                Deployment.parse("*=c2+c3", TEAM, Set.of()));
+                Deployment.parse("*=c2+c3", TEAM, Set.of(), Set.of()));
         assertEquals(Map.of("leader", "c9", "w1", "c2", "w2", "c3", "w3", "c2"),
-                Deployment.parse("leader=c9,*=c2+c3", TEAM, Set.of()));
+                Deployment.parse("leader=c9,*=c2+c3", TEAM, Set.of(), Set.of()));
     }
 
     @Test
     void starLeavesThePlacedAgentsHere() {
-        assertEquals(Map.of("leader", "c2", "w2", "c2", "w3", "c2"), Deployment.parse("*=c2", TEAM, Set.of("w1")));
+        assertEquals(Map.of("leader", "c2", "w2", "c2", "w3", "c2"), Deployment.parse("*=c2", TEAM, Set.of("w1"), Set.of()));
+    }
+
+    @Test
+    void starLeavesTheAgentsExternalFipaAgentsStandForHere() {
+        assertEquals(Map.of("leader", "c2", "w2", "c3"), Deployment.parse("*=c2+c3", TEAM, Set.of("w3"), Set.of("w1")));
+        assertEquals("--deploy:1:7: error: w1 stands for an external FIPA agent (its type has <Fipa>): its program"
+                + " runs here, its primitives are that agent's; it cannot be deployed",
+                assertThrows(IllegalArgumentException.class,
+                        () -> Deployment.parse("w2=c2,w1=c3", TEAM, Set.of(), Set.of("w1"))).getMessage());
     }
 
     @Test
@@ -51,10 +60,10 @@ class DeploymentTest {
         assertEquals("--deploy:1:1: error: w1 is placed with --place: its program runs here, its body there;"
                 + " deploy it or place it, not both",
                 assertThrows(IllegalArgumentException.class,
-                        () -> Deployment.parse("w1=c2", TEAM, Set.of("w1"))).getMessage());
+                        () -> Deployment.parse("w1=c2", TEAM, Set.of("w1"), Set.of())).getMessage());
     }
 
     private static String message(String option) {
-        return assertThrows(IllegalArgumentException.class, () -> Deployment.parse(option, TEAM, Set.of())).getMessage();
+        return assertThrows(IllegalArgumentException.class, () -> Deployment.parse(option, TEAM, Set.of(), Set.of())).getMessage();
     }
 }
