@@ -171,15 +171,25 @@ public final class DeployedTeam implements AutoCloseable {
             yield.put("failed", RemotePrimitiveException.classNameOf(failure))
                     .put("message", String.valueOf(failure.getMessage()));
         }
-        send(yield.put("pc", agent.program().pc()));
+        send(yield.put("pc", agent.program().pc()), agent.quiet().busyChangeOfNext());
     }
 
     /**
      * Sends {@code message}, after which its agent waits for the mission, with what was written to
-     * the journal since the last message.
+     * the journal since the last message; {@code busyChange} to the steps running here (-1, or 0 for
+     * one that counts as running no more, {@link #letGo}).
      */
-    synchronized void send(ObjectNode message) {
-        outbox.add(withJournal(message), -1);
+    synchronized void send(ObjectNode message, int busyChange) {
+        outbox.add(withJournal(message), busyChange);
+    }
+
+    /**
+     * A step that passes its boundaries here for long ({@link QuietBoundaries#LONG_RUN}) counts as
+     * busy no more: the others' messages go without waiting for it, as they would for a step that
+     * waits for the mission.
+     */
+    void letGo() {
+        outbox.busy(-1);
     }
 
     /** Sends {@code message}, which the mission waits for, at once, with what was written to the journal. */

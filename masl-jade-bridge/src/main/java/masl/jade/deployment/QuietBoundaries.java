@@ -14,9 +14,16 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
  * or the end of an iteration that ran no instruction. The next request carries how many boundaries
  * were passed here, which the runtime counts as its own. The numbers order the pushes, taken on the
  * container's receiving thread, with the answers, taken later by the step's: an answer says nothing
- * of what arrived after it.
+ * of what arrived after it. A step that passes {@link #LONG_RUN} boundaries in a row no longer holds
+ * its container's messages ({@link Outbox}), as it does while it runs between two requests of a wave.
  */
 final class QuietBoundaries {
+
+    /**
+     * Boundaries passed in a row after which the step no longer counts as about to send: a lock-step
+     * step passes one or two between its barriers; a loop that runs alone, thousands.
+     */
+    static final int LONG_RUN = 16;
 
     /** The number of the mission's latest {@code attend}: written by the receiving thread only. */
     private volatile long attendFrom;
@@ -28,6 +35,8 @@ final class QuietBoundaries {
     private int latestStep;
     private boolean barrierDue;
     private long passed;
+    private int inARow;
+    private boolean letGo;
 
     /** The mission's {@code attend} numbered {@code seq}: an event or invocation waits for a boundary. */
     void attend(long seq) {
@@ -40,6 +49,7 @@ final class QuietBoundaries {
     void told(JsonNode message) {
         JsonNode rest = message.get("atRest");
         atRest = rest != null;
+        inARow = 0;
         if (atRest) {
             toldAt = message.get("seq").longValue();
             latestStep = rest.get("latest").intValue();
@@ -56,8 +66,7 @@ final class QuietBoundaries {
             return false;
         }
         latestStep = head;
-        passed++;
-        return true;
+        return counted();
     }
 
     /**
@@ -70,8 +79,7 @@ final class QuietBoundaries {
             return false;
         }
         latestStep = next;
-        passed++;
-        return true;
+        return counted();
     }
 
     /** Whether the end of an e-sequence, which meets no barrier, is passed here: nothing arrived. */
@@ -79,8 +87,35 @@ final class QuietBoundaries {
         if (!quiet()) {
             return false;
         }
+        return counted();
+    }
+
+    private boolean counted() {
         passed++;
+        inARow++;
         return true;
+    }
+
+    /**
+     * Whether the step has just passed {@link #LONG_RUN} boundaries in a row: it lets its container's
+     * messages go from now on, until its next message ({@link #busyChangeOfNext}).
+     */
+    boolean lettingGo() {
+        if (letGo || inARow < LONG_RUN) {
+            return false;
+        }
+        letGo = true;
+        return true;
+    }
+
+    /**
+     * What the step's next message changes in its container's count of busy steps: -1, as any, or 0
+     * for a step that let the container's messages go already.
+     */
+    int busyChangeOfNext() {
+        int change = letGo ? 0 : -1;
+        letGo = false;
+        return change;
     }
 
     private boolean quiet() {
@@ -94,5 +129,6 @@ final class QuietBoundaries {
             passed = 0;
         }
         atRest = false;
+        inARow = 0;
     }
 }

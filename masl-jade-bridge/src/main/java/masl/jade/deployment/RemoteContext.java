@@ -128,7 +128,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
     JsonNode call(String op, ObjectNode request) {
         request.put("kind", "call").put("agent", id).put("op", op).put("pc", program.pc());
         quiet.request(request);
-        team.send(request);
+        team.send(request, quiet.busyChangeOfNext());
         ObjectNode answer = team.await(answers);
         // The mission performs the request holding a lock (a shared variable's) and has this step run
         // the variable's function meanwhile, whose own requests to the mission nest in this one.
@@ -246,7 +246,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
     public boolean stepBoundary() {
         team.requireMission();
         if (quiet.passStep(program.pc(), team.written())) {
-            return true;
+            return passed();
         }
         return bool("stepBoundary", JSON.objectNode());
     }
@@ -256,7 +256,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
     public boolean loopIteration() {
         team.requireMission();
         if (quiet.passLoopHead(program.pc())) {
-            return true;
+            return passed();
         }
         return bool("loopIteration", JSON.objectNode());
     }
@@ -264,6 +264,14 @@ final class RemoteContext implements AgentContext, Values.Labels {
     @Override
     public boolean busyWaitIteration() {
         return bool("busyWaitIteration", JSON.objectNode());
+    }
+
+    /** A boundary passed here: true, the step going on; one that runs long lets its container's messages go. */
+    private boolean passed() {
+        if (quiet.lettingGo()) {
+            team.letGo();
+        }
+        return true;
     }
 
     @Override
@@ -286,7 +294,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
     public boolean endOfSequence(ESequence sequence) {
         team.requireMission();
         if (quiet.passEndOfSequence()) {
-            return true;
+            return passed();
         }
         return bool("endOfSequence", JSON.objectNode().put("sequence", Blocks.name(sequence)));
     }

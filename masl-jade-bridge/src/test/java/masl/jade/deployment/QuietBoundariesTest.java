@@ -1,8 +1,10 @@
 package masl.jade.deployment;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import java.time.Duration;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
@@ -53,6 +55,24 @@ class QuietBoundariesTest {
         assertEquals("done\n", run.outcome().journal(), run.outcome().toString());
         // Entering, leaving and finishing; a step's own would be one more a step.
         assertTrue(run.messagesFromContainer() < 10, run.messagesFromContainer() + " messages from the container");
+    }
+
+    @Test
+    void aStepThatPassesItsBoundariesForLongHoldsItsContainersMessagesNoMore() {
+        QuietBoundaries quiet = new QuietBoundaries();
+        quiet.told(JsonNodeFactory.instance.objectNode().put("seq", 1).set("atRest",
+                JsonNodeFactory.instance.objectNode().put("latest", 0).put("barrier", false)));
+        for (int pass = 1; pass < QuietBoundaries.LONG_RUN; pass++) {
+            assertTrue(quiet.passLoopHead(3));
+            assertFalse(quiet.lettingGo(), "after " + pass + " boundaries");
+        }
+        assertTrue(quiet.passLoopHead(3));
+        assertTrue(quiet.lettingGo());
+        assertTrue(quiet.passLoopHead(3));
+        assertFalse(quiet.lettingGo(), "once");
+        // Its next message leaves the count of busy steps as it is, and the one after takes one off.
+        assertEquals(0, quiet.busyChangeOfNext());
+        assertEquals(-1, quiet.busyChangeOfNext());
     }
 
     @Test
