@@ -89,6 +89,15 @@ public final class DeployedPrograms {
         agent.onBoundaryWork(hook);
     }
 
+    /**
+     * {@code requester} invoked {@code callee}'s {@code primitive} from the case {@code pc} of its
+     * program and {@code callee} served it, both in their container, which ran the call: recorded in
+     * the trace as the runtime records an invocation it serves.
+     */
+    public static void invokedElsewhere(Agent requester, Agent callee, String primitive, int pc) {
+        requester.invokedElsewhere(callee, primitive, pc);
+    }
+
     /** Sets {@code program}'s resumption point: the mission's runtime moved it (a reaction, a resume). */
     public static void jump(AgentProgram program, int pc) {
         program.jump(pc);

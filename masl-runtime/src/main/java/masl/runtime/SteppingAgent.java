@@ -264,6 +264,16 @@ abstract class SteppingAgent extends ServingAgent implements AgentContext {
         return sourceOf(statementPc, statementIsLoop);
     }
 
+    /**
+     * This agent invoked {@code callee}'s {@code primitive} from the case {@code pc} of its program,
+     * and {@code callee} served it, both where their programs run (a deployed team's container):
+     * traced as the runtime traces an invocation it queues and serves.
+     */
+    final void invokedElsewhere(SteppingAgent callee, String primitive, int pc) {
+        mission.trace().record(new TraceEvent.InvocationMade(now(), id(), callee.id(), primitive, sourceOf(pc, false)));
+        mission.trace().record(new TraceEvent.InvocationServed(now(), callee.id(), id(), primitive, callee.source()));
+    }
+
     private String sourceOf(int statement, boolean loopHead) {
         String source = loopHead ? program.sourceAt(statement) : program.sourceOfCallIn(statement);
         for (int pc = statement - 1; source == null && pc >= 0 && pc > statement - 4; pc--) {

@@ -3,6 +3,7 @@ package masl.jade.deployment;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
@@ -137,11 +138,19 @@ public final class Coordination {
     }
 
     /**
-     * The proxy id each message from a container names, in order: one for a message, one per message
-     * of a batch; -1 where none is named. A container speaks only for its own agents.
+     * The proxy ids each message from a container names, in order: one for a message, one per message
+     * of a batch, and the callee too of an invocation the container says it served; -1 where none is
+     * named. A container speaks only for its own agents: it vouches for both ends of such an invocation.
      */
     public static List<Integer> agentsNamed(ObjectNode message) {
-        return Outbox.each(message).stream().map(inner -> inner.path("agent").asInt(-1)).toList();
+        List<Integer> named = new ArrayList<>();
+        for (ObjectNode inner : Outbox.each(message)) {
+            named.add(inner.path("agent").asInt(-1));
+            if ("invoked".equals(inner.path("kind").asText())) {
+                named.add(inner.path("callee").asInt(-1));
+            }
+        }
+        return named;
     }
 
     private boolean waitsForTheMission(JsonNode message) {
@@ -172,8 +181,26 @@ public final class Coordination {
                     run.answer().complete(message);
                 }
             }
+            case "invoked" -> invokedInContainer(message);
             default -> throw new IllegalArgumentException("not a message of a deployed agent: " + message);
         }
+    }
+
+    /**
+     * An invocation between two agents of one container, which that container served
+     * ({@code InvocationsHere}): traced as the runtime traces one it serves. Both agents must be
+     * deployed, to the container that sent it (the wire that carries it checked the sender).
+     */
+    private void invokedInContainer(ObjectNode record) {
+        int requester = record.path("agent").asInt(-1);
+        int callee = record.path("callee").asInt(-1);
+        Mission running = mission;
+        if (running == null || !standIns.containsKey(requester) || !standIns.containsKey(callee)
+                || wireOf.apply(requester) != wireOf.apply(callee)) {
+            throw new IllegalArgumentException("not an invocation between agents of one container: " + record);
+        }
+        DeployedPrograms.invokedElsewhere(running.agentOf(agents.get(requester)), running.agentOf(agents.get(callee)),
+                record.path("primitive").asText(), record.path("pc").asInt());
     }
 
     /**

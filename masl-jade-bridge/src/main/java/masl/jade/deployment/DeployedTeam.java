@@ -85,6 +85,11 @@ public final class DeployedTeam implements AutoCloseable {
         return members;
     }
 
+    /** The context of agent {@code proxyId} if it runs here, else null. */
+    RemoteContext context(int proxyId) {
+        return hosted.get(proxyId);
+    }
+
     /**
      * A message from the mission: a step to run, an answer to a request, a call to run; or a batch of
      * them, in the order the mission made them.
@@ -118,7 +123,16 @@ public final class DeployedTeam implements AutoCloseable {
                     calls.execute(() -> ran(agent, message, run(message)));
                 }
             }
-            case "primitive", "read", "write" -> calls.execute(() -> ran(agent, message, named(agent, message)));
+            case "primitive" -> calls.execute(() -> {
+                // A primitive the mission served: never alongside one served here (CalleeTurn).
+                agent.turn().missionRunBegins();
+                try {
+                    ran(agent, message, named(agent, message));
+                } finally {
+                    agent.turn().missionRunEnds();
+                }
+            });
+            case "read", "write" -> calls.execute(() -> ran(agent, message, named(agent, message)));
             default -> throw new IllegalArgumentException("not a message of the mission: " + message);
         }
     }
@@ -157,6 +171,7 @@ public final class DeployedTeam implements AutoCloseable {
 
     private void step(RemoteContext agent, ObjectNode resume) {
         ObjectNode yield = resume.objectNode().put("kind", "yield").put("agent", agent.id());
+        agent.turn().programGoesOn();
         try {
             agent.completeDone(resume.get("done"));
             agent.quiet().told(resume);
@@ -171,6 +186,7 @@ public final class DeployedTeam implements AutoCloseable {
             yield.put("failed", RemotePrimitiveException.classNameOf(failure))
                     .put("message", String.valueOf(failure.getMessage()));
         }
+        agent.turn().programRests();
         send(yield.put("pc", agent.program().pc()), agent.quiet().busyChangeOfNext());
     }
 
@@ -190,6 +206,16 @@ public final class DeployedTeam implements AutoCloseable {
      */
     void letGo() {
         outbox.busy(-1);
+    }
+
+    /**
+     * Agent {@code requester} invoked {@code callee}'s {@code primitive} from the case {@code pc} of
+     * its program, and this container served it: the mission traces it, with the container's next
+     * message, in order with the journal text the primitive wrote.
+     */
+    synchronized void invokedHere(int requester, int callee, String primitive, int pc) {
+        outbox.add(withJournal(JsonNodeFactory.instance.objectNode().put("kind", "invoked").put("agent", requester)
+                .put("callee", callee).put("primitive", primitive).put("pc", pc)), 0);
     }
 
     /** Sends {@code message}, which the mission waits for, at once, with what was written to the journal. */

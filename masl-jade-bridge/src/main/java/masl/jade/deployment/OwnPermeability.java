@@ -1,5 +1,6 @@
 package masl.jade.deployment;
 
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import masl.runtime.descriptor.AgentType;
@@ -34,6 +35,21 @@ final class OwnPermeability {
         String memberId = type == null ? null : type.findPrimitive(primitive).map(Primitive::memberId).orElse(null);
         return !armed.contains(primitive)
                 && Permeability.allows(current, memberId, Requester.SELF, PermeabilityState.INVOKE);
+    }
+
+    /**
+     * Whether the agent's state lets another agent invoke its {@code primitive} now, whatever the
+     * caller's relation to it, which only the mission knows (§11: g or o; u too for a static
+     * primitive, whose callers of the agent's type count as the agent).
+     */
+    boolean letsOthersInvoke(String primitive) {
+        Optional<Primitive> declared = type == null ? Optional.empty() : type.findPrimitive(primitive);
+        String memberId = declared.map(Primitive::memberId).orElse(null);
+        PermeabilityState state = current;
+        boolean anyOther = Permeability.allows(state, memberId, Requester.GROUP, PermeabilityState.INVOKE)
+                && Permeability.allows(state, memberId, Requester.OTHER, PermeabilityState.INVOKE);
+        boolean isStatic = declared.map(Primitive::isStatic).orElse(false);
+        return anyOther && (!isStatic || Permeability.allows(state, memberId, Requester.SELF, PermeabilityState.INVOKE));
     }
 
     /** Whether the agent may read ({@link PermeabilityState#READ}) or write its own {@code attribute} here, now. */

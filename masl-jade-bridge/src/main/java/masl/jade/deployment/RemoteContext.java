@@ -65,12 +65,17 @@ final class RemoteContext implements AgentContext, Values.Labels {
     private final Map<String, RemoteLabel> labels = new ConcurrentHashMap<>();
     private final AtomicLong labelNumbers = new AtomicLong();
     private final QuietBoundaries quiet = new QuietBoundaries();
+    /** When this container may serve this agent an invocation of another agent of it, there. */
+    private final CalleeTurn turn = new CalleeTurn();
+    /** This agent's invocations of the other agents of this container. */
+    private final InvocationsHere here;
 
     RemoteContext(int id, AgentProgram program, OwnPermeability own, DeployedTeam team) {
         this.id = id;
         this.program = program;
         this.own = own;
         this.team = team;
+        this.here = new InvocationsHere(this, team);
     }
 
     int id() {
@@ -84,6 +89,14 @@ final class RemoteContext implements AgentContext, Values.Labels {
     /** This agent's boundaries passed here: what the mission's messages say of them. */
     QuietBoundaries quiet() {
         return quiet;
+    }
+
+    CalleeTurn turn() {
+        return turn;
+    }
+
+    OwnPermeability own() {
+        return own;
     }
 
     /** An answer of the mission to this agent's request. */
@@ -128,8 +141,10 @@ final class RemoteContext implements AgentContext, Values.Labels {
     JsonNode call(String op, ObjectNode request) {
         request.put("kind", "call").put("agent", id).put("op", op).put("pc", program.pc());
         quiet.request(request);
-        team.send(request, quiet.busyChangeOfNext());
-        ObjectNode answer = team.await(answers);
+        ObjectNode answer = turn.during(op, () -> {
+            team.send(request, quiet.busyChangeOfNext());
+            return team.await(answers);
+        });
         // The mission performs the request holding a lock (a shared variable's) and has this step run
         // the variable's function meanwhile, whose own requests to the mission nest in this one.
         while ("run".equals(answer.path("kind").asText())) {
@@ -388,6 +403,10 @@ final class RemoteContext implements AgentContext, Values.Labels {
     @Override
     public <T> CompletableFuture<T> invoke(AgentImplementation callee, String primitive, T defaultValue,
             Callable<T> call) {
+        CompletableFuture<T> served = here.served(callee, primitive, defaultValue, call, mirrors.isEmpty());
+        if (served != null) {
+            return served;
+        }
         return queued("invoke", callee, primitive, defaultValue, call, JSON.objectNode());
     }
 
@@ -405,7 +424,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
             }
             number = team.callbacks().number();
         } else {
-            number = team.callbacks().call(call);
+            number = team.callbacks().call(here.onItsObject(callee, call));
         }
         CompletableFuture<Object> future = new CompletableFuture<>();
         mirrors.put(number, new Mirror(future, number, defaultValue));
@@ -541,11 +560,12 @@ final class RemoteContext implements AgentContext, Values.Labels {
         if (proxyId(callee) == id) {
             own.armed(primitive);
         }
+        here.armed(callee, primitive);
         ObjectNode request = JSON.objectNode().put("countermeasure", countermeasure);
         if (byName(callee, countermeasure)) {
             request.set("countermeasureArgs", args(Recording.of(countermeasureCall)));
         } else {
-            request.put("countermeasureCall", team.callbacks().call(countermeasureCall));
+            request.put("countermeasureCall", team.callbacks().call(here.onItsObject(callee, countermeasureCall)));
         }
         return queued("launch", callee, primitive, defaultValue, call, request);
     }

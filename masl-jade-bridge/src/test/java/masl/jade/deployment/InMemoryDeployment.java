@@ -21,8 +21,12 @@ public final class InMemoryDeployment {
     private InMemoryDeployment() {
     }
 
-    /** How the mission ended, and how many messages went from the containers to the mission and back. */
-    public record Run(MissionOutcome outcome, int messagesFromContainer, int messagesToContainer) {
+    /**
+     * How the mission ended, how many messages went from the containers to the mission and back, and
+     * how many of each kind either way ({@link DeployedInMemory.Run#kinds}).
+     */
+    public record Run(MissionOutcome outcome, int messagesFromContainer, int messagesToContainer,
+            Map<String, Integer> kinds) {
     }
 
     public static Run run(Supplier<MissionProgram> program, Set<String> deployed, Duration timeout)
@@ -46,7 +50,7 @@ public final class InMemoryDeployment {
             DeployedInMemory.Wires wires, Duration timeout) throws InterruptedException {
         DeployedInMemory.Run run = DeployedInMemory.run(program, containerOfAgent, InMemoryDeployment::newAgent,
                 TestPrograms::type, trace, wires, timeout);
-        return new Run(run.outcome(), run.messagesFromContainers(), run.messagesToContainers());
+        return new Run(run.outcome(), run.messagesFromContainers(), run.messagesToContainers(), run.kinds());
     }
 
     private static AgentImplementation newAgent(MissionProgram.AgentSpec spec) throws ReflectiveOperationException {

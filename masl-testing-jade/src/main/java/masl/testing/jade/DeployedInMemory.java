@@ -84,8 +84,13 @@ public final class DeployedInMemory implements MissionPlatform {
         return deployed;
     }
 
-    /** How a mission ended, and how many messages went from the containers to the mission and back. */
-    public record Run(MissionOutcome outcome, int messagesFromContainers, int messagesToContainers) {
+    /**
+     * How a mission ended, how many messages went from the containers to the mission and back, and how
+     * many of each kind went either way, each message a batch combines counted ({@code "run"}: code a
+     * container is asked to run; {@code "ran"}: its answer).
+     */
+    public record Run(MissionOutcome outcome, int messagesFromContainers, int messagesToContainers,
+            Map<String, Integer> kinds) {
     }
 
     @Override
@@ -141,6 +146,7 @@ public final class DeployedInMemory implements MissionPlatform {
             Trace trace, Wires wires, Duration timeout) throws InterruptedException {
         AtomicInteger messages = new AtomicInteger();
         AtomicInteger answers = new AtomicInteger();
+        Map<String, Integer> kinds = new ConcurrentHashMap<>();
         ExecutorService toMission = Executors.newSingleThreadExecutor();
         AtomicReference<Coordination> mission = new AtomicReference<>();
         AtomicReference<Mission> running = new AtomicReference<>();
@@ -157,6 +163,7 @@ public final class DeployedInMemory implements MissionPlatform {
                 });
                 teams.put(container, new DeployedTeam(program.get(), here, implementations, message -> {
                     messages.incrementAndGet();
+                    countKinds(message, kinds);
                     if (wires.carry(container)) {
                         toMission.execute(() -> mission.get().receive(overTheWire(message)));
                     }
@@ -166,6 +173,7 @@ public final class DeployedInMemory implements MissionPlatform {
                 // One wire per container, as over JADE: its agents' messages go together.
                 wireOf.put(container, message -> {
                     answers.incrementAndGet();
+                    countKinds(message, kinds);
                     if (wires.carry(container)) {
                         toContainer.execute(() -> teams.get(container).receive(overTheWire(message)));
                     }
@@ -192,11 +200,21 @@ public final class DeployedInMemory implements MissionPlatform {
             coordination.agents(running.get(), created);
             wires.lose = container -> coordination.lose(names.stream().filter(name -> container.equals(
                     containerOfAgent.get(name))).map(names::indexOf).toList(), "the container " + container + " is gone");
-            return new Run(running.get().run(timeout), messages.get(), answers.get());
+            MissionOutcome outcome = running.get().run(timeout);
+            return new Run(outcome, messages.get(), answers.get(), Map.copyOf(kinds));
         } finally {
             teams.values().forEach(DeployedTeam::close);
             toContainers.values().forEach(ExecutorService::shutdownNow);
             toMission.shutdownNow();
+        }
+    }
+
+    /** Counts the kind of {@code message}, or of each message of a batch. */
+    private static void countKinds(ObjectNode message, Map<String, Integer> kinds) {
+        if ("batch".equals(message.path("kind").asText())) {
+            message.path("messages").forEach(inner -> kinds.merge(inner.path("kind").asText(), 1, Integer::sum));
+        } else {
+            kinds.merge(message.path("kind").asText(), 1, Integer::sum);
         }
     }
 
