@@ -128,6 +128,12 @@ class DeployedInJadeTest {
                 + "\"primitive\":\"logln\",\"args\":[{\"string\":\"forged\"}],\"call\":1}");
     }
 
+    /** A container's record of an invocation it served between two of its agents, forged. */
+    @Test
+    void aForgedInvocationServedInAContainerIsRefused() throws Exception {
+        assertForgedRefused("{\"kind\":\"invoked\",\"agent\":0,\"callee\":1,\"primitive\":\"logln\",\"pc\":3}");
+    }
+
     /**
      * Before the mission starts, the forger sends {@code content} as agent a0's container would, once
      * unsigned and once signed by itself with the mission's secret (a member of the mission speaking for
