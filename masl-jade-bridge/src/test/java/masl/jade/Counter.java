@@ -8,8 +8,11 @@ public class Counter extends TestAgent {
     /** What {@link #count} has counted, or what another agent wrote. */
     public int total;
 
-    /** Adds {@code by} to the total and gives the total. */
+    /** Adds {@code by} to the total and gives the total; a negative {@code by} throws. */
     public int count(int by) {
+        if (by < 0) {
+            throw new IllegalArgumentException("a count goes up");
+        }
         total += by;
         return total;
     }

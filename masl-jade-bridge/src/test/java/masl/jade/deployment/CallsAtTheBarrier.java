@@ -15,13 +15,15 @@ import masl.runtime.Mode;
 /**
  * A mission of two {@link Counter}s: {@code owner} enters {@code main} and leaves it at once, held by
  * the exit barrier; {@code caller} waits (sleeping) until the barrier holds the owner, then invokes
- * its {@code count(1)} three times, each awaited, and leaves; the owner then says its total. The
- * owner is blocked at each call, so the runtime serves each at once on its behalf. Journal:
- * {@link #JOURNAL}.
+ * its {@code count(1)} three times, each awaited (if {@code secondThrows}, the second is {@code
+ * count(-1)}, which throws: the caller perceives {@code uncaught_exception} and counts 0), and leaves;
+ * the owner then says its total. The owner is blocked at each call, so the runtime serves each at
+ * once on its behalf. Journal: {@link #JOURNAL}, or {@link #JOURNAL_WITH_THROW}.
  */
-record CallsAtTheBarrier() implements MissionProgram {
+record CallsAtTheBarrier(boolean secondThrows) implements MissionProgram {
 
     static final String JOURNAL = "count 1\ncount 2\ncount 3\nowner's total 3\n";
+    static final String JOURNAL_WITH_THROW = "count 1\ncount 0\ncount 2\nowner's total 2\n";
 
     private static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
     private static final List<AgentSpec> AGENTS = List.of(new AgentSpec("owner", Counter.class.getName()),
@@ -45,7 +47,7 @@ record CallsAtTheBarrier() implements MissionProgram {
         }
         for (int i = 0; i < population.length; i++) {
             builder.agent(AGENTS.get(i).name(), (Counter) population[i], TestPrograms.type(AGENTS.get(i)),
-                    self -> new Calls(self, (Counter) population[0]));
+                    self -> new Calls(self, (Counter) population[0], secondThrows));
         }
         return builder;
     }
@@ -55,7 +57,7 @@ record CallsAtTheBarrier() implements MissionProgram {
      * synchronous entry main (true) {
      *   if (me == caller) {
      *     while (main.getWaitingOutCount() == 0) sleep(5);
-     *     repeat 3: .logln("count " + owner.count(1));
+     *     repeat 3: .logln("count " + owner.count(1));  // count(-1) the second time if secondThrows
      *   }
      * }
      * if (me == owner) .logln("owner's total " + total);
@@ -65,11 +67,13 @@ record CallsAtTheBarrier() implements MissionProgram {
         private final Counter self;
         private final Counter owner;
         private int calls;
+        private final boolean secondThrows;
         private CompletableFuture<Integer> counted;
 
-        Calls(Counter self, Counter owner) {
+        Calls(Counter self, Counter owner, boolean secondThrows) {
             this.self = self;
             this.owner = owner;
+            this.secondThrows = secondThrows;
         }
 
         private void logln(AgentContext ctx, String line) {
@@ -100,7 +104,8 @@ record CallsAtTheBarrier() implements MissionProgram {
                             if (!ctx.sleep(5)) return;
                             continue;
                         }
-                        counted = ctx.invoke(owner, "count", 0, () -> owner.count(1));
+                        int by = secondThrows && calls == 1 ? -1 : 1;
+                        counted = ctx.invoke(owner, "count", 0, () -> owner.count(by));
                         pc = 2;
                         if (!ctx.await(counted)) return;
                         continue;

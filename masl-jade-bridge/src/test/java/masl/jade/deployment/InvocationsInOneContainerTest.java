@@ -25,7 +25,7 @@ class InvocationsInOneContainerTest {
 
     @Test
     void aCallOfABlockedAgentOfTheSameContainerCostsNoMessageOfItsOwn() throws Exception {
-        InMemoryDeployment.Run run = InMemoryDeployment.run(CallsAtTheBarrier::new,
+        InMemoryDeployment.Run run = InMemoryDeployment.run(() -> new CallsAtTheBarrier(false),
                 Map.of("owner", "c2", "caller", "c2"), TIMEOUT);
         assertTrue(run.outcome().completed(), run.outcome().toString());
         assertEquals(CallsAtTheBarrier.JOURNAL, run.outcome().journal());
@@ -44,9 +44,22 @@ class InvocationsInOneContainerTest {
         assertEquals(3, deployed.events(TraceEvent.InvocationServed.class).size());
     }
 
+    /** A primitive served in the container that throws: the caller perceives {@code uncaught_exception}, as in-process. */
+    @Test
+    void aPrimitiveThatThrowsMakesTheCallerPerceiveUncaughtExceptionAsInProcess() throws Exception {
+        MemoryTrace inProcess = new MemoryTrace();
+        MemoryTrace deployed = new MemoryTrace();
+        assertEquals(CallsAtTheBarrier.JOURNAL_WITH_THROW, journal(Map.of(), inProcess, true));
+        assertEquals(CallsAtTheBarrier.JOURNAL_WITH_THROW, journal(Map.of("owner", "c2", "caller", "c2"), deployed,
+                true));
+        assertEquals(invocations(inProcess), invocations(deployed));
+        assertEquals(uncaught(inProcess), uncaught(deployed));
+        assertEquals(List.of("emitted 1 java.lang.IllegalArgumentException", "dropped 1"), uncaught(deployed));
+    }
+
     @Test
     void aCallOfAnAgentOfAnotherContainerStillGoesThroughTheMission() throws Exception {
-        InMemoryDeployment.Run run = InMemoryDeployment.run(CallsAtTheBarrier::new,
+        InMemoryDeployment.Run run = InMemoryDeployment.run(() -> new CallsAtTheBarrier(false),
                 Map.of("owner", "c2", "caller", "c3"), TIMEOUT);
         assertEquals(CallsAtTheBarrier.JOURNAL, run.outcome().journal());
         assertEquals(0, run.kinds().getOrDefault("invoked", 0), run.kinds().toString());
@@ -62,10 +75,31 @@ class InvocationsInOneContainerTest {
     }
 
     private static String journal(Map<String, String> deployment, MemoryTrace trace) throws InterruptedException {
-        MissionOutcome outcome = InMemoryDeployment.run(CallsAtTheBarrier::new, deployment, trace,
+        return journal(deployment, trace, false);
+    }
+
+    private static String journal(Map<String, String> deployment, MemoryTrace trace, boolean secondThrows)
+            throws InterruptedException {
+        MissionOutcome outcome = InMemoryDeployment.run(() -> new CallsAtTheBarrier(secondThrows), deployment, trace,
                 new DeployedInMemory.Wires(), TIMEOUT).outcome();
         assertTrue(outcome.completed(), outcome.toString());
         return outcome.journal();
+    }
+
+    /** What the trace says of {@code uncaught_exception}: who perceived it, with what. */
+    private static List<String> uncaught(MemoryTrace trace) {
+        return trace.events().stream().map(event -> {
+            if (event instanceof TraceEvent.EventEmitted emitted && emitted.event().contains("uncaught")) {
+                return "emitted " + emitted.agent() + " " + emitted.message();
+            }
+            if (event instanceof TraceEvent.EventDropped dropped && dropped.event().contains("uncaught")) {
+                return "dropped " + dropped.agent();
+            }
+            if (event instanceof TraceEvent.EventReacted reacted && reacted.event().contains("uncaught")) {
+                return "reacted " + reacted.agent();
+            }
+            return null;
+        }).filter(line -> line != null).toList();
     }
 
     /** The invocations made and served, with their agents, member and MASL source, in order. */
