@@ -328,10 +328,10 @@ public final class JadeLauncher {
             tables.add(new PrimitiveTable(types.apply(specs.get(id)), created.get(id).getClass()));
         }
         List<Agent> hosts = new ArrayList<>();
-        CountDownLatch ready = new CountDownLatch(specs.size() - placement.size() - deployment.size() - externals.count());
+        CountDownLatch ready = new CountDownLatch(specs.size() - placement.size() - externals.count());
         for (int id = 0; id < specs.size(); id++) {
-            if (placement.containsKey(names.get(id)) || deployment.containsKey(names.get(id))) {
-                // Runs the program (or a deployed program's stand-in); the body is elsewhere.
+            if (placement.containsKey(names.get(id))) {
+                // Runs the program; the body is elsewhere, and its JADE agent there.
                 hosts.add(distribution.coordinator());
                 continue;
             }

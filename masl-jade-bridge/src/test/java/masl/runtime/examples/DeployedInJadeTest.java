@@ -19,6 +19,7 @@ import masl.jade.Probe;
 import masl.jade.Tallies;
 import masl.jade.TestPrograms;
 import masl.jade.acl.AclInvocations;
+import masl.jade.acl.Reply;
 import masl.jade.placement.DeployedSource;
 import masl.jade.placement.MaslContainer;
 import masl.jade.placement.ProgramTranslator;
@@ -38,8 +39,9 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 /**
  * E2 with its agents' programs deployed to containers of this JVM's platform over signed ACL: the
  * journal in-process gives; an agent's counts and writes reach another agent's real object in another
- * container; a container whose translation is not the coordinator's refuses before the
- * mission starts; a coordination message another agent of the platform forges is refused and said.
+ * container; a FIPA agent's request to a deployed agent runs on its real object; a container whose
+ * translation is not the coordinator's refuses before the mission starts; a coordination message
+ * another agent of the platform forges is refused and said.
  */
 @Timeout(180)
 class DeployedInJadeTest {
@@ -81,6 +83,32 @@ class DeployedInJadeTest {
                     .secret(SECRET).run(JADE.platform(), TIMEOUT);
             assertTrue(outcome.completed(), outcome.toString());
             assertEquals(Tallies.COUNTS_AND_WRITES, outcome.journal());
+        }
+    }
+
+    /**
+     * A plain FIPA agent asks the deployed {@code owner}, by its name, to count 1,000 as the mission
+     * starts: the owner serves it at a boundary, on its real object in container d8, whose counts
+     * the mission's and the FIPA agent's add up on.
+     */
+    @Test
+    void aFipaAgentInvokesADeployedAgentOnItsRealObject() throws Exception {
+        Probe asker = new Probe();
+        JADE.platform().container().acceptNewAgent("deployed-asker", asker).start();
+        try (MaslContainer d8 = container("d8", KEY, () -> new Tallies(false))) {
+            MissionOutcome outcome = JadeLauncher.of(new Tallies(false)).types(TestPrograms::type)
+                    .deploy(Map.of("owner", "d8"), SOURCE).secret(SECRET).whenReady(mission -> asker.sendMessage(
+                            AclInvocations.request(new AID("owner", AID.ISLOCALNAME), "count", List.of(1000), "asked")))
+                    .run(JADE.platform(), TIMEOUT);
+            assertTrue(outcome.completed(), outcome.toString());
+            Reply answer = AclInvocations.readReply(asker.next());
+            // The real object counted 1,000 on top of the caller's counts served before it (0 to 3),
+            // and the owner's total says 1,003 unless the request came after its last count; a copy
+            // would answer 1,000 and leave the owner's total at 3.
+            int counted = answer instanceof Reply.Result result ? result.value().intValue() : -1;
+            String total = outcome.journal().lines().reduce((first, last) -> last).orElse("");
+            assertTrue(counted >= 1000 && counted <= 1003, answer.toString());
+            assertTrue(total.equals("owner's total 1003") || counted == 1003, counted + "\n" + outcome.journal());
         }
     }
 
