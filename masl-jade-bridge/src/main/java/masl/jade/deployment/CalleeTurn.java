@@ -27,7 +27,7 @@ final class CalleeTurn {
      * request {@code op}, and going on, once the invocation served here meanwhile has ended.
      */
     <T> T during(String op, Supplier<T> request) {
-        boolean rests = RESTING.contains(op);
+        boolean rests = restsDuring(op);
         if (rests) {
             programRests();
         }
@@ -38,6 +38,11 @@ final class CalleeTurn {
                 programGoesOn();
             }
         }
+    }
+
+    /** Whether the program rests as a blocked agent does while the mission performs its request {@code op}. */
+    static boolean restsDuring(String op) {
+        return RESTING.contains(op);
     }
 
     /** Whether the program runs: from the start, so that nothing is served before its first step. */

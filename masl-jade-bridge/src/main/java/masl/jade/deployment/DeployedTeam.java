@@ -12,6 +12,8 @@ import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.ForkJoinWorkerThread;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
 import masl.runtime.AgentImplementation;
@@ -36,9 +38,17 @@ public final class DeployedTeam implements AutoCloseable {
     private final Callbacks callbacks = new Callbacks();
     private final TeamMembers members = new TeamMembers();
     private final TeamJournal journal = new TeamJournal();
-    private final ExecutorService steps = Executors.newCachedThreadPool(daemon("masl-deployed-step"));
+    /**
+     * The agents' steps: a thread per core, a step holding one only while it runs, since a program
+     * returns from the calls after which it waits for the mission's resumption (RemoteContext); a step
+     * waiting for a value in a call has another thread stand in for it meanwhile ({@link #await}).
+     */
+    private final ExecutorService steps = new ForkJoinPool(Runtime.getRuntime().availableProcessors(),
+            DeployedTeam::stepThread, null, true, 0, MAX_STEP_THREADS, 1, pool -> true, 30, TimeUnit.SECONDS);
     private final ExecutorService calls = Executors.newCachedThreadPool(daemon("masl-deployed-call"));
     private volatile String lost;
+    /** The most threads the steps' pool has, standing in for steps that wait in a call: its limit. */
+    private static final int MAX_STEP_THREADS = 0x7fff;
 
     /**
      * Makes the programs of {@code program}'s agents named in {@code names}, with implementations
@@ -113,7 +123,13 @@ public final class DeployedTeam implements AutoCloseable {
         RemoteContext agent = hosted.get(message.path("agent").intValue());
         switch (message.path("kind").textValue()) {
             case "resume" -> steps.execute(() -> step(agent, message));
-            case "answer" -> agent.answered(message);
+            case "answer" -> {
+                if (agent.resumption(message)) {
+                    steps.execute(() -> step(agent, message));
+                } else {
+                    agent.answered(message);
+                }
+            }
             case "attend" -> agent.quiet().attend(message.get("seq").longValue());
             case "run" -> {
                 if (inStep(message)) {
@@ -186,6 +202,15 @@ public final class DeployedTeam implements AutoCloseable {
             yield.put("failed", RemotePrimitiveException.classNameOf(failure))
                     .put("message", String.valueOf(failure.getMessage()));
         }
+        ObjectNode returnedFrom = yield.has("failed") ? null : agent.returnedFrom();
+        if (returnedFrom != null) {
+            // The program returned from a call that waits for the mission's answer: no thread waits with it.
+            if (CalleeTurn.restsDuring(returnedFrom.get("op").textValue())) {
+                agent.turn().programRests();
+            }
+            send(returnedFrom, agent.quiet().busyChangeOfNext());
+            return;
+        }
         agent.turn().programRests();
         send(yield.put("pc", agent.program().pc()), agent.quiet().busyChangeOfNext());
     }
@@ -231,21 +256,47 @@ public final class DeployedTeam implements AutoCloseable {
         return message;
     }
 
-    /** The next answer in {@code answers}; throws {@link MissionLost} once the mission is gone. */
+    /**
+     * The next answer in {@code answers}; throws {@link MissionLost} once the mission is gone. A step's
+     * thread waits as a blocker of its pool, which starts another meanwhile for the steps to run.
+     */
     ObjectNode await(BlockingQueue<ObjectNode> answers) {
+        Answer answer = new Answer(answers);
         try {
-            while (true) {
-                ObjectNode answer = answers.poll(100, TimeUnit.MILLISECONDS);
-                if (answer != null) {
-                    return answer;
-                }
-                if (lost != null) {
-                    throw new MissionLost(lost);
-                }
-            }
+            ForkJoinPool.managedBlock(answer);
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
             throw new MissionLost("interrupted");
+        }
+        return answer.taken;
+    }
+
+    /** Waiting for the next answer in a queue, checking every 100 ms that the mission is still there. */
+    private final class Answer implements ForkJoinPool.ManagedBlocker {
+        private final BlockingQueue<ObjectNode> answers;
+        private ObjectNode taken;
+
+        Answer(BlockingQueue<ObjectNode> answers) {
+            this.answers = answers;
+        }
+
+        @Override
+        public boolean block() throws InterruptedException {
+            while (taken == null) {
+                taken = answers.poll(100, TimeUnit.MILLISECONDS);
+                if (taken == null && lost != null) {
+                    throw new MissionLost(lost);
+                }
+            }
+            return true;
+        }
+
+        @Override
+        public boolean isReleasable() {
+            if (taken == null) {
+                taken = answers.poll();
+            }
+            return taken != null;
         }
     }
 
@@ -275,6 +326,12 @@ public final class DeployedTeam implements AutoCloseable {
     @Override
     public void close() {
         lose("the mission has ended");
+    }
+
+    private static ForkJoinWorkerThread stepThread(ForkJoinPool pool) {
+        ForkJoinWorkerThread thread = ForkJoinPool.defaultForkJoinWorkerThreadFactory.newThread(pool);
+        thread.setName("masl-deployed-step-" + thread.getPoolIndex());
+        return thread;
     }
 
     private static ThreadFactory daemon(String name) {

@@ -8,12 +8,14 @@ import java.util.ArrayList;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionStage;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
@@ -48,6 +50,18 @@ final class RemoteContext implements AgentContext, Values.Labels {
 
     private static final JsonNodeFactory JSON = JsonNodeFactory.instance;
 
+    /**
+     * The calls of {@link StandIn#SUSPENDING} after which the program, re-entered at its resumption
+     * point, goes on where it would have gone on had the call answered true: the generated code sets
+     * that point before the call ({@code pc = next; if (!ctx.stepBoundary()) return;}) or goes back to
+     * it after ({@code continue;}). Such a call answers false at once and its request goes once the
+     * step has returned, freeing its thread; the mission's answer, true or the step's resumption,
+     * starts the program's next step at the answer's point. Not {@code endReaction}, whose case calls
+     * it again when re-entered.
+     */
+    private static final Set<String> RETURNING = Set.of("stepBoundary", "loopIteration", "busyWaitIteration",
+            "endOfChild", "endOfSequence", "leave", "resumeInterrupted", "sleep", "await", "waitFor");
+
     /** A future the program holds for a call the mission queued or launched. */
     private record Mirror(CompletableFuture<Object> future, long call, Object defaultValue) {
     }
@@ -61,6 +75,10 @@ final class RemoteContext implements AgentContext, Values.Labels {
     private final Map<CompletionStage<?>, Long> callOf = new IdentityHashMap<>();
     /** Confined to the thread running the agent's step. */
     private boolean resumedInCall;
+    /** The request of a call that returned false without its answer, sent once the step has returned. */
+    private ObjectNode returnedFrom;
+    /** Whether the mission's next answer to this agent resumes its program, which waits for it in no thread. */
+    private final AtomicBoolean awaitsResumption = new AtomicBoolean();
     /** This program's views of the mission's labels, by key; the labels it made are numbered here. */
     private final Map<String, RemoteLabel> labels = new ConcurrentHashMap<>();
     private final AtomicLong labelNumbers = new AtomicLong();
@@ -173,7 +191,31 @@ final class RemoteContext implements AgentContext, Values.Labels {
     }
 
     private boolean bool(String op, ObjectNode request) {
+        if (RETURNING.contains(op)) {
+            request.put("kind", "call").put("agent", id).put("op", op).put("pc", program.pc());
+            quiet.request(request);
+            returnedFrom = request;
+            return false;
+        }
         return call(op, request).booleanValue();
+    }
+
+    /**
+     * The request of the call the program returned from with no answer ({@link #RETURNING}), or null;
+     * if there is one, the mission's next answer to this agent resumes the program ({@link #resumption}).
+     */
+    ObjectNode returnedFrom() {
+        ObjectNode request = returnedFrom;
+        returnedFrom = null;
+        if (request != null) {
+            awaitsResumption.set(true);
+        }
+        return request;
+    }
+
+    /** Whether {@code answer}, on the receiving thread, is the resumption of a program that returned from its call. */
+    boolean resumption(JsonNode answer) {
+        return "answer".equals(answer.path("kind").asText()) && awaitsResumption.compareAndSet(true, false);
     }
 
     private ObjectNode block(EntryDefinition block) {
