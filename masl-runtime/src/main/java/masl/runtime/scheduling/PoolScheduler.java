@@ -4,7 +4,6 @@ import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ForkJoinPool;
-import java.util.concurrent.ForkJoinWorkerThread;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.ThreadFactory;
@@ -81,10 +80,10 @@ public final class PoolScheduler implements Scheduler {
     /** How long a runner that ran out of work waits for another runner's trip before it stops. */
     private static final long SPIN_NANOS = 100_000;
     /**
-     * Slices a runner runs in a row from its hand-over slot ({@link Worker#handsOver}) before the
+     * Slices a runner runs in a row from its hand-over slot ({@link PoolWorker#handsOver}) before the
      * agents its slices make runnable go to the common queue again, behind those waiting there.
      */
-    private static final int HAND_OVERS = CHUNK;
+    static final int HAND_OVERS = CHUNK;
     /**
      * The wave from which the batches a trip lets go are shared among the workers, each run by its
      * home worker: those of a shorter wave are all run by the thread that let them go, since
@@ -97,13 +96,13 @@ public final class PoolScheduler implements Scheduler {
     private final int workers;
     private final ScheduledThreadPoolExecutor timer;
     /** {@link AgentTask}s, {@link RunBatch}es and {@link WokenBatch}es, in the order they were made runnable. */
-    private final ConcurrentLinkedQueue<Object> runQueue = new ConcurrentLinkedQueue<>();
+    final ConcurrentLinkedQueue<Object> runQueue = new ConcurrentLinkedQueue<>();
     /** The runs of the pool's live workers, whose home queues hold the rest of the runnable work. */
-    private final List<SliceRun> runs = new CopyOnWriteArrayList<>();
+    final List<SliceRun> runs = new CopyOnWriteArrayList<>();
     /** Runners submitted and not blocked in a primitive, idle ones included: at most {@link #workers} are started. */
     private final AtomicInteger runners = new AtomicInteger();
     /** Runners waiting, in their task, for work: woken before any new runner is started. */
-    private final ConcurrentLinkedQueue<Worker> idle = new ConcurrentLinkedQueue<>();
+    private final ConcurrentLinkedQueue<PoolWorker> idle = new ConcurrentLinkedQueue<>();
     private final Runnable runner = this::drainRunQueue;
     private volatile boolean shutDown;
 
@@ -119,7 +118,7 @@ public final class PoolScheduler implements Scheduler {
         this.workers = workers;
         AtomicInteger count = new AtomicInteger();
         ForkJoinPool.ForkJoinWorkerThreadFactory factory = forkJoinPool -> {
-            Worker thread = new Worker(forkJoinPool, this);
+            PoolWorker thread = new PoolWorker(forkJoinPool, this);
             runs.add(thread.run);
             thread.setName("masl-worker-" + count.incrementAndGet());
             thread.setDaemon(true);
@@ -137,7 +136,7 @@ public final class PoolScheduler implements Scheduler {
 
     @Override
     public void schedule(AgentTask agent) {
-        Worker worker = ownWorker();
+        PoolWorker worker = ownWorker();
         if (worker != null && worker.handsOver(agent)) {
             return;
         }
@@ -166,13 +165,13 @@ public final class PoolScheduler implements Scheduler {
 
     @Override
     public SliceRun currentRun() {
-        Worker worker = ownWorker();
+        PoolWorker worker = ownWorker();
         return worker == null ? null : worker.run;
     }
 
     /** The calling thread if it is one of this pool's workers, else null. */
-    private Worker ownWorker() {
-        return Thread.currentThread() instanceof Worker worker && worker.scheduler == this ? worker : null;
+    private PoolWorker ownWorker() {
+        return Thread.currentThread() instanceof PoolWorker worker && worker.scheduler == this ? worker : null;
     }
 
     /** Wakes another runner if the common queue holds work, which would otherwise wait for this runner. */
@@ -186,8 +185,8 @@ public final class PoolScheduler implements Scheduler {
      * Wakes an idle runner, or starts one unless {@link #workers} are counted already; true if it
      * woke or started one.
      */
-    private boolean startRunnerIfNeeded() {
-        Worker sleeper = idle.poll();
+    boolean startRunnerIfNeeded() {
+        PoolWorker sleeper = idle.poll();
         if (sleeper != null) {
             sleeper.wake();
             return true;
@@ -219,7 +218,7 @@ public final class PoolScheduler implements Scheduler {
      * (started while another runner was blocked, which has come back).
      */
     private void drainRunQueue() {
-        Worker self = (Worker) Thread.currentThread();
+        PoolWorker self = (PoolWorker) Thread.currentThread();
         boolean counted = true;
         try {
             while (!shutDown) {
@@ -266,7 +265,7 @@ public final class PoolScheduler implements Scheduler {
      * down. Work queued after the runner's last look but before it was listed idle found no idle
      * runner to wake, so the runner looks once more after listing itself, and takes itself back.
      */
-    private void idleUntilWoken(Worker self) {
+    private void idleUntilWoken(PoolWorker self) {
         self.woken = false;
         idle.add(self);
         if ((hasWork() || shutDown) && idle.remove(self)) {
@@ -284,7 +283,7 @@ public final class PoolScheduler implements Scheduler {
      * its hand-over slot, then the batches of its own home queue, then the common queue's head, then
      * another worker's home batch.
      */
-    private void runUntilEmpty(Worker self) {
+    private void runUntilEmpty(PoolWorker self) {
         SliceRun run = self.run;
         int sinceFlush = 0;
         int flushEvery = slicesPerFlush(run);
@@ -382,7 +381,7 @@ public final class PoolScheduler implements Scheduler {
     }
 
     /** Claims a chunk of the batch at the head of the queue and runs it; returns how many slices it ran. */
-    private int runChunk(Worker self, RunBatch batch) {
+    private int runChunk(PoolWorker self, RunBatch batch) {
         int from = batch.claim(CHUNK);
         int to = Math.min(from + CHUNK, batch.size());
         if (to == batch.size()) {
@@ -396,12 +395,12 @@ public final class PoolScheduler implements Scheduler {
     }
 
     /** Wakes the agents of a batch this runner has taken and runs their slices; returns how many. */
-    private int runWoken(Worker self, WokenBatch batch) {
+    private int runWoken(PoolWorker self, WokenBatch batch) {
         return batch.run(self);
     }
 
     /** Runs one slice of {@code agent} on {@code self}, which knows meanwhile whose slice it runs; returns 1. */
-    private static int runSlice(Worker self, AgentTask agent) {
+    static int runSlice(PoolWorker self, AgentTask agent) {
         self.running = agent;
         try {
             agent.runSlice();
@@ -415,7 +414,7 @@ public final class PoolScheduler implements Scheduler {
      * Moves the agent in the runner's hand-over slot, if any, to the common queue. The callers start
      * a runner for it next, once this one no longer counts (a runner that blocks, a worker that ends).
      */
-    private void releaseHandOver(Worker self) {
+    void releaseHandOver(PoolWorker self) {
         AgentTask handedOver = self.takeHandOver();
         if (handedOver != null) {
             runQueue.add(handedOver);
@@ -431,7 +430,7 @@ public final class PoolScheduler implements Scheduler {
      */
     @Override
     public void scheduleWoken(WokenBatch batch) {
-        Worker worker = ownWorker();
+        PoolWorker worker = ownWorker();
         if (worker != null && worker.inRun && batch.wave() < SHARED_FROM) {
             // Too short a pass to share: the runner that tripped runs it before it goes idle, and
             // wakes no other, which would only steal it.
@@ -455,7 +454,7 @@ public final class PoolScheduler implements Scheduler {
      * it and a {@link #scheduleWoken} that finds it closed after adding call this, so nothing
      * queued there is left behind.
      */
-    private void moveToCommonQueue(SliceRun closed) {
+    void moveToCommonQueue(SliceRun closed) {
         WokenBatch batch;
         while ((batch = closed.homeQueue.poll()) != null) {
             runQueue.add(batch);
@@ -463,7 +462,7 @@ public final class PoolScheduler implements Scheduler {
     }
 
     /** Takes the agent at the head of the queue, unless another runner did, and runs its slice. */
-    private int runAlone(Worker self, AgentTask agent) {
+    private int runAlone(PoolWorker self, AgentTask agent) {
         if (!runQueue.remove(agent)) {
             return 0;
         }
@@ -486,7 +485,7 @@ public final class PoolScheduler implements Scheduler {
 
     /** Called by {@link Blocking} around a call that blocks its thread. */
     static void blocking(boolean starts) {
-        if (Thread.currentThread() instanceof Worker worker) {
+        if (Thread.currentThread() instanceof PoolWorker worker) {
             if (starts) {
                 // Agents whose arrivals the run holds, or that it would run next, must not wait for
                 // however long this blocks.
@@ -514,7 +513,7 @@ public final class PoolScheduler implements Scheduler {
     @Override
     public void shutdown() {
         shutDown = true;
-        for (Worker sleeper : idle) {
+        for (PoolWorker sleeper : idle) {
             sleeper.wake();
         }
         timer.shutdownNow();
@@ -527,89 +526,5 @@ public final class PoolScheduler implements Scheduler {
             thread.setDaemon(true);
             return thread;
         };
-    }
-
-    /** A worker of one scheduler's pool: lets {@link Blocking} find the runner it runs, and its run of slices. */
-    private static final class Worker extends ForkJoinWorkerThread implements WokenBatch.Slices {
-        final PoolScheduler scheduler;
-        final SliceRun run = new SliceRun();
-        /** Set by whoever takes the worker off the idle list to wake it. */
-        volatile boolean woken;
-        /** Whether its runner is in {@link #runUntilEmpty}, and so takes what comes to its home queue before it goes idle. */
-        boolean inRun;
-        /** Blocking calls ({@link Blocking}) the worker is in: its runner is not counted meanwhile. */
-        int blockedCalls;
-        /** The agent whose slice the worker runs, null between slices. */
-        AgentTask running;
-        /** The hand-over slot: an agent a slice made runnable, which this worker runs next. */
-        private AgentTask next;
-        /** Slices run in a row from the slot. */
-        private int handedOverInARow;
-
-        Worker(ForkJoinPool pool, PoolScheduler scheduler) {
-            super(pool);
-            this.scheduler = scheduler;
-        }
-
-        void wake() {
-            woken = true;
-            LockSupport.unpark(this);
-        }
-
-        @Override
-        public void slice(AgentTask agent) {
-            runSlice(this, agent);
-        }
-
-        @Override
-        public boolean wokenSlice(AgentTask agent, long ticket) {
-            running = agent;
-            try {
-                return agent.runSliceWoken(ticket);
-            } finally {
-                running = null;
-            }
-        }
-
-        /**
-         * Takes {@code agent}, made runnable by the slice this worker runs, into the hand-over slot,
-         * unless the agent is the slice's own (a slice that yields goes behind the others), the slot
-         * is taken, the worker blocks in a primitive, or it has run {@value #HAND_OVERS} slices from
-         * the slot in a row: agents that take turns (an invocation and its answer) then stay on one
-         * core, without a trip through the common queue that the other runner contends for. True if
-         * it took it.
-         */
-        boolean handsOver(AgentTask agent) {
-            if (running == null || agent == running || next != null || blockedCalls > 0
-                    || handedOverInARow >= HAND_OVERS) {
-                return false;
-            }
-            next = agent;
-            return true;
-        }
-
-        /** The agent in the slot, now taken out of it, or null; counts the slices run from it in a row. */
-        AgentTask takeHandOver() {
-            AgentTask agent = next;
-            if (agent == null) {
-                handedOverInARow = 0;
-                return null;
-            }
-            next = null;
-            handedOverInARow++;
-            return agent;
-        }
-
-        @Override
-        protected void onTermination(Throwable exception) {
-            scheduler.releaseHandOver(this);
-            run.closed = true;
-            scheduler.moveToCommonQueue(run);
-            scheduler.runs.remove(run);
-            if (!scheduler.runQueue.isEmpty()) {
-                scheduler.startRunnerIfNeeded();
-            }
-            super.onTermination(exception);
-        }
     }
 }
