@@ -124,7 +124,7 @@ public final class DeployedTeam implements AutoCloseable {
         switch (message.path("kind").textValue()) {
             case "resume" -> steps.execute(() -> step(agent, message));
             case "answer" -> {
-                if (agent.resumption(message)) {
+                if (agent.returning().resumption(message)) {
                     steps.execute(() -> step(agent, message));
                 } else {
                     agent.answered(message);
@@ -193,7 +193,7 @@ public final class DeployedTeam implements AutoCloseable {
             agent.quiet().told(resume);
             DeployedPrograms.resume(agent.program(), resume.get("pc").intValue(), agent);
             // A call that suspended the step and was answered with its resumption: the step goes on here.
-            while (agent.resumedInCall()) {
+            while (agent.returning().resumedInCall()) {
                 DeployedPrograms.resume(agent.program(), agent.program().pc(), agent);
             }
         } catch (MissionLost gone) {
@@ -202,7 +202,7 @@ public final class DeployedTeam implements AutoCloseable {
             yield.put("failed", RemotePrimitiveException.classNameOf(failure))
                     .put("message", String.valueOf(failure.getMessage()));
         }
-        ObjectNode returnedFrom = yield.has("failed") ? null : agent.returnedFrom();
+        ObjectNode returnedFrom = yield.has("failed") ? null : agent.returning().taken();
         if (returnedFrom != null) {
             // The program returned from a call that waits for the mission's answer: no thread waits with it.
             if (CalleeTurn.restsDuring(returnedFrom.get("op").textValue())) {

@@ -8,14 +8,12 @@ import java.util.ArrayList;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionStage;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.LinkedBlockingQueue;
-import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 import java.util.function.Supplier;
@@ -50,18 +48,6 @@ final class RemoteContext implements AgentContext, Values.Labels {
 
     private static final JsonNodeFactory JSON = JsonNodeFactory.instance;
 
-    /**
-     * The calls of {@link StandIn#SUSPENDING} after which the program, re-entered at its resumption
-     * point, goes on where it would have gone on had the call answered true: the generated code sets
-     * that point before the call ({@code pc = next; if (!ctx.stepBoundary()) return;}) or goes back to
-     * it after ({@code continue;}). Such a call answers false at once and its request goes once the
-     * step has returned, freeing its thread; the mission's answer, true or the step's resumption,
-     * starts the program's next step at the answer's point. Not {@code endReaction}, whose case calls
-     * it again when re-entered.
-     */
-    private static final Set<String> RETURNING = Set.of("stepBoundary", "loopIteration", "busyWaitIteration",
-            "endOfChild", "endOfSequence", "leave", "resumeInterrupted", "sleep", "await", "waitFor");
-
     /** A future the program holds for a call the mission queued or launched. */
     private record Mirror(CompletableFuture<Object> future, long call, Object defaultValue) {
     }
@@ -73,12 +59,8 @@ final class RemoteContext implements AgentContext, Values.Labels {
     private final BlockingQueue<ObjectNode> answers = new LinkedBlockingQueue<>();
     private final Map<Long, Mirror> mirrors = new ConcurrentHashMap<>();
     private final Map<CompletionStage<?>, Long> callOf = new IdentityHashMap<>();
-    /** Confined to the thread running the agent's step. */
-    private boolean resumedInCall;
-    /** The request of a call that returned false without its answer, sent once the step has returned. */
-    private ObjectNode returnedFrom;
-    /** Whether the mission's next answer to this agent resumes its program, which waits for it in no thread. */
-    private final AtomicBoolean awaitsResumption = new AtomicBoolean();
+    /** This program's calls that return from its step to be resumed: at once, or once answered. */
+    private final ReturningCalls returning = new ReturningCalls();
     /** This program's views of the mission's labels, by key; the labels it made are numbered here. */
     private final Map<String, RemoteLabel> labels = new ConcurrentHashMap<>();
     private final AtomicLong labelNumbers = new AtomicLong();
@@ -157,8 +139,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
 
     /** Request {@code op} to the mission, answered with its value (a label's view asks the mission's label so). */
     JsonNode call(String op, ObjectNode request) {
-        request.put("kind", "call").put("agent", id).put("op", op).put("pc", program.pc());
-        quiet.request(request);
+        request(op, request);
         ObjectNode answer = turn.during(op, () -> {
             team.send(request, quiet.busyChangeOfNext());
             return team.await(answers);
@@ -172,18 +153,15 @@ final class RemoteContext implements AgentContext, Values.Labels {
         completeDone(answer.get("done"));
         quiet.told(answer);
         DeployedPrograms.jump(program, answer.get("pc").intValue());
-        resumedInCall = answer.path("resumed").booleanValue();
+        returning.answered(answer);
         return answer.get("value");
     }
 
-    /**
-     * Whether the last call suspended the step and the mission has resumed it since: the call
-     * answered false (the program returns), and the step goes on from the program's resumption point.
-     */
-    boolean resumedInCall() {
-        boolean resumed = resumedInCall;
-        resumedInCall = false;
-        return resumed;
+    /** {@code request} made the program's request {@code op}, with the boundaries it passed here. */
+    private ObjectNode request(String op, ObjectNode request) {
+        request.put("kind", "call").put("agent", id).put("op", op).put("pc", program.pc());
+        quiet.request(request);
+        return request;
     }
 
     private JsonNode call(String op) {
@@ -191,31 +169,12 @@ final class RemoteContext implements AgentContext, Values.Labels {
     }
 
     private boolean bool(String op, ObjectNode request) {
-        if (RETURNING.contains(op)) {
-            request.put("kind", "call").put("agent", id).put("op", op).put("pc", program.pc());
-            quiet.request(request);
-            returnedFrom = request;
-            return false;
-        }
-        return call(op, request).booleanValue();
+        return ReturningCalls.returns(op) ? returning.returned(request(op, request))
+                : call(op, request).booleanValue();
     }
 
-    /**
-     * The request of the call the program returned from with no answer ({@link #RETURNING}), or null;
-     * if there is one, the mission's next answer to this agent resumes the program ({@link #resumption}).
-     */
-    ObjectNode returnedFrom() {
-        ObjectNode request = returnedFrom;
-        returnedFrom = null;
-        if (request != null) {
-            awaitsResumption.set(true);
-        }
-        return request;
-    }
-
-    /** Whether {@code answer}, on the receiving thread, is the resumption of a program that returned from its call. */
-    boolean resumption(JsonNode answer) {
-        return "answer".equals(answer.path("kind").asText()) && awaitsResumption.compareAndSet(true, false);
+    ReturningCalls returning() {
+        return returning;
     }
 
     private ObjectNode block(EntryDefinition block) {
