@@ -112,11 +112,10 @@ final class ArrayValues {
     }
 
     private static JsonNode item(Object item) {
-        if (item instanceof Double d && !Double.isFinite(d) || item instanceof Float f && !Float.isFinite(f)) {
-            return JSON.textNode(item.toString());
+        if (item instanceof Double || item instanceof Float) {
+            return Values.decimal((Number) item);
         } else if (item instanceof Number number) {
-            return number instanceof Double || number instanceof Float ? JSON.numberNode(number.doubleValue())
-                    : JSON.numberNode(number.longValue());
+            return JSON.numberNode(number.longValue());
         } else if (item instanceof Boolean b) {
             return JSON.booleanNode(b);
         } else if (item instanceof AgentImplementation agent) {

@@ -62,9 +62,9 @@ final class Values {
         } else if (value instanceof Byte b) {
             tagged.put("byte", b);
         } else if (value instanceof Double d) {
-            return Double.isFinite(d) ? tagged.put("double", d) : tagged.put("double", d.toString());
+            tagged.set("double", decimal(d));
         } else if (value instanceof Float f) {
-            return Float.isFinite(f) ? tagged.put("float", f) : tagged.put("float", f.toString());
+            tagged.set("float", decimal(f));
         } else if (value instanceof Boolean b) {
             tagged.put("boolean", b);
         } else if (value instanceof Character c) {
@@ -119,6 +119,18 @@ final class Values {
             case "label" -> labels.label(value.textValue());
             default -> throw new IllegalArgumentException("not a value: " + json);
         };
+    }
+
+    /**
+     * A {@code double} or {@code float} as it travels, alone or in an array: a number, or the string
+     * of one JSON has no number for ({@code NaN}, the infinities), which {@link #decimal(JsonNode)}
+     * reads back.
+     */
+    static JsonNode decimal(Number value) {
+        if (!Double.isFinite(value.doubleValue())) {
+            return JSON.textNode(value.toString());
+        }
+        return value instanceof Float f ? JSON.numberNode(f) : JSON.numberNode(value.doubleValue());
     }
 
     /** A {@code double} as it travels: a number, or the string of one JSON has no number for. */
