@@ -19,7 +19,7 @@ final class CommandLine {
 
     /** The options each command accepts; those in {@link #FLAGS} take no value. */
     private static final Map<String, Set<String>> OPTIONS = Map.of(
-            "check", Set.of("--agent-path", "--quiet"),
+            "check", Set.of("--agent-path", "--quiet", "--no-cache"),
             "compile", Set.of("--agent-path", "-d", "--quiet"),
             "run", Set.of("--agent-path", "--threads", "--quiet", "--seed", "--timeout", "--call-timeout", "--trace",
                     "--trace-limit", "--platform", "--main-host", "--main-port", "--sim", "--out", "--place", "--port",

@@ -54,11 +54,12 @@ final class Help {
                 translate a MASL program into Java sources under DIR (one folder per package)
                 """, List.of("-d", "--agent-path", "--quiet")));
         COMMANDS.put("check", new Command("""
-                masl check FILE [--agent-path PATH] [--quiet]
+                masl check FILE [--agent-path PATH] [--quiet] [--no-cache]
                 """, null, """
                 report every error of a MASL program and of the descriptors it imports: all that
-                compile and run would report, as they translate and compile it, without running it
-                """, List.of("--agent-path", "--quiet")));
+                compile and run would report, as they translate and compile it, without running it;
+                a program without errors is left compiled in the cache, for the next run
+                """, List.of("--agent-path", "--no-cache", "--quiet")));
         COMMANDS.put("timeline", new Command("""
                 masl timeline TRACE -o FILE.html
                 """, null, """
@@ -103,9 +104,10 @@ final class Help {
                                     the run goes on; a trace that cannot be written fails the run
                 """);
         OPTIONS.put("--no-cache", """
-                --no-cache          translate and compile the program even if an earlier run of the same program,
-                                    descriptors, agent path, masl and JDK left it compiled in the cache
-                                    ($MASL_CACHE_DIR, else $XDG_CACHE_HOME/masl, else ~/.cache/masl)
+                --no-cache          translate and compile the program even if an earlier run or check of the same
+                                    program, descriptors, agent path, masl and JDK left it compiled in the cache
+                                    ($MASL_CACHE_DIR, else $XDG_CACHE_HOME/masl, else ~/.cache/masl), and
+                                    leave nothing there
                 """);
         OPTIONS.put("--quiet", """
                 --quiet             no progress on standard error: by default, work running longer than a second

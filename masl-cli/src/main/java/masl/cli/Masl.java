@@ -167,7 +167,7 @@ public final class Masl {
             case "check" -> check(line, progress);
             case "compile" -> compile(line, progress);
             case "run" -> line.scenarioFile != null ? new SimRun(out, err, progress).run(line)
-                    : new RunCommand(out, err, progress, new CompiledMissionCache(CompiledMissionCache.defaultFolder(environment)))
+                    : new RunCommand(out, err, progress, cache())
                             .run(line, readProgram(line.singleFile()));
             case "timeline" -> new TimelineCommand(err).run(line);
             case "container" -> new ContainerCommand(out, err).run(line);
@@ -187,9 +187,21 @@ public final class Masl {
         }
     }
 
+    /**
+     * Reports the program's errors. A program without errors is left compiled in the cache of compiled
+     * missions, as {@code run} leaves it, so that a check then a run translate and compile once; a
+     * check of a program already there prints what its translation printed, without translating.
+     */
     private int check(CommandLine line, Progress progress) throws UsageException, SourceFile.NotUtf8 {
         SourceFile source = readProgram(line.singleFile());
-        return Pipeline.load(source, AgentPath.parse(line.agentPath), err, progress) == null ? PROGRAM_ERRORS : OK;
+        AgentPath agentPath = AgentPath.parse(line.agentPath);
+        boolean accepted = line.noCache ? Pipeline.load(source, agentPath, err, progress) != null
+                : Pipeline.loadThroughCache(source, agentPath, err, progress, cache()) != null;
+        return accepted ? OK : PROGRAM_ERRORS;
+    }
+
+    private CompiledMissionCache cache() {
+        return new CompiledMissionCache(CompiledMissionCache.defaultFolder(environment));
     }
 
     private int compile(CommandLine line, Progress progress) throws UsageException, SourceFile.NotUtf8 {

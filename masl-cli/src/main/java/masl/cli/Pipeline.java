@@ -57,13 +57,14 @@ final class Pipeline {
     }
 
     /**
-     * As {@link #load}, for {@code masl run}: the compiled mission of an earlier run of the same
-     * program, descriptors, agent path, masl and JDK comes from {@code cache} (its warnings printed
-     * again), without translating or compiling; otherwise the pipeline runs and stores what it
-     * compiled. Null when the program has errors.
+     * As {@link #load}, for {@code masl run} and {@code masl check}: the compiled mission of an
+     * earlier run or check of the same program, descriptors, agent path, masl and JDK comes from
+     * {@code cache} (its warnings printed again), without translating or compiling; otherwise the
+     * pipeline runs and stores what it compiled. Null when the program has errors.
      */
-    static MissionLoader loadForRun(SourceFile source, AgentPath agentPath, PrintStream err, Progress progress,
+    static MissionLoader loadThroughCache(SourceFile source, AgentPath agentPath, PrintStream err, Progress progress,
             CompiledMissionCache cache) {
+        cache.unusable().ifPresent(reason -> err.println("masl: not using the cache of compiled missions: " + reason));
         String key = cache.keyOf(source, agentPath);
         Optional<CompiledMission> cached = cache.lookup(key);
         if (cached.isPresent()) {

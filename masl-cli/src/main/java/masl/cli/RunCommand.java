@@ -126,8 +126,7 @@ final class RunCommand {
             Pipeline.Loaded compiled = Pipeline.load(source, agentPath, err, progress);
             return compiled == null ? null : compiled.loader();
         }
-        cache.unusable().ifPresent(reason -> err.println("masl: not using the cache of compiled missions: " + reason));
-        return Pipeline.loadForRun(source, agentPath, err, progress, cache);
+        return Pipeline.loadThroughCache(source, agentPath, err, progress, cache);
     }
 
     /** Runs the mission; a signal stops it ({@link StopOnSignal}). */

@@ -57,7 +57,7 @@ class HelpTest {
                 + "usage: masl run FILE [OPTION]... | masl run --sim SCENARIO [OPTION]... (masl run --help for more)\n",
                 run.err());
         assertEquals("masl: unknown option --agentpath for masl check; did you mean --agent-path?\n"
-                + "usage: masl check FILE [--agent-path PATH] [--quiet] (masl check --help for more)\n",
+                + "usage: masl check FILE [--agent-path PATH] [--quiet] [--no-cache] (masl check --help for more)\n",
                 Run.of("check", "--agentpath", "x", "p.masl").err());
     }
 
@@ -66,7 +66,7 @@ class HelpTest {
         Run run = Run.of("check", "p.masl", "--timeout", "3");
         assertEquals(64, run.status());
         assertEquals("masl: unknown option --timeout for masl check (it is an option of masl container, masl run)\n"
-                + "usage: masl check FILE [--agent-path PATH] [--quiet] (masl check --help for more)\n", run.err());
+                + "usage: masl check FILE [--agent-path PATH] [--quiet] [--no-cache] (masl check --help for more)\n", run.err());
     }
 
     @Test

@@ -28,9 +28,9 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * {@code masl run}'s cache of compiled missions: an unchanged program runs from it, a
- * changed program or descriptor never runs a stale entry, a tampered entry is not run, and masl
- * processes writing the same entry at once leave one that runs.
+ * The cache of compiled missions of {@code masl run} and {@code masl check}: an unchanged program
+ * runs from it, a checked program too, a changed program or descriptor never runs a stale entry, a
+ * tampered entry is not run, and masl processes writing the same entry at once leave one that runs.
  */
 @Timeout(60)
 class RunCacheTest {
@@ -187,9 +187,46 @@ class RunCacheTest {
     }
 
     @Test
+    void aCheckLeavesTheProgramCompiledForTheRunAfterIt() throws IOException {
+        writeScout(null);
+        String program = program(PROGRAM);
+        assertEquals(new Run(0, "", ""), run("check", program));
+        List<Path> entries = entries();
+        assertEquals(1, entries.size(), "the check left nothing for the run");
+        Object written = identity(entries.get(0));
+        assertEquals(new Run(0, "Hello from the cache\n", ""), run("run", program));
+        assertEquals(written, identity(entries().get(0)), "the run compiled the program again");
+        assertEquals(new Run(0, "", ""), run("check", program));
+        assertEquals(written, identity(entries().get(0)), "the second check compiled the program again");
+    }
+
+    @Test
+    void aCheckOfAProgramWithErrorsReportsThemEachTimeAndLeavesNothing() throws IOException {
+        writeScout(null);
+        String program = program(PROGRAM.replace(".logln(", ".loglnn("));
+        Run first = run("check", program);
+        assertEquals(1, first.status(), first.toString());
+        assertTrue(first.err().contains("scout.masl:3:29: error: cannot find primitive loglnn"), first.err());
+        assertEquals(first, run("check", program));
+        assertEquals(List.of(), entries());
+    }
+
+    @Test
+    void aCheckAfterADescriptorChangedReportsWhatTheChangeBroke() throws IOException {
+        writeScout(null);
+        String program = program(PROGRAM);
+        assertEquals(new Run(0, "", ""), run("check", program));
+        writeScout("(?s)<Primitive function_name=\"logln\".*?</Primitive>");
+        Run stale = run("check", program);
+        assertEquals(1, stale.status(), stale.toString());
+        assertTrue(stale.err().contains("scout.masl:3:29: error: cannot find primitive logln"), stale.err());
+    }
+
+    @Test
     void noCacheNeitherReadsNorWritesIt() throws IOException {
         writeScout(null);
         assertEquals(new Run(0, "Hello from the cache\n", ""), run("run", "--no-cache", program(PROGRAM)));
+        assertEquals(new Run(0, "", ""), run("check", "--no-cache", program(PROGRAM)));
         assertEquals(List.of(), entries());
     }
 
