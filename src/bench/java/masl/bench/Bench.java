@@ -230,7 +230,9 @@ public final class Bench {
                     new Measure("first", () -> record(timings, "first", jdk17.first())),
                     new Measure("second", () -> record(timings, "second", jdk17.second())),
                     new Measure("check C2", () -> record(timings, "check C2", jdk17.check(true))),
-                    new Measure("check", () -> record(timings, "check", jdk17.check(false)))));
+                    new Measure("check", () -> record(timings, "check", jdk17.check(false))),
+                    new Measure("check again", () -> record(timings, "check again", jdk17.checkAgain())),
+                    new Measure("run after check", () -> record(timings, "run after check", jdk17.runAfterCheck()))));
             jdk25.ifPresent(startUp -> measures.addAll(List.of(
                     new Measure("first 25", () -> record(timings, "first 25", startUp.first())),
                     new Measure("second 25", () -> record(timings, "second 25", startUp.second())),
@@ -242,6 +244,8 @@ public final class Bench {
             printStartUp("JDK 17 second run: the mission from the cache", figures, timings, "second", "<= 0.4 s");
             printStartUp("JDK 17 masl check, C1 and C2 (-XX:TieredStopAtLevel=4)", figures, timings, "check C2", "");
             printStartUp("JDK 17 masl check, C1 alone (the command's JIT)", figures, timings, "check", "<= 0.4 s");
+            printStartUp("JDK 17 masl check again: the unchanged program, cached", figures, timings, "check again", "");
+            printStartUp("JDK 17 run after a check: the program it left cached", figures, timings, "run after check", "");
             if (jdk25.isPresent()) {
                 printStartUp("JDK 25 first run: empty cache, lib/masl.aot", figures, timings, "first 25", "<= 0.6 s");
                 printStartUp("JDK 25 second run: the mission from the cache", figures, timings, "second 25", "<= 0.4 s");

@@ -24,7 +24,8 @@ import java.util.stream.Stream;
  * </ul>
  *
  * <p>And {@code masl check} of the same program, which the start script runs on C1 alone, against the
- * same with C2 given back ({@code -XX:TieredStopAtLevel=4} in {@code JAVA_OPTS}).
+ * same with C2 given back ({@code -XX:TieredStopAtLevel=4} in {@code JAVA_OPTS}); then what a check
+ * leaves in the cache gives: a second check of the unchanged program, and a run after a check.
  */
 final class StartUp {
 
@@ -82,9 +83,31 @@ final class StartUp {
         return run(cache, "");
     }
 
-    /** {@code masl check} of the program: on C1 alone, as the command runs it, or with C2 too. */
+    /**
+     * {@code masl check} of the new program (an empty cache: a check stores what it compiled there):
+     * on C1 alone, as the command runs it, or with C2 too.
+     */
     Timing check(boolean withC2) throws Exception {
-        return time("check", caches, withC2 ? "-XX:TieredStopAtLevel=4" : "");
+        return time("check", Files.createTempDirectory(caches, "check"), withC2 ? "-XX:TieredStopAtLevel=4" : "");
+    }
+
+    /** {@code masl check} of the unchanged program, which a first check left in the cache. */
+    Timing checkAgain() throws Exception {
+        return time("check", checked(), "");
+    }
+
+    /** {@code masl run} of the program a check left in the cache: a check, then a run. */
+    Timing runAfterCheck() throws Exception {
+        return run(checked(), "");
+    }
+
+    /** A cache one {@code masl check} of the program has filled. */
+    private Path checked() throws Exception {
+        Path cache = caches.resolve("checked");
+        if (!Files.isDirectory(cache)) {
+            time("check", cache, "");
+        }
+        return cache;
     }
 
     private Timing run(Path cache, String javaOptions, String... options) throws Exception {
