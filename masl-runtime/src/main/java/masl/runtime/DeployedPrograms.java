@@ -1,6 +1,7 @@
 package masl.runtime;
 
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import masl.runtime.descriptor.AgentType;
 
 /**
@@ -69,6 +70,18 @@ public final class DeployedPrograms {
      */
     public static AtRest atRest(AgentContext agent) {
         return ((SteppingAgent) agent).boundariesAtRest();
+    }
+
+    /**
+     * Parks {@code agent}, whose step runs in its container, until {@code arrival} completes (the
+     * step's next message has come), holding no thread meanwhile; the caller, the stand-in's
+     * {@code resume}, then returns, and the agent's next slice resumes it. Not blocked while so parked:
+     * its invocations wait for its boundaries, as while its step runs. False, and nothing done, if the
+     * slice has parked already or the program finished (a call performed for the step did): the
+     * caller must wait on its thread. Called by the agent's slice.
+     */
+    public static boolean awaitElsewhere(AgentContext agent, CompletableFuture<?> arrival) {
+        return ((SteppingAgent) agent).awaitElsewhere(arrival);
     }
 
     /**

@@ -7,7 +7,7 @@ import java.util.ArrayList;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
@@ -25,6 +25,7 @@ import masl.runtime.Mission;
 import masl.runtime.MissionProgram;
 import masl.runtime.RemotePrimitiveException;
 import masl.runtime.descriptor.AgentType;
+import masl.runtime.scheduling.Blocking;
 
 /**
  * The mission's side of its deployed agents: the one authority. Each deployed agent is a
@@ -35,6 +36,9 @@ import masl.runtime.descriptor.AgentType;
  * a container wait in its {@link Outbox} until none of its agents waits for the mission any more.
  */
 public final class Coordination {
+
+    /** How often a thread waiting for a container looks whether it is gone. */
+    private static final long LOST_POLL_MILLIS = 50;
 
     private final Blocks blocks;
     private final IntFunction<Wire> wireOf;
@@ -283,19 +287,39 @@ public final class Coordination {
         return outbox;
     }
 
-    /** The next message for a stand-in's step; throws once its container is gone. */
-    ObjectNode await(int proxyId, BlockingQueue<ObjectNode> requests) {
-        try {
+    /**
+     * The next message for a stand-in's step, waited for on the calling thread, which is the agent's
+     * and may be a pool's ({@link Blocking}); throws once its container is gone.
+     */
+    ObjectNode await(int proxyId, StepMessages requests) {
+        return blocking(proxyId, () -> {
             while (true) {
-                ObjectNode request = requests.poll(50, TimeUnit.MILLISECONDS);
+                ObjectNode request = requests.poll();
                 if (request != null) {
                     return request;
                 }
-                failIfLost(proxyId);
+                try {
+                    requests.arrival().get(LOST_POLL_MILLIS, TimeUnit.MILLISECONDS);
+                } catch (TimeoutException notYet) {
+                    failIfLost(proxyId);
+                }
             }
+        });
+    }
+
+    /** Runs {@code wait}, which blocks until it returns or agent {@code proxyId}'s container is gone, so that no pool starves. */
+    private <T> T blocking(int proxyId, Callable<T> wait) {
+        try {
+            return Blocking.call(wait);
         } catch (InterruptedException interrupted) {
             Thread.currentThread().interrupt();
             throw new IllegalStateException("interrupted while agent " + proxyId + " ran in its container");
+        } catch (ExecutionException impossible) {
+            throw new IllegalStateException(impossible.getCause());
+        } catch (RuntimeException failed) {
+            throw failed;
+        } catch (Exception impossible) {
+            throw new IllegalStateException(impossible);
         }
     }
 
@@ -369,19 +393,14 @@ public final class Coordination {
     }
 
     private ObjectNode awaitRun(int proxyId, CompletableFuture<ObjectNode> answer) {
-        try {
+        return blocking(proxyId, () -> {
             while (true) {
                 try {
-                    return answer.get(50, TimeUnit.MILLISECONDS);
+                    return answer.get(LOST_POLL_MILLIS, TimeUnit.MILLISECONDS);
                 } catch (TimeoutException notYet) {
                     failIfLost(proxyId);
                 }
             }
-        } catch (InterruptedException interrupted) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while a call ran in agent " + proxyId + "'s container");
-        } catch (ExecutionException impossible) {
-            throw new IllegalStateException(impossible.getCause());
-        }
+        });
     }
 }

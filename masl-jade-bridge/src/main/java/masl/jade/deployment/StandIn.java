@@ -7,10 +7,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Iterator;
 import java.util.Map;
 import java.util.Set;
-import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.LinkedBlockingQueue;
 import masl.runtime.AgentContext;
 import masl.runtime.AgentProgram;
 import masl.runtime.DeployedPrograms;
@@ -20,8 +18,10 @@ import masl.runtime.RemotePrimitiveException;
 /**
  * A deployed agent's program as its mission runs it: a step is the container's. {@link #resume}
  * tells the container to run the agent's program from here, then performs each request the program
- * makes on this agent's context, on this thread (the one the mission's scheduler gave the step), and
- * answers it, until the container says the step is over. A call after which the program returns
+ * makes on this agent's context, in the agent's slices, and answers it, until the container says the
+ * step is over. While the step runs in its container, the agent waits for its next message parked,
+ * holding no thread ({@link DeployedPrograms#awaitElsewhere}), and the message's arrival makes it
+ * runnable: the slice the mission's scheduler then runs takes the message up where the last left off. A call after which the program returns
  * from its step (a boundary that parks it at a barrier) gets no answer then: the program waits in it
  * until the mission resumes this step, and the answer says so, with the resumption point, so that a
  * step costs its container one request and one answer, and no message of the step's own. The program's reactions and MASL source are
@@ -47,7 +47,7 @@ final class StandIn extends AgentProgram {
     /** Marks the answer of code run in the step coming in, after the requests that code made. */
     private static final ObjectNode RAN = JsonNodeFactory.instance.objectNode();
 
-    private final BlockingQueue<ObjectNode> requests = new LinkedBlockingQueue<>();
+    private final StepMessages requests = new StepMessages();
     /** The futures of calls the program made that it has not been told the end of, by call number. */
     private final Map<Long, CompletableFuture<Object>> calls = new ConcurrentHashMap<>();
     /** Orders the messages to the step that say whether its boundaries are at rest, and numbers them. */
@@ -59,8 +59,13 @@ final class StandIn extends AgentProgram {
      * said they are at rest; guarded by {@link #toStep}.
      */
     private boolean passing;
-    /** Whether the program waits in a call that suspended its step, confined to the step's thread. */
+    /** Whether the program waits in a call that suspended its step, confined to the agent's slices. */
     private boolean suspended;
+    /**
+     * Whether the step runs in its container, the agent parked until its next message: the next
+     * slice takes it, telling the container nothing first. Confined to the agent's slices.
+     */
+    private boolean away;
     private boolean finished;
 
     StandIn(int id, AgentProgram twin, Coordination coordination) {
@@ -87,7 +92,9 @@ final class StandIn extends AgentProgram {
 
     @Override
     protected void resume(AgentContext ctx) {
-        if (suspended) {
+        if (away) {
+            away = false;
+        } else if (suspended) {
             // The program waits in the call that suspended it: the answer is its resumption, from pc.
             suspended = false;
             toStep(ctx, JsonNodeFactory.instance.objectNode().put("kind", "answer")
@@ -96,7 +103,17 @@ final class StandIn extends AgentProgram {
             toStep(ctx, JsonNodeFactory.instance.objectNode().put("kind", "resume").put("pc", pc));
         }
         while (true) {
-            ObjectNode request = taken(ctx, coordination.await(id, requests));
+            ObjectNode message = requests.poll();
+            if (message == null) {
+                if (DeployedPrograms.awaitElsewhere(ctx, requests.arrival())) {
+                    away = true;
+                    return;
+                }
+                // A call performed for the step parked the agent (an enter that waits) or finished
+                // its program: only the step's end comes, at once, and this slice waits for it.
+                message = coordination.await(id, requests);
+            }
+            ObjectNode request = taken(ctx, message);
             if ("yield".equals(request.get("kind").textValue())) {
                 if (request.has("failed")) {
                     coordination.ended(id);

@@ -12,11 +12,9 @@ import java.util.concurrent.CountDownLatch;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
 import masl.jade.TestPrograms;
-import masl.runtime.AgentContext;
 import masl.runtime.EntryDefinition;
 import masl.runtime.Mode;
 import masl.runtime.scheduling.Blocking;
-import masl.runtime.testing.CompactProgram;
 import masl.runtime.testing.TestAgent;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -58,7 +56,8 @@ class StepThreadsTest {
         watcher.setDaemon(true);
         watcher.start();
         Set<String> all = IntStream.range(0, AGENTS).mapToObj(i -> "a" + i).collect(Collectors.toSet());
-        InMemoryDeployment.Run run = InMemoryDeployment.run(() -> TestPrograms.of(MAIN, AGENTS, Held::new), all,
+        InMemoryDeployment.Run run = InMemoryDeployment.run(() -> TestPrograms.of(MAIN, AGENTS,
+                self -> new HeldStep(self, MAIN, STEPS, HELD, StepThreadsTest::hold)), all,
                 TIMEOUT);
         assertTrue(run.outcome().completed(), run.outcome().toString());
         assertEquals("done\n".repeat(AGENTS), run.outcome().journal());
@@ -71,62 +70,21 @@ class StepThreadsTest {
                 .anyMatch(frame -> frame.getClassName().equals(RemoteContext.class.getName()));
     }
 
-    /**
-     * {@code synchronous entry main (true) { STEPS trivial instructions; .logln("done"); }}, agent 0
-     * staying in its step {@link #HELD} (in a primitive that blocks, as robots' do) until released.
-     */
-    private static final class Held extends CompactProgram {
-        private int steps;
-
-        Held(TestAgent self) {
-            super(self);
+    /** Agent 0 stays in its step until released; the others note the thread their step ran on. */
+    private static void hold(TestAgent self) {
+        int id = self.getProxyID();
+        if (id != 0) {
+            RAN_ON.put(id, Thread.currentThread());
+            ARRIVING.countDown();
+            return;
         }
-
-        @Override
-        protected void resume(AgentContext ctx) {
-            while (true) {
-                switch (pc) {
-                    case 0:
-                        if (!arrive(ctx, MAIN, true, 1, 3)) return;
-                        continue;
-                    case 1:
-                        if (++steps == HELD) {
-                            hold();
-                        }
-                        if (!step(ctx, steps < STEPS ? 1 : 2)) return;
-                        continue;
-                    case 2:
-                        self.logln("done");
-                        if (!leave(ctx, MAIN, 3)) return;
-                        continue;
-                    case 3:
-                        pc = 4;
-                        if (!ctx.endOfSequence(MAIN.sequence())) return;
-                        continue;
-                    case 4:
-                        ctx.finish();
-                        return;
-                    default:
-                        throw new IllegalStateException("pc " + pc);
-                }
-            }
-        }
-
-        private void hold() {
-            int id = self.getProxyID();
-            if (id != 0) {
-                RAN_ON.put(id, Thread.currentThread());
-                ARRIVING.countDown();
-                return;
-            }
-            try {
-                Blocking.call(() -> {
-                    RELEASED.await();
-                    return null;
-                });
-            } catch (Exception interrupted) {
-                throw new IllegalStateException(interrupted);
-            }
+        try {
+            Blocking.call(() -> {
+                RELEASED.await();
+                return null;
+            });
+        } catch (Exception interrupted) {
+            throw new IllegalStateException(interrupted);
         }
     }
 }

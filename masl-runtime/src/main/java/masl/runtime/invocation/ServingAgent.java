@@ -76,7 +76,7 @@ public abstract class ServingAgent extends ReactingAgent {
             mission.outsideWakeUpStarted();
         }
         try {
-            if (!park(serving)) {
+            if (!(awayPark && !serving ? parkAway() : park(serving))) {
                 return false;
             }
             serveIfPending();

@@ -19,7 +19,11 @@ import java.util.function.BooleanSupplier;
  * ticket wins, a stale or repeated one does nothing. The winner finds the agent {@code PARKED},
  * turns it {@code SCHEDULED} and hands it to the scheduler; a wake-up that comes while the slice is
  * still running turns {@code RUNNING → RUNNING_WOKEN}, and the slice reschedules the agent when it
- * returns ({@link #park} fails). A program that has finished leaves the agent {@code DONE}.
+ * returns ({@link #park} fails). A program that has finished leaves the agent {@code DONE}. An agent
+ * whose step runs in another JVM (a deployed agent's) ends its slice {@code RUNNING → AWAY}
+ * ({@link #parkAway}) while it waits for that step's next message: woken as from {@code PARKED}, but
+ * its program is not blocked, so nobody serves its invocations on its behalf, and the deadlock
+ * watchdog does not count it idle.
  *
  * <p><b>Serving while blocked</b> (MASL §5). An invocation queued for a {@code PARKED} or
  * {@code DONE} agent turns it {@code SERVING} ({@link #claimServing}), and whoever did runs the
@@ -56,6 +60,8 @@ public abstract class RunState {
     private static final int SERVING = 4;
     private static final int SERVING_WOKEN = 5;
     private static final int DONE = 6;
+    /** Parked while its step goes on elsewhere: woken as from {@code PARKED}, but neither blocked nor idle. */
+    private static final int AWAY = 7;
 
     private static final int STATE_BITS = 3;
     private static final long STATE_MASK = (1L << STATE_BITS) - 1;
@@ -122,6 +128,15 @@ public abstract class RunState {
         long current = word;
         return stateOf(current) == (serving ? SERVING : RUNNING)
                 && WORD.compareAndSet(this, current, withState(current, PARKED));
+    }
+
+    /**
+     * Ends the current (running) slice {@code → AWAY}: false if a wake-up came meanwhile, and the
+     * caller must then {@link #reschedule}, as after {@link #park}.
+     */
+    protected final boolean parkAway() {
+        long current = word;
+        return stateOf(current) == RUNNING && WORD.compareAndSet(this, current, withState(current, AWAY));
     }
 
     /** Back to {@code SCHEDULED}, after a wake-up ended the park: the caller hands the agent to the scheduler. */
@@ -216,7 +231,7 @@ public abstract class RunState {
 
     /**
      * Ends the park that issued {@code ticket}, unless it has ended already: true if the agent went
-     * {@code PARKED → SCHEDULED} and the caller must hand it to the scheduler; false if that park
+     * {@code PARKED → SCHEDULED} (or {@code AWAY → SCHEDULED}) and the caller must hand it to the scheduler; false if that park
      * had ended (a stale or repeated ticket), or if the agent's slice, running or serving, notes the
      * wake-up and reschedules it. The caller counts the wake-up for the deadlock watchdog before,
      * or holds a pending one.
@@ -232,14 +247,14 @@ public abstract class RunState {
             }
             int state = stateOf(current);
             int next = switch (state) {
-                case PARKED -> SCHEDULED;
+                case PARKED, AWAY -> SCHEDULED;
                 case RUNNING -> RUNNING_WOKEN;
                 case SERVING -> SERVING_WOKEN;
                 case DONE -> DONE;
                 default -> throw new IllegalStateException(describe() + " woken twice");
             };
             if (WORD.compareAndSet(this, current, (long) next)) {
-                return state == PARKED;
+                return state == PARKED || state == AWAY;
             }
         }
     }

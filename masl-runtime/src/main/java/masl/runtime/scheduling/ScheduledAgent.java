@@ -57,6 +57,8 @@ public abstract class ScheduledAgent extends RunState implements AgentTask {
     protected boolean statementIsLoop;
     /** Whether the latest park is a {@code wait(state)}'s, the only one that makes the agent attentive. */
     protected boolean parkAttends;
+    /** Whether the latest park waits for a step that goes on elsewhere ({@link #awaitElsewhere}): it ends {@code AWAY}. */
+    protected boolean awayPark;
     /** Told when the agent's next boundary has work (an event, an invocation), or null: see {@link #onBoundaryWork}. */
     private volatile Runnable boundaryWork;
 
@@ -102,6 +104,7 @@ public abstract class ScheduledAgent extends RunState implements AgentTask {
             busyWaitPark = false;
         }
         parkAttends = false;
+        awayPark = false;
         return issueTicket();
     }
 
@@ -163,6 +166,26 @@ public abstract class ScheduledAgent extends RunState implements AgentTask {
             mission.outsideWakeUpEnded();
         });
         return false;
+    }
+
+    /**
+     * Parks the agent while its step goes on elsewhere (a deployed agent's, in its container) until
+     * {@code arrival} completes, the step's next message having come: its thread is free meanwhile
+     * and it is not blocked ({@link RunState}, {@code AWAY}), so no invocation is served on its
+     * behalf, and the deadlock watchdog counts it running. Not a call of the program, unlike
+     * {@link #await}: no statement, progress or step of the slice is counted. The caller returns
+     * from the program's {@code resume}, which the next slice calls again. False, and nothing
+     * done, if the slice has parked already or the program has finished (a call performed for the
+     * step did): the caller must then wait on its thread. Called by the agent's slice.
+     */
+    public final boolean awaitElsewhere(CompletableFuture<?> arrival) {
+        if (suspended || finished) {
+            return false;
+        }
+        long ticket = prepareToPark();
+        awayPark = true;
+        arrival.whenComplete((value, failure) -> unpark(ticket));
+        return true;
     }
 
     /**

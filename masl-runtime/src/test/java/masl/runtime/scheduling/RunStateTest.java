@@ -66,6 +66,23 @@ class RunStateTest {
     }
 
     @Test
+    void anAgentAwayWhileItsStepRunsElsewhereIsWokenAsParkedButNeitherServedNorIdle() {
+        long ticket = runningWithTicket();
+        assertTrue(run.parkAway());
+
+        assertFalse(run.claimServing(() -> true), "its step runs: it serves at its own boundary");
+        assertFalse(run.isIdle(true, () -> true), "the deadlock watchdog counts it running");
+        assertFalse(run.isParked());
+        assertFalse(run.resumeParked(ticket), "no barrier's pass lets it go");
+        assertTrue(run.endPark(ticket), "the caller must schedule it");
+        assertEquals(0, run.pendingTicket());
+        assertTrue(run.startSlice());
+        long next = run.issueTicket();
+        assertFalse(run.endPark(next), "woken before its slice ended");
+        assertFalse(run.parkAway(), "the slice reschedules it");
+    }
+
+    @Test
     void aStaleTicketEndsNoLaterPark() {
         long first = runningWithTicket();
         assertTrue(run.park(false));
