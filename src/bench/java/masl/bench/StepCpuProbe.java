@@ -19,8 +19,8 @@ import masl.translator.MissionLoader;
  * by the worker whose publication completed the step, with one worker always the same thread);
  * each window of {@value #WINDOW} steps after the first third of a mission gives a figure, and the
  * probe prints the least, the 10th percentile and the median of them all. Not a test and not part
- * of {@code gradle bench}: run it with the bench's class path,
- * {@code java -cp … masl.bench.StepCpuProbe [agents] [steps] [missions]} (defaults 1,000, 2,000, 12).
+ * of {@code gradle bench}: {@code gradle stepCpuProbe -PprobeArgs="agents steps missions"} (defaults
+ * 1,000, 2,000, 12), or {@code java} with the bench's class path.
  */
 final class StepCpuProbe {
 
