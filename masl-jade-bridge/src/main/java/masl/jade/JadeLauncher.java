@@ -14,6 +14,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
 import java.util.function.Function;
 import masl.jade.deployment.Coordination;
+import masl.jade.deployment.StandInsOnAPool;
 import masl.jade.external.ExternalAgents;
 import masl.jade.outside.EventSubscribers;
 import masl.jade.outside.OutsideCalls;
@@ -39,7 +40,8 @@ import masl.runtime.trace.Trace;
  * Runs a translated MASL program inside JADE ({@code masl run --platform jade}): one JADE agent per
  * MASL agent, named after it, registered with the DF, answering FIPA requests, each MASL program
  * running in a threaded behaviour of its JADE agent ({@link MaslJadeAgent},
- * {@link ThreadedBehaviourScheduler}). The mission starts once every JADE agent exists and is
+ * {@link ThreadedBehaviourScheduler}; a deployed agent's stand-in runs on a pool instead,
+ * {@link StandInsOnAPool}). The mission starts once every JADE agent exists and is
  * registered; afterwards the JADE agents are deleted (and deregistered). The outcome is the one the
  * runtime gives in-process: status, journal, report. With {@link #place}, the bodies of some agents
  * live in other containers ({@link MaslContainer}) while every program still runs here, through the
@@ -273,9 +275,15 @@ public final class JadeLauncher {
             throws InterruptedException, StaleProxyException {
         List<AgentImplementation> created = new ArrayList<>();
         ThreadedBehaviourScheduler scheduler = new ThreadedBehaviourScheduler();
+        AtomicReference<Mission> built = new AtomicReference<>();
+        Coordination coordination = deployment.isEmpty() ? null : new Coordination(
+                Coordination.mainOf(program, implementations), distribution::wireTo,
+                text -> built.get().journal().append(text));
         // FIPA agents may invoke primitives at any time: a busy-wait may end on a request.
         EventSubscribers subscribers = new EventSubscribers(names);
-        Mission.Builder builder = Mission.builder().scheduler(scheduler).openToOutsideInvocations()
+        Mission.Builder builder = Mission.builder()
+                .scheduler(coordination == null ? scheduler : new StandInsOnAPool(scheduler, coordination))
+                .openToOutsideInvocations()
                 .trace(subscribers.forwarding(distribution == null ? trace : distribution.sendingEvents(trace, names)));
         if (journal != null) {
             builder.journal(journal);
@@ -283,10 +291,6 @@ public final class JadeLauncher {
         if (callTimeout != null) {
             builder.callTimeout(callTimeout);
         }
-        AtomicReference<Mission> built = new AtomicReference<>();
-        Coordination coordination = deployment.isEmpty() ? null : new Coordination(
-                Coordination.mainOf(program, implementations), distribution::wireTo,
-                text -> built.get().journal().append(text));
         if (coordination != null) {
             // A deployed agent's program runs in its container; here, a stand-in whose steps are its.
             builder.programs((name, own) -> deployment.containsKey(name)

@@ -3,7 +3,9 @@ package masl.jade;
 import jade.core.Agent;
 import jade.core.behaviours.Behaviour;
 import jade.core.behaviours.ThreadedBehaviourFactory;
+import java.util.Arrays;
 import java.util.List;
+import java.util.Objects;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.Semaphore;
 import java.util.concurrent.TimeUnit;
@@ -52,13 +54,16 @@ final class ThreadedBehaviourScheduler implements Scheduler {
         hosts = List.copyOf(agents);
     }
 
+    /** Runs these agents, each in its JADE agent; they may be some of the mission's only (the others run elsewhere). */
     @Override
     public synchronized void start(List<? extends AgentTask> agents) {
-        if (agents.size() != hosts.size()) {
-            throw new IllegalArgumentException(agents.size() + " agents for " + hosts.size() + " JADE agents");
+        for (AgentTask agent : agents) {
+            if (agent.id() >= hosts.size()) {
+                throw new IllegalArgumentException("agent " + agent.id() + " has no JADE agent: " + hosts.size());
+            }
         }
-        runnable = new Semaphore[agents.size()];
-        drivers = new Driver[agents.size()];
+        runnable = new Semaphore[hosts.size()];
+        drivers = new Driver[hosts.size()];
         // Every agent is runnable (one permit) before any driver thread exists.
         for (AgentTask agent : agents) {
             runnable[agent.id()] = new Semaphore(1);
@@ -91,17 +96,12 @@ final class ThreadedBehaviourScheduler implements Scheduler {
     @Override
     public synchronized void shutdown() {
         timer.shutdownNow();
-        if (drivers != null) {
-            for (Driver driver : drivers) {
-                driver.stop();
-            }
-        }
+        List<Driver> started = drivers == null ? List.of() : Arrays.stream(drivers).filter(Objects::nonNull).toList();
+        started.forEach(Driver::stop);
         try {
             long deadline = System.currentTimeMillis() + JOIN_MILLIS;
-            if (drivers != null) {
-                for (Driver driver : drivers) {
-                    driver.join(Math.max(1, deadline - System.currentTimeMillis()));
-                }
+            for (Driver driver : started) {
+                driver.join(Math.max(1, deadline - System.currentTimeMillis()));
             }
             timer.awaitTermination(Math.max(1, deadline - System.currentTimeMillis()), TimeUnit.MILLISECONDS);
         } catch (InterruptedException e) {

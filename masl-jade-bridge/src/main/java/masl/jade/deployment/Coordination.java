@@ -106,6 +106,11 @@ public final class Coordination {
         return standIn;
     }
 
+    /** Whether agent {@code proxyId}'s program is a stand-in's: its steps run in its container. */
+    boolean isStandIn(int proxyId) {
+        return standIns.containsKey(proxyId);
+    }
+
     /**
      * The object agent {@code proxyId} has here, given the one {@code made} (its own class's, or its
      * placed body's or external agent's stub): {@code made}, or for a deployed agent a stub whose

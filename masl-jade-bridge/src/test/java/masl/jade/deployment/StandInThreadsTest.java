@@ -17,13 +17,15 @@ import masl.runtime.EntryDefinition;
 import masl.runtime.Mode;
 import masl.runtime.scheduling.Blocking;
 import masl.runtime.testing.TestAgent;
+import masl.testing.jade.ThreadSnapshot;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
  * A deployed agent whose step runs in its container holds no thread of its mission while the
  * mission waits for that step's next request: its stand-in is parked, and the request's arrival
- * makes it runnable. A mission of a thousand deployed agents thus needs no thread per agent.
+ * makes it runnable; and no stand-in has a thread of its own: their slices run on the mission's pool
+ * ({@link StandInsOnAPool}). A mission of a thousand deployed agents thus needs no thread per agent.
  */
 @Timeout(60)
 class StandInThreadsTest {
@@ -41,9 +43,12 @@ class StandInThreadsTest {
     private static final CountDownLatch RELEASED = new CountDownLatch(1);
     /** The threads found waiting for a container in a stand-in's step when the patience ran out. */
     private static final List<String> STILL_WAITING = new CopyOnWriteArrayList<>();
+    /** The threads of one agent each (a thread-per-agent scheduler's) alive while the steps were held. */
+    private static final List<String> OWN_THREADS = new CopyOnWriteArrayList<>();
 
     @Test
     void standInsWaitingForTheirContainerHoldNoThread() throws Exception {
+        ThreadSnapshot before = ThreadSnapshot.take();
         Thread watcher = new Thread(() -> {
             try {
                 HOLDING.await();
@@ -55,6 +60,9 @@ class StandInThreadsTest {
                     waiting = standInThreads();
                 }
                 waiting.forEach(thread -> STILL_WAITING.add(thread.getName()));
+                // Nor has any stand-in a thread of its own: the mission's pool runs their slices.
+                before.startedSince().stream().map(Thread::getName)
+                        .filter(name -> name.startsWith("masl-agent-")).forEach(OWN_THREADS::add);
                 RELEASED.countDown();
             } catch (InterruptedException stopped) {
                 Thread.currentThread().interrupt();
@@ -69,6 +77,7 @@ class StandInThreadsTest {
         assertTrue(run.outcome().completed(), run.outcome().toString());
         assertEquals("done\n".repeat(AGENTS), run.outcome().journal());
         assertEquals(List.of(), STILL_WAITING, "threads waiting in a stand-in's step for its container");
+        assertEquals(List.of(), OWN_THREADS, "a thread per stand-in");
     }
 
     /** The live threads in a stand-in's step. */

@@ -26,7 +26,8 @@ public final class ThreadPerAgentScheduler implements Scheduler {
 
     @Override
     public synchronized void start(List<? extends AgentTask> agents) {
-        runnable = new Semaphore[agents.size()];
+        // Some of a mission's agents only, maybe (the others run elsewhere): indexed by proxy id.
+        runnable = new Semaphore[agents.stream().mapToInt(AgentTask::id).max().orElse(-1) + 1];
         for (AgentTask agent : agents) {
             Semaphore permits = new Semaphore(1);
             runnable[agent.id()] = permits;

@@ -21,6 +21,7 @@ import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import masl.jade.deployment.Coordination;
+import masl.jade.deployment.StandInsOnAPool;
 import masl.jade.deployment.DeployedTeam;
 import masl.jade.deployment.Wire;
 import masl.runtime.AgentImplementation;
@@ -186,7 +187,8 @@ public final class DeployedInMemory implements MissionPlatform {
                     text -> running.get().journal().append(text));
             mission.set(coordination);
             List<AgentImplementation> created = new ArrayList<>();
-            Mission.Builder builder = Mission.builder().scheduler(new ThreadPerAgentScheduler()).trace(trace)
+            Mission.Builder builder = Mission.builder()
+                    .scheduler(new StandInsOnAPool(new ThreadPerAgentScheduler(), coordination)).trace(trace)
                     .programs((name, own) -> containerOfAgent.containsKey(name)
                             ? coordination.standIn(names.indexOf(name), own) : own);
             here.configure(builder, spec -> {
