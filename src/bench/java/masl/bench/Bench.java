@@ -173,6 +173,26 @@ public final class Bench {
         Map<String, double[]> figures = interleaved(RUNS, List.of(new Measure("elapsed", elapsed), new Measure("cpu", cpu)));
         System.out.printf(Locale.ROOT, "%26s | %14s | %14s | %12s%n%n", "warm, median of " + RUNS,
                 rate(median(figures.get("elapsed"))), rate(median(figures.get("cpu"))), ">= 50,000");
+        translationScaling();
+    }
+
+    /** Item 5, continued: the time of twice the input, {@link TranslationScaling}. */
+    private static void translationScaling() throws Exception {
+        System.out.println("   twice the input: process CPU seconds, median of " + RUNS + " (" + loadAverage() + ")");
+        System.out.printf(Locale.ROOT, "%26s | %12s | %12s | %12s | %12s | %12s%n", "", "check", "check 2x", "translate",
+                "translate 2x", "ratios");
+        for (TranslationScaling.Row row : TranslationScaling.ROWS) {
+            String small = row.program().apply(row.size());
+            String large = row.program().apply(2 * row.size());
+            Map<String, double[]> figures = interleaved(RUNS, List.of(new Measure("check", TranslationScaling.check(small)),
+                    new Measure("check 2x", TranslationScaling.check(large)), new Measure("translate", TranslationScaling.translate(small)),
+                    new Measure("translate 2x", TranslationScaling.translate(large))));
+            double[] medians = figures.values().stream().mapToDouble(Bench::median).toArray();
+            System.out.printf(Locale.ROOT, "%26s | %12.3f | %12.3f | %12.3f | %12.3f | %5.2f, %5.2f%n", row.size() + " " + row.name(),
+                    medians[0], medians[1], medians[2], medians[3], medians[1] / medians[0], medians[3] / medians[2]);
+        }
+        System.out.println("   (linear: ratios near 2)");
+        System.out.println();
     }
 
     /** Item 6: robots driven by MASL against a bare ode4j loop over the same bodies. */
