@@ -28,12 +28,13 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * 500 agents for 30 s: 494 joiners enter and leave the synchronous blocks {@code work}
+ * 500 agents for 15 s: 494 joiners enter and leave the synchronous blocks {@code work}
  * and its child {@code inner} by {@code reelect} and {@code break(work)}, 5 emitters emit {@code tick}
  * to everyone, a keeper releases whoever waits at the locked entry barriers. The trace, checked as it
  * streams ({@link MembershipChecker}), must show no barrier trip missing a member and no member lost;
  * the mission must complete and leave no thread behind. The system property {@code masl.stress.seconds}
- * ({@code gradle :test -PstressSeconds=5}) shortens the run for local work; CI runs 30 s.
+ * ({@code gradle :test -PstressSeconds=5}) shortens the run for local work, or lengthens it for a search;
+ * CI runs 15 s (it ran 30 s: the assertions below held at 5, and the suite's budget is 12 minutes).
  */
 @Tag("slow")
 class StressTest {
@@ -76,7 +77,7 @@ class StressTest {
             assertEquals(trace.joins(block), trace.leaves(block), block);
         }
         assertEquals(AGENTS, trace.joins("main"));
-        // It was a stress: many rounds, trips and events (numbers for 30 s are in the report).
+        // It was a stress: many rounds, trips and events (the numbers are printed).
         assertTrue(trace.joins("work") > 10 * JOINERS, () -> "joins of work: " + trace.joins("work"));
         assertTrue(trace.joins("inner") > 5 * JOINERS, () -> "joins of inner: " + trace.joins("inner"));
         assertTrue(trace.trips("work") > 100, () -> "trips: " + trace.trips("work"));
@@ -110,6 +111,6 @@ class StressTest {
     }
 
     private static int seconds() {
-        return Integer.getInteger("masl.stress.seconds", 30);
+        return Integer.getInteger("masl.stress.seconds", 15);
     }
 }
