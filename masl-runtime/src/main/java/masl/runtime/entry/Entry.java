@@ -1,10 +1,7 @@
 package masl.runtime.entry;
 
-import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.HashSet;
 import java.util.List;
-import java.util.Set;
 import masl.runtime.Agent;
 import masl.runtime.AgentImplementation;
 import masl.runtime.EntryDefinition;
@@ -36,7 +33,7 @@ public class Entry {
     Wave currentWave;
     int wavesStarted;
     /** Agents held by the entry barrier, in arrival order (synchronous blocks only). */
-    final ArrayDeque<Agent> waitingIn = new ArrayDeque<>();
+    final HeldInOrder<Agent> waitingIn = new HeldInOrder<>();
     LockPolicy policy;
     /** The members (held by the entry barrier, or in the current wave), for shared events (§8). */
     private final Perceivers<Agent> perceivers = new Perceivers<>();
@@ -107,7 +104,7 @@ public class Entry {
     }
 
     public List<AgentImplementation> getWaitingInList() {
-        return coordinator.query(() -> implementations(new ArrayList<>(waitingIn)));
+        return coordinator.query(() -> implementations(waitingIn.toList()));
     }
 
     /** {@code e.getWaitingOutCount()}: agents held by this block's exit barrier. */
@@ -116,7 +113,7 @@ public class Entry {
     }
 
     public List<AgentImplementation> getWaitingOutList() {
-        return coordinator.query(() -> implementations(currentWave == null ? List.of() : currentWave.waitingOut));
+        return coordinator.query(() -> implementations(currentWave == null ? List.of() : currentWave.waitingOut.toList()));
     }
 
     /** {@code e.getLockPolicy()}: {@code "unavailable"}, {@code "free"} or {@code "locked"}. */
@@ -173,9 +170,8 @@ public class Entry {
     private List<Agent> waveMembers(boolean activeOnly) {
         List<Agent> members = new ArrayList<>();
         if (currentWave != null) {
-            Set<Agent> waitingOut = activeOnly ? new HashSet<>(currentWave.waitingOut) : Set.of();
             for (Agent member : currentWave.members) {
-                if (!waitingOut.contains(member)) {
+                if (!activeOnly || !currentWave.waitingOut.contains(member)) {
                     members.add(member);
                 }
             }

@@ -480,7 +480,7 @@ public final class EntryCoordinator {
         if (wave.entry == null || wave.waitingOut.isEmpty() || wave.waitingOut.size() != wave.members.size()) {
             return;
         }
-        List<Agent> leaving = new ArrayList<>(wave.waitingOut);
+        List<Agent> leaving = wave.waitingOut.toList();
         wave.waitingOut.clear();
         for (Agent agent : leaving) {
             pop(agent, LeaveCause.END);

@@ -1,10 +1,8 @@
 package masl.runtime.entry;
 
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashSet;
-import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import masl.runtime.Agent;
@@ -38,7 +36,7 @@ public final class Wave {
      */
     int active;
     /** Members held by the exit barrier, in arrival order (synchronous blocks only). */
-    final List<Agent> waitingOut = new ArrayList<>();
+    final HeldInOrder<Agent> waitingOut = new HeldInOrder<>();
     private final Set<Entry> scalarChildrenRun = new HashSet<>();
     private final Map<ESequence, Reached> reached = new HashMap<>();
     private final SharedVariable<?>[] shared;
