@@ -66,6 +66,12 @@ final class StandIn extends AgentProgram {
      * slice takes it, telling the container nothing first. Confined to the agent's slices.
      */
     private boolean away;
+    /**
+     * Whether a call performed for the step parked the agent (an {@code enter} that waits) and the
+     * slice returned before the step's end came: the next slice, once the agent is let go, takes that
+     * {@code yield} first. Confined to the agent's slices.
+     */
+    private boolean endOwed;
     private boolean finished;
 
     StandIn(int id, AgentProgram twin, Coordination coordination) {
@@ -92,6 +98,20 @@ final class StandIn extends AgentProgram {
 
     @Override
     protected void resume(AgentContext ctx) {
+        if (endOwed) {
+            ObjectNode end = requests.poll();
+            if (end == null) {
+                if (DeployedPrograms.awaitElsewhere(ctx, requests.arrival())) {
+                    return;
+                }
+                end = coordination.await(id, requests);
+            }
+            endOwed = false;
+            if (!"yield".equals(end.path("kind").textValue())) {
+                throw new IllegalStateException("agent " + id + "'s step went on after a call parked it: " + end);
+            }
+            endOfStep(taken(ctx, end));
+        }
         if (away) {
             away = false;
         } else if (suspended) {
@@ -109,20 +129,19 @@ final class StandIn extends AgentProgram {
                     away = true;
                     return;
                 }
-                // A call performed for the step parked the agent (an enter that waits) or finished
-                // its program: only the step's end comes, at once, and this slice waits for it.
+                if (!finished) {
+                    // A call performed for the step parked the agent (an enter that waits): only the
+                    // step's end comes, and the slice that runs once the agent is let go takes it.
+                    endOwed = true;
+                    return;
+                }
+                // The program finished: no slice follows, and this one waits on its thread for the
+                // step's end, which follows the finish's answer.
                 message = coordination.await(id, requests);
             }
             ObjectNode request = taken(ctx, message);
             if ("yield".equals(request.get("kind").textValue())) {
-                if (request.has("failed")) {
-                    coordination.ended(id);
-                    throw new RemotePrimitiveException(request.get("failed").textValue(),
-                            request.path("message").textValue());
-                }
-                if (finished) {
-                    coordination.ended(id);
-                }
+                endOfStep(request);
                 return;
             }
             String op = request.get("op").textValue();
@@ -135,6 +154,17 @@ final class StandIn extends AgentProgram {
                 return;
             }
             answer(ctx, value);
+        }
+    }
+
+    /** The step ended ({@code yield}): throws what failed it; the agent's container no longer waits for a finished one. */
+    private void endOfStep(ObjectNode end) {
+        if (end.has("failed")) {
+            coordination.ended(id);
+            throw new RemotePrimitiveException(end.get("failed").textValue(), end.path("message").textValue());
+        }
+        if (finished) {
+            coordination.ended(id);
         }
     }
 
