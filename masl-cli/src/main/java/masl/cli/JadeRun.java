@@ -167,10 +167,9 @@ final class JadeRun {
         if (callTimeout != null) {
             launcher.callTimeout(callTimeout);
         }
-        // Standard output is the journal's alone: JADE prints some notices of its own there ("Agent … interrupted
-        // while waiting" when an agent's thread is interrupted in its shutdown), and those go to standard error.
+        // Standard output is the journal's alone: JADE prints some notices of its own there, which go to standard error.
         PrintStream standardOutput = System.out;
-        System.setOut(err);
+        System.setOut(new JadeNotices(err));
         try {
             return runOn(launcher, timeout);
         } finally {
