@@ -45,11 +45,8 @@ public final class JadePlatform implements AutoCloseable {
     public static final Duration SHUTDOWN_TIMEOUT = Duration.ofSeconds(30);
     /** How long {@link #leave()} waits for JADE's threads to end before it leaves them. */
     private static final Duration LEAVE_THREADS_WAIT = Duration.ofSeconds(1);
-    /**
-     * How long the AMS has to end the platform before it is asked again: 10 s. Shorter in the one test
-     * of the second request (same package), which would otherwise wait the 10 s every time it runs.
-     */
-    static volatile Duration amsRetryAfter = Duration.ofSeconds(10);
+    /** How long the AMS has to end the platform before it is asked again. */
+    private static final Duration AMS_RETRY_AFTER = Duration.ofSeconds(10);
 
     private static final Object LIFECYCLE = new Object();
     /** Containers started by this class and not closed yet: the last close waits for JADE's threads. */
@@ -271,7 +268,7 @@ public final class JadePlatform implements AutoCloseable {
 
     /**
      * Asks the AMS to shut the platform down, and waits until the JVM's containers have ended; asks
-     * again every {@link #amsRetryAfter} until {@link #SHUTDOWN_TIMEOUT}.
+     * again every {@link #AMS_RETRY_AFTER} until {@link #SHUTDOWN_TIMEOUT}.
      *
      * <p>Asking again, never ending the main container here: JADE 4.3's AMS sometimes fails to end
      * its own container (it logs "Cannot kill container Main-Container: Unreachable", a row of its
@@ -286,7 +283,7 @@ public final class JadePlatform implements AutoCloseable {
                 return;
             }
             long left = deadline - System.nanoTime();
-            if (terminated.await(Math.min(left, amsRetryAfter.toNanos()), TimeUnit.NANOSECONDS)) {
+            if (terminated.await(Math.min(left, AMS_RETRY_AFTER.toNanos()), TimeUnit.NANOSECONDS)) {
                 return;
             }
             if (System.nanoTime() - deadline >= 0) {

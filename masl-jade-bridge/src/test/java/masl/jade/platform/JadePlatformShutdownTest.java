@@ -8,7 +8,6 @@ import jade.core.AID;
 import jade.lang.acl.ACLMessage;
 import java.lang.reflect.Constructor;
 import java.lang.reflect.Field;
-import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
@@ -35,17 +34,6 @@ class JadePlatformShutdownTest {
 
     @Test
     void aPlatformWhoseAmsFailsOnceToEndItsContainerIsEndedAndTheNextOneToo() throws Exception {
-        // The platform is asked again after 1 s rather than 10: the same second request, sooner.
-        Duration retryAfter = JadePlatform.amsRetryAfter;
-        JadePlatform.amsRetryAfter = Duration.ofSeconds(1);
-        try {
-            endsAfterTheAmsFailedOnce();
-        } finally {
-            JadePlatform.amsRetryAfter = retryAfter;
-        }
-    }
-
-    private static void endsAfterTheAmsFailedOnce() throws Exception {
         ThreadSnapshot before = ThreadSnapshot.take();
         JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer());
         CountDownLatch amsFailed = new CountDownLatch(1);
