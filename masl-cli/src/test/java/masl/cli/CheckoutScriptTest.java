@@ -18,8 +18,8 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * The top-level {@code ./masl} of a checkout says on standard error when it is about to build the
  * command (a fresh clone: minutes of Gradle otherwise silent) or to build it again (sources changed),
- * and nothing when the command is built. Run in a copy of the script with a stand-in {@code gradle}
- * that "builds" a command printing its arguments.
+ * and nothing when the command is built, which it then starts without asking Gradle. Run in a copy
+ * of the script with a stand-in {@code gradle} that "builds" a command printing its arguments.
  */
 class CheckoutScriptTest {
 
@@ -47,6 +47,28 @@ class CheckoutScriptTest {
         Files.setLastModifiedTime(source, FileTime.from(Instant.now().plusSeconds(60)));
         assertEquals(new Result("ran --help\n", "masl: rebuilding the command, its sources changed (about a minute)\n"),
                 masl("--help"));
+    }
+
+    @Test
+    void anUnchangedCheckoutStartsTheBuiltCommandWithoutAskingGradle() throws Exception {
+        masl("--help");
+        assertEquals(new Result("ran check a.masl\n", ""), masl("check", "a.masl"));
+        assertEquals(new Result("ran run a.masl\n", ""), masl("run", "a.masl"));
+        assertEquals(List.of("build"), Files.readAllLines(checkout.resolve("gradle-calls.txt")),
+                "Gradle was asked once, for the first build");
+    }
+
+    @Test
+    void aSourceRemovedSinceTheBuildBuildsAgain() throws Exception {
+        Path folder = checkout.resolve("masl-runtime/src/main/java/masl/runtime");
+        Files.createDirectories(folder);
+        Files.writeString(folder.resolve("Old.java"), "class Old {}\n");
+        masl("--help");
+        Files.delete(folder.resolve("Old.java"));
+        Files.setLastModifiedTime(folder, FileTime.from(Instant.now().plusSeconds(60)));
+        assertEquals(new Result("ran --help\n", "masl: rebuilding the command, its sources changed (about a minute)\n"),
+                masl("--help"));
+        assertEquals(List.of("build", "build"), Files.readAllLines(checkout.resolve("gradle-calls.txt")));
     }
 
     private record Result(String out, String err) {
@@ -83,6 +105,7 @@ class CheckoutScriptTest {
         Files.createDirectories(bin);
         Files.writeString(bin.resolve("gradle"), """
                 #!/bin/sh
+                echo build >> gradle-calls.txt
                 mkdir -p masl-cli/build/install/masl/bin
                 printf '#!/bin/sh\\necho ran "$@"\\n' > masl-cli/build/install/masl/bin/masl
                 chmod +x masl-cli/build/install/masl/bin/masl
