@@ -174,6 +174,12 @@ public final class ProgramParser {
                 report(line, column + 1, "unterminated string literal");
                 return;
             }
+            if (found.getType() == MASLLexer.COMMA && parser.getContext() instanceof MASLParser.VariableDeclContext) {
+                // Java's habit, `int i = 0, j = 1;`: in MASL the one initialiser follows every name.
+                report(line, column + 1, "unexpected ',': a declaration's names come before its one initial value"
+                        + " (`local int a, b = 0;`); give other values in declarations of their own");
+                return;
+            }
             String message = "unexpected " + describe(found);
             boolean listable = expected.size() > 0 && expected.size() <= MAX_LISTED
                     && (error == null || error instanceof InputMismatchException);

@@ -48,6 +48,13 @@ class SyntaxErrorTest {
     }
 
     @Test
+    void aSecondInitialValueInOneDeclaration() {
+        assertSingleError(HEADER + "scalar entry main (true) {\n  local int i = 0, j = 1;\n  .logln(i);\n}\n",
+                4, 18, "unexpected ',': a declaration's names come before its one initial value"
+                        + " (`local int a, b = 0;`); give other values in declarations of their own");
+    }
+
+    @Test
     void unterminatedString() {
         assertEquals(Diagnostic.error("p.masl", 4, 8, "unterminated string literal"),
                 errorsOf(HEADER + "scalar entry main (true) {\n  .log(\"hello);\n}\n").get(0));
