@@ -174,6 +174,15 @@ public final class ProgramParser {
                 report(line, column + 1, "unterminated string literal");
                 return;
             }
+            boolean declaration = found.getType() == MASLLexer.LOCAL || found.getType() == MASLLexer.SHARED;
+            if (declaration && parser.getContext() instanceof MASLParser.ProgramContext) {
+                // A global variable, as in Java's fields: MASL's variables belong to blocks.
+                report(line, column + 1, "unexpected '" + found.getText() + "': variables are declared at the head of"
+                        + " an entry block, `" + found.getText() + "` for " + (found.getType() == MASLLexer.SHARED
+                                ? "one the block's members share" : "each agent's own")
+                        + ": `synchronous entry main (true) { " + found.getText() + " int x = 0; … }`");
+                return;
+            }
             if (found.getType() == MASLLexer.COMMA && parser.getContext() instanceof MASLParser.VariableDeclContext) {
                 // Java's habit, `int i = 0, j = 1;`: in MASL the one initialiser follows every name.
                 report(line, column + 1, "unexpected ',': a declaration's names come before its one initial value"

@@ -55,6 +55,13 @@ class SyntaxErrorTest {
     }
 
     @Test
+    void aVariableOutsideEveryBlock() {
+        assertSingleError(HEADER + "shared int x = 0;\nscalar entry main (true) {\n  .logln(x);\n}\n",
+                3, 1, "unexpected 'shared': variables are declared at the head of an entry block, `shared` for one"
+                        + " the block's members share: `synchronous entry main (true) { shared int x = 0; … }`");
+    }
+
+    @Test
     void unterminatedString() {
         assertEquals(Diagnostic.error("p.masl", 4, 8, "unterminated string literal"),
                 errorsOf(HEADER + "scalar entry main (true) {\n  .log(\"hello);\n}\n").get(0));
