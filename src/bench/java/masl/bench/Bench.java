@@ -87,9 +87,17 @@ public final class Bench {
             deployed(options);
         }
         // A JADE platform that failed to shut down (closeQuietly) leaves threads that are not daemons:
-        // they must not keep the benchmark, and `gradle bench` with it, from ending.
+        // they must not keep the benchmark, and `gradle bench` with it, from ending. Its AMS's shutdown
+        // hook would wait for good on the agent table the failure left locked: then the JVM halts.
+        if (jadeLeftRunning) {
+            System.out.flush();
+            Runtime.getRuntime().halt(0);
+        }
         System.exit(0);
     }
+
+    /** Whether a JADE platform of the bench failed to shut down ({@link #closeQuietly}). */
+    private static volatile boolean jadeLeftRunning;
 
     /**
      * Synchronous round trips between agent pairs: MASL in-process against JADE's ACL ping-pong in
@@ -415,6 +423,7 @@ public final class Bench {
         try {
             platform.close();
         } catch (JadeException e) {
+            jadeLeftRunning = true;
             System.out.println("   (JADE did not shut down cleanly: " + e.getMessage() + ")");
         }
     }

@@ -11,7 +11,8 @@ public final class Main {
     /**
      * JADE prints some of its faults as stack traces on standard error: each is folded to its first
      * line. A thread that runs out of memory outside an agent's slice fails the mission as an agent
-     * would ({@link MemoryReserve}), which masl reports: no stack trace of its own.
+     * would ({@link MemoryReserve}), which masl reports: no stack trace of its own. The command ends
+     * with its status even if a shutdown hook hangs ({@link ExitGuard}).
      */
     public static void main(String[] args) {
         System.setErr(StackTraceFolding.around(System.err));
@@ -23,6 +24,6 @@ public final class Main {
             System.err.print("Exception in thread \"" + thread.getName() + "\" ");
             uncaught.printStackTrace();
         });
-        System.exit(new Masl(System.out, System.err).run(args));
+        ExitGuard.exit(new Masl(System.out, System.err).run(args));
     }
 }
