@@ -345,12 +345,12 @@ public final class Bench {
                     missions.prepare(platform, source, DeployedMissions.Where.DEPLOYED),
                     missions.prepare(platform, source, DeployedMissions.Where.PLACED),
                     missions.prepare(platform, source, DeployedMissions.Where.IN_PROCESS)));
-            double[] deployed = printDeployed("ten own primitives a step, deployed", agents, figures.get(0));
-            double[] placed = printDeployed("ten own primitives a step, placed", agents, figures.get(1));
-            double[] inProcess = printDeployed("ten own primitives a step, in-process", agents, figures.get(2));
+            Rates deployed = printDeployed("ten own primitives a step, deployed", agents, figures.get(0));
+            Rates placed = printDeployed("ten own primitives a step, placed", agents, figures.get(1));
+            Rates inProcess = printDeployed("ten own primitives a step, in-process", agents, figures.get(2));
             System.out.printf(Locale.ROOT, "   deployed/placed %s (later half %s), in-process/deployed %s (later half %s)%n",
-                    ratio(deployed[0], placed[0]), ratio(deployed[1], placed[1]), ratio(inProcess[0], deployed[0]),
-                    ratio(inProcess[1], deployed[1]));
+                    ratio(deployed.whole(), placed.whole()), ratio(deployed.later(), placed.later()),
+                    ratio(inProcess.whole(), deployed.whole()), ratio(inProcess.later(), deployed.later()));
         } finally {
             closeQuietly(platform);
             missions.close();
@@ -377,14 +377,17 @@ public final class Bench {
         return figures;
     }
 
+    /** Median steps per second of a deployed row, over the whole mission and over its later half. */
+    private record Rates(double whole, double later) { }
+
     /** Prints a row of medians; its steps per second over the whole mission and over its later half. */
-    private static double[] printDeployed(String row, int agents, List<DeployedMissions.Figures> runs) {
+    private static Rates printDeployed(String row, int agents, List<DeployedMissions.Figures> runs) {
         double rate = median(runs.stream().mapToDouble(DeployedMissions.Figures::stepsPerSecond).toArray());
         double later = median(runs.stream().mapToDouble(DeployedMissions.Figures::laterStepsPerSecond).toArray());
         System.out.printf(Locale.ROOT, "%-44s | %8d | %12s | %12s | %12.1f | %12.1f%n", row, agents, rate(rate), rate(later),
                 median(runs.stream().mapToDouble(DeployedMissions.Figures::toContainerPerStep).toArray()),
                 median(runs.stream().mapToDouble(DeployedMissions.Figures::fromContainerPerStep).toArray()));
-        return new double[] {rate, later};
+        return new Rates(rate, later);
     }
 
     private static double record(Map<String, List<StartUp.Timing>> timings, String row, StartUp.Timing timing) {
