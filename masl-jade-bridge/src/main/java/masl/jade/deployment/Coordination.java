@@ -153,7 +153,7 @@ public final class Coordination {
      */
     public static List<Integer> agentsNamed(ObjectNode message) {
         List<Integer> named = new ArrayList<>();
-        for (ObjectNode inner : Outbox.each(message)) {
+        for (ObjectNode inner : Batch.each(message)) {
             named.add(inner.path("agent").asInt(-1));
             if ("invoked".equals(inner.path("kind").asText())) {
                 named.add(inner.path("callee").asInt(-1));

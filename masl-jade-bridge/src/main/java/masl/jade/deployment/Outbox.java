@@ -1,7 +1,5 @@
 package masl.jade.deployment;
 
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.List;
@@ -12,7 +10,7 @@ import java.util.function.Consumer;
 
 /**
  * One side's messages on the link between the mission and a container, combined: they go as one
- * {@code batch} message, in the order added, when no agent of the link is <em>busy</em> on this side
+ * {@link Batch}, in the order added, when no agent of the link is <em>busy</em> on this side
  * any more: on the mission's side, when no agent of the container waits for an answer, a wake-up or
  * a resumption the mission has not given yet; on the container's side, when none of its agents is
  * running a step there. In a lock-step mission the barrier's trip wakes every agent of a container,
@@ -45,7 +43,7 @@ final class Outbox {
 
     private final Wire wire;
     private int busy;
-    private ArrayNode held;
+    private List<ObjectNode> held;
     private long firstHeld;
     private long lastHeld;
     private boolean timed;
@@ -71,7 +69,7 @@ final class Outbox {
     synchronized void add(ObjectNode message, int busyChange) {
         long now = System.nanoTime();
         if (held == null) {
-            held = JsonNodeFactory.instance.arrayNode();
+            held = new ArrayList<>();
             firstHeld = now;
         }
         held.add(message);
@@ -120,26 +118,13 @@ final class Outbox {
      * message before {@code take} takes any, so that what they let go on is counted before it runs.
      */
     static void unpack(ObjectNode message, Consumer<ObjectNode> first, Consumer<ObjectNode> take) {
-        List<ObjectNode> each = each(message);
+        List<ObjectNode> each = Batch.each(message);
         each.forEach(first);
         each.forEach(take);
     }
 
-    /** The messages of a batch, or the one message. */
-    static List<ObjectNode> each(ObjectNode message) {
-        List<ObjectNode> each = new ArrayList<>();
-        if ("batch".equals(message.path("kind").asText())) {
-            message.path("messages").forEach(inner -> each.add(inner instanceof ObjectNode object ? object
-                    : JsonNodeFactory.instance.objectNode()));
-        } else {
-            each.add(message);
-        }
-        return each;
-    }
-
     private void flush() {
-        ObjectNode batch = JsonNodeFactory.instance.objectNode().put("kind", "batch");
-        batch.set("messages", held);
+        ObjectNode batch = Batch.of(held);
         held = null;
         wire.send(batch);
     }

@@ -35,6 +35,6 @@ class OutboxTest {
     }
 
     private static List<String> kinds(ObjectNode batch) {
-        return Outbox.each(batch).stream().map(message -> message.path("kind").asText()).toList();
+        return Batch.each(batch).stream().map(message -> message.path("kind").asText()).toList();
     }
 }

@@ -30,7 +30,7 @@ class RunAnswersTest {
                 proxyId -> sent::add, text -> { });
         CompletableFuture<ObjectNode> asked = CompletableFuture.supplyAsync(
                 () -> coordination.ask(1, JSON.objectNode().put("kind", "read").put("attribute", "total")));
-        ObjectNode request = Outbox.each(sent.poll(10, TimeUnit.SECONDS)).get(0);
+        ObjectNode request = Batch.each(sent.poll(10, TimeUnit.SECONDS)).get(0);
         long run = request.get("run").longValue();
 
         // Agent 0's container answers first: were it taken, the run would end with its 666.

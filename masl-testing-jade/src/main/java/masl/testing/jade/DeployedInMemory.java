@@ -20,6 +20,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
+import masl.jade.deployment.Batch;
 import masl.jade.deployment.Coordination;
 import masl.jade.deployment.StandInsOnAPool;
 import masl.jade.deployment.DeployedTeam;
@@ -213,11 +214,7 @@ public final class DeployedInMemory implements MissionPlatform {
 
     /** Counts the kind of {@code message}, or of each message of a batch. */
     private static void countKinds(ObjectNode message, Map<String, Integer> kinds) {
-        if ("batch".equals(message.path("kind").asText())) {
-            message.path("messages").forEach(inner -> kinds.merge(inner.path("kind").asText(), 1, Integer::sum));
-        } else {
-            kinds.merge(message.path("kind").asText(), 1, Integer::sum);
-        }
+        Batch.each(message).forEach(inner -> kinds.merge(inner.path("kind").asText(), 1, Integer::sum));
     }
 
     private static ObjectNode overTheWire(ObjectNode message) {
