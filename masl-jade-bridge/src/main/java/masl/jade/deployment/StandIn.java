@@ -3,6 +3,7 @@ package masl.jade.deployment;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.NullNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Iterator;
 import java.util.Map;
@@ -110,7 +111,7 @@ final class StandIn extends AgentProgram {
             if (!"yield".equals(end.path("kind").textValue())) {
                 throw new IllegalStateException("agent " + id + "'s step went on after a call parked it: " + end);
             }
-            endOfStep(taken(ctx, end));
+            endOfStep(ctx, taken(ctx, end));
         }
         if (away) {
             away = false;
@@ -129,24 +130,26 @@ final class StandIn extends AgentProgram {
                     away = true;
                     return;
                 }
-                if (!finished) {
-                    // A call performed for the step parked the agent (an enter that waits): only the
-                    // step's end comes, and the slice that runs once the agent is let go takes it.
-                    endOwed = true;
-                    return;
-                }
-                // The program finished: no slice follows, and this one waits on its thread for the
-                // step's end, which follows the finish's answer.
-                message = coordination.await(id, requests);
+                // A call performed for the step parked the agent (an enter that waits): only the
+                // step's end comes, and the slice that runs once the agent is let go takes it.
+                endOwed = true;
+                return;
             }
             ObjectNode request = taken(ctx, message);
             if ("yield".equals(request.get("kind").textValue())) {
-                endOfStep(request);
+                endOfStep(ctx, request);
                 return;
             }
             String op = request.get("op").textValue();
+            if ("finish".equals(op)) {
+                // The program returns right after the answer (AgentContext#finish): its step's end
+                // comes next, and the agent finishes here once it has, parked meanwhile, so that no
+                // thread waits for it and the mission, which may end then, has every message of it.
+                finished = true;
+                answer(ctx, NullNode.getInstance());
+                continue;
+            }
             JsonNode value = coordination.calls().perform(this, ctx, request);
-            finished |= "finish".equals(op);
             if (SUSPENDING.contains(op) && !value.booleanValue()) {
                 // The program returns from its step on false: it does here, and its container hears
                 // nothing until the step is resumed (a barrier's trip, most often).
@@ -157,13 +160,17 @@ final class StandIn extends AgentProgram {
         }
     }
 
-    /** The step ended ({@code yield}): throws what failed it; the agent's container no longer waits for a finished one. */
-    private void endOfStep(ObjectNode end) {
+    /**
+     * The step ended ({@code yield}): throws what failed it; a program that finished in it finishes
+     * here, and its container no longer waits for it.
+     */
+    private void endOfStep(AgentContext ctx, ObjectNode end) {
         if (end.has("failed")) {
             coordination.ended(id);
             throw new RemotePrimitiveException(end.get("failed").textValue(), end.path("message").textValue());
         }
         if (finished) {
+            ctx.finish();
             coordination.ended(id);
         }
     }

@@ -8,8 +8,9 @@ import masl.runtime.testing.TestAgent;
 
 /**
  * {@code synchronous entry main (true) { steps trivial instructions; .logln("done"); }}, the agent
- * running {@code hold} in its step {@code held}: where a test keeps steps in their container (in a
- * primitive that blocks, as robots' do) while it looks at the threads.
+ * running {@code hold} in its step {@code held}, or after {@code finish} if {@code held} is greater
+ * than {@code steps}: where a test keeps steps in their container (in a primitive that blocks, as
+ * robots' do, or as a slow link delays the end of a step) while it looks at the threads.
  */
 final class HeldStep extends CompactProgram {
     private final EntryDefinition main;
@@ -49,6 +50,9 @@ final class HeldStep extends CompactProgram {
                     continue;
                 case 4:
                     ctx.finish();
+                    if (held > steps) {
+                        hold.accept(self);
+                    }
                     return;
                 default:
                     throw new IllegalStateException("pc " + pc);

@@ -23,9 +23,10 @@ import org.junit.jupiter.api.Timeout;
 
 /**
  * A deployed agent whose step runs in its container holds no thread of its mission while the
- * mission waits for that step's next request: its stand-in is parked, and the request's arrival
- * makes it runnable; and no stand-in has a thread of its own: their slices run on the mission's pool
- * ({@link StandInsOnAPool}). A mission of a thousand deployed agents thus needs no thread per agent.
+ * mission waits for that step's next request, or for the end of the step in which its program
+ * finished: its stand-in is parked, and the message's arrival makes it runnable; and no stand-in has
+ * a thread of its own: their slices run on the mission's pool ({@link StandInsOnAPool}). A mission of
+ * a thousand deployed agents thus needs no thread per agent.
  */
 @Timeout(60)
 class StandInThreadsTest {
@@ -36,22 +37,31 @@ class StandInThreadsTest {
     private static final EntryDefinition MAIN = EntryDefinition.main("main", Mode.SYNCHRONOUS);
     private static final int AGENTS = 8;
     private static final int STEPS = 4;
-    /** The step in which every agent stays in its container until released, its stand-in waiting. */
-    private static final int HELD = 2;
 
-    private static final CountDownLatch HOLDING = new CountDownLatch(AGENTS);
-    private static final CountDownLatch RELEASED = new CountDownLatch(1);
+    private final CountDownLatch holding = new CountDownLatch(AGENTS);
+    private final CountDownLatch released = new CountDownLatch(1);
     /** The threads found waiting for a container in a stand-in's step when the patience ran out. */
-    private static final List<String> STILL_WAITING = new CopyOnWriteArrayList<>();
+    private final List<String> stillWaiting = new CopyOnWriteArrayList<>();
     /** The threads of one agent each (a thread-per-agent scheduler's) alive while the steps were held. */
-    private static final List<String> OWN_THREADS = new CopyOnWriteArrayList<>();
+    private final List<String> ownThreads = new CopyOnWriteArrayList<>();
 
     @Test
     void standInsWaitingForTheirContainerHoldNoThread() throws Exception {
+        assertNoThreadWaitsWhileEveryStepIsHeld(2);
+    }
+
+    /** Every program finished, and the ends of their steps are slow to come: the mission waits for them, holding no thread. */
+    @Test
+    void standInsWaitingForTheEndOfTheirLastStepHoldNoThread() throws Exception {
+        assertNoThreadWaitsWhileEveryStepIsHeld(STEPS + 1);
+    }
+
+    /** Every agent stays in its container in step {@code held} (after finishing, if beyond {@link #STEPS}) until released. */
+    private void assertNoThreadWaitsWhileEveryStepIsHeld(int held) throws Exception {
         ThreadSnapshot before = ThreadSnapshot.take();
         Thread watcher = new Thread(() -> {
             try {
-                HOLDING.await();
+                holding.await();
                 // Every step runs in its container: each stand-in, answered its resumption, lets go of its thread.
                 long deadline = System.nanoTime() + PATIENCE_NANOS;
                 List<Thread> waiting = standInThreads();
@@ -59,11 +69,11 @@ class StandInThreadsTest {
                     Thread.sleep(10);
                     waiting = standInThreads();
                 }
-                waiting.forEach(thread -> STILL_WAITING.add(thread.getName()));
+                waiting.forEach(thread -> stillWaiting.add(thread.getName()));
                 // Nor has any stand-in a thread of its own: the mission's pool runs their slices.
                 before.startedSince().stream().map(Thread::getName)
-                        .filter(name -> name.startsWith("masl-agent-")).forEach(OWN_THREADS::add);
-                RELEASED.countDown();
+                        .filter(name -> name.startsWith("masl-agent-")).forEach(ownThreads::add);
+                released.countDown();
             } catch (InterruptedException stopped) {
                 Thread.currentThread().interrupt();
             }
@@ -72,12 +82,12 @@ class StandInThreadsTest {
         watcher.start();
         Set<String> all = IntStream.range(0, AGENTS).mapToObj(i -> "a" + i).collect(Collectors.toSet());
         InMemoryDeployment.Run run = InMemoryDeployment.run(() -> TestPrograms.of(MAIN, AGENTS,
-                self -> new HeldStep(self, MAIN, STEPS, HELD, StandInThreadsTest::hold)), all,
+                self -> new HeldStep(self, MAIN, STEPS, held, this::hold)), all,
                 TIMEOUT);
         assertTrue(run.outcome().completed(), run.outcome().toString());
         assertEquals("done\n".repeat(AGENTS), run.outcome().journal());
-        assertEquals(List.of(), STILL_WAITING, "threads waiting in a stand-in's step for its container");
-        assertEquals(List.of(), OWN_THREADS, "a thread per stand-in");
+        assertEquals(List.of(), stillWaiting, "threads waiting in a stand-in's step for its container");
+        assertEquals(List.of(), ownThreads, "a thread per stand-in");
     }
 
     /** The live threads in a stand-in's step. */
@@ -90,11 +100,11 @@ class StandInThreadsTest {
     }
 
     /** Every agent stays in its step until released. */
-    private static void hold(TestAgent held) {
-        HOLDING.countDown();
+    private void hold(TestAgent held) {
+        holding.countDown();
         try {
             Blocking.call(() -> {
-                RELEASED.await();
+                released.await();
                 return null;
             });
         } catch (Exception interrupted) {
