@@ -74,6 +74,8 @@ final class ContainerHost extends Agent {
     /** Whether the bodies placed here exist and are registered. */
     private transient volatile boolean bodiesReady;
     private transient volatile String lost;
+    /** Whether JADE deleted this agent: its container is ending, by {@link MaslContainer#close} or its platform's shutdown. */
+    private transient volatile boolean takenDown;
     private transient volatile String unhosted;
     /** Translates the programs of agents deployed here; null if this container runs none. */
     private final transient ProgramTranslator translator;
@@ -134,6 +136,7 @@ final class ContainerHost extends Agent {
      */
     @Override
     protected void takeDown() {
+        takenDown = true;
         if (ended.getCount() > 0) {
             lost = "the platform is gone (its main container shut down)";
             endMission();
@@ -145,6 +148,10 @@ final class ContainerHost extends Agent {
         } catch (FIPAException e) {
             // The platform is going away with its DF.
         }
+    }
+
+    boolean takenDown() {
+        return takenDown;
     }
 
     CountDownLatch ready() {

@@ -160,6 +160,7 @@ public final class MaslContainer implements AutoCloseable {
     /** Deletes the bodies if the mission has not ended, and closes the container. */
     @Override
     public void close() {
+        endingAlready();
         platform.close();
     }
 
@@ -168,6 +169,14 @@ public final class MaslContainer implements AutoCloseable {
      * ({@link JadePlatform#leave()}): this JVM joins the next mission's platform at once.
      */
     public void leave() {
+        endingAlready();
         platform.leave();
+    }
+
+    /** If the platform's shutdown is ending this container (it deleted the host), closing waits for that end. */
+    private void endingAlready() {
+        if (host.takenDown()) {
+            platform.endedByItsPlatform();
+        }
     }
 }

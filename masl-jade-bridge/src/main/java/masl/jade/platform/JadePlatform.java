@@ -45,6 +45,8 @@ public final class JadePlatform implements AutoCloseable {
     public static final Duration SHUTDOWN_TIMEOUT = Duration.ofSeconds(30);
     /** How long {@link #leave()} waits for JADE's threads to end before it leaves them. */
     private static final Duration LEAVE_THREADS_WAIT = Duration.ofSeconds(1);
+    /** How long a container its platform may be ending has for that end before it ends itself ({@link #endedByItsPlatform}). */
+    private static final Duration EXIT_GRACE = Duration.ofSeconds(5);
     /** How long the AMS has to end the platform before it is asked again. */
     private static final Duration AMS_RETRY_AFTER = Duration.ofSeconds(10);
 
@@ -61,6 +63,8 @@ public final class JadePlatform implements AutoCloseable {
     private final Path fileDir;
     private final CountDownLatch terminated = new CountDownLatch(1);
     private boolean closed;
+    /** Whether the platform's shutdown is ending this container, which must then not be ended again. */
+    private volatile boolean endedByItsPlatform;
 
     private JadePlatform(JadeOptions options, AgentContainer container, int port, String httpAddress,
             Path fileDir) {
@@ -238,6 +242,20 @@ public final class JadePlatform implements AutoCloseable {
         end(LEAVE_THREADS_WAIT, false);
     }
 
+    /**
+     * Says that this container, which joined a platform, may be being ended by that platform's
+     * shutdown (JADE deleted one of its agents): {@link #close()} and {@link #leave()} then wait up to
+     * {@link #EXIT_GRACE} for that end, and end the container themselves only if it has not come (an
+     * agent deleted alone). JADE 4.3 does not survive a container ended twice at once: the main
+     * container's order to exit and the container's own shutdown both run, JADE fails serving the
+     * order ("Error serving H-Command jade.core.management.AgentManagement/8"), and every later
+     * container of the JVM fails to join (seen in a serving container whose mission placed nothing on
+     * it: it learns of the mission's end from the shutdown alone).
+     */
+    public void endedByItsPlatform() {
+        endedByItsPlatform = true;
+    }
+
     private void end(Duration threadsWithin, boolean threadsMustEnd) {
         synchronized (LIFECYCLE) {
             if (closed) {
@@ -248,7 +266,7 @@ public final class JadePlatform implements AutoCloseable {
             try {
                 if (isMain()) {
                     shutDownPlatform();
-                } else {
+                } else if (!endedByItsPlatform || !terminated.await(EXIT_GRACE.toNanos(), TimeUnit.NANOSECONDS)) {
                     killContainer();
                 }
                 if (last) {

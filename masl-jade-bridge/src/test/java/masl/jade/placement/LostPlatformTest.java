@@ -15,7 +15,8 @@ import org.junit.jupiter.api.Timeout;
 
 /**
  * A container that no coordinator placed bodies on ends its mission when its platform shuts down,
- * saying why, instead of waiting for ever for a placement that cannot come.
+ * saying why, instead of waiting for ever for a placement that cannot come; leaving then, while the
+ * shutdown ends it, it joins the next platform, as a serving container does mission after mission.
  */
 @Timeout(120)
 class LostPlatformTest {
@@ -30,6 +31,24 @@ class LostPlatformTest {
             assertEquals(List.of(), container.hostedAgents());
         } finally {
             main.close();
+        }
+    }
+
+    @Test
+    void aContainerLeavingWhileItsPlatformShutsDownJoinsTheNextPlatform() throws Exception {
+        for (int mission = 1; mission <= 3; mission++) {
+            JadePlatform main = JadePlatform.start(JadeOptions.mainContainer());
+            Thread shutdown = new Thread(main::close, "platform-shutdown");
+            try {
+                MaslContainer container = ForgedMessagesTest.container(main, "c2", MissionSecret.generate());
+                shutdown.start();
+                assertTrue(container.awaitMissionEnd(Duration.ofSeconds(60)), "mission " + mission + ": still waiting");
+                assertEquals(Optional.of("the platform is gone (its main container shut down)"), container.lostPlatform());
+                container.leave();
+            } finally {
+                shutdown.join();
+                main.close();
+            }
         }
     }
 }
