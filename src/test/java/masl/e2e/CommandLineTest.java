@@ -13,6 +13,8 @@ import java.nio.file.Path;
 import java.util.Map;
 import java.util.stream.Collectors;
 import masl.e2e.agents.HomeOnly;
+import masl.jade.trust.MissionSecret;
+import masl.jade.trust.SecretFile;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -103,6 +105,25 @@ class CommandLineTest {
             assertEquals(2, masl.awaitExit(), masl::toString);
             assertEquals("masl: cannot join the JADE platform at 127.0.0.1:" + port + " (is its main container running?)\n",
                     masl.err());
+        }
+    }
+
+    /**
+     * A serving container whose mission's secret is there but whose platform does not answer says
+     * so at once, once, while it keeps trying; then, at its timeout, that it could not join.
+     */
+    @Test
+    void aServingContainerThatCannotJoinItsMissionsPlatformSaysSoOnceWhileItTries() throws Exception {
+        int port = freePort();
+        Path secret = folder.resolve("secret");
+        try (SecretFile written = MissionSecret.generate().writeTo(secret);
+                MaslProcess container = MaslProcess.start(folder.resolve("container.txt").toFile(), "container", "--serve",
+                        "--main-host", "127.0.0.1", "--main-port", String.valueOf(port), "--name", "c9", "--timeout", "3",
+                        "--secret-file", secret.toString())) {
+            assertEquals(2, container.awaitExit(), container::toString);
+            String cannot = "masl: container c9: cannot join the JADE platform at 127.0.0.1:" + port
+                    + " (is its main container running?)";
+            assertEquals(cannot + "; trying again until the mission's timeout\n" + cannot + "\n", container.err());
         }
     }
 

@@ -193,11 +193,13 @@ final class ContainerCommand {
     /**
      * Joins, retrying for {@value #JOIN_SECONDS} s while the main container does not answer yet (it
      * may start after this command, and its port opens a moment before it accepts containers); the
-     * last failure is reported in one line. The port is not probed with a bare connection: JADE
-     * would log that as an error.
+     * last failure is reported in one line. Serving, the platform listens already (its mission wrote
+     * its secret), so a failure is news: each new one is said at once, with the retrying. The port is
+     * not probed with a bare connection: JADE would log that as an error.
      */
     private MaslContainer join(CommandLine line, DescriptorLoader descriptors, MissionSecret.Source secret,
             ContainerTranslator translator, long deadline) throws InterruptedException {
+        String said = null;
         while (true) {
             try {
                 return MaslContainer.start(JadeOptions.join(line.mainHost, line.mainPort), line.containerName,
@@ -207,6 +209,11 @@ final class ContainerCommand {
             } catch (JadeException notYet) {
                 if (System.nanoTime() - deadline > 0) {
                     throw notYet;
+                }
+                if (line.serve && !notYet.getMessage().equals(said)) {
+                    said = notYet.getMessage();
+                    err.println("masl: container " + line.containerName + ": " + said + "; trying again until the mission's timeout");
+                    err.flush();
                 }
             }
             Thread.sleep(200);
