@@ -74,7 +74,7 @@ final class ContainerHost extends Agent {
     /** Whether the bodies placed here exist and are registered. */
     private transient volatile boolean bodiesReady;
     private transient volatile String lost;
-    /** Whether JADE deleted this agent: its container is ending, by {@link MaslContainer#close} or its platform's shutdown. */
+    /** Whether JADE deleted this agent: as its container ends (closed, or by its platform's shutdown), or alone. */
     private transient volatile boolean takenDown;
     private transient volatile String unhosted;
     /** Translates the programs of agents deployed here; null if this container runs none. */

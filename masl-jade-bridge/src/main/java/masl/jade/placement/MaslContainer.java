@@ -173,7 +173,7 @@ public final class MaslContainer implements AutoCloseable {
         platform.leave();
     }
 
-    /** If the platform's shutdown is ending this container (it deleted the host), closing waits for that end. */
+    /** If JADE deleted the host, the platform's shutdown may be ending this container: closing first waits for that end. */
     private void endingAlready() {
         if (host.takenDown()) {
             platform.endedByItsPlatform();

@@ -63,7 +63,7 @@ public final class JadePlatform implements AutoCloseable {
     private final Path fileDir;
     private final CountDownLatch terminated = new CountDownLatch(1);
     private boolean closed;
-    /** Whether the platform's shutdown is ending this container, which must then not be ended again. */
+    /** Whether the platform's shutdown may be ending this container, which then has a grace to end before it is ended here. */
     private volatile boolean endedByItsPlatform;
 
     private JadePlatform(JadeOptions options, AgentContainer container, int port, String httpAddress,
