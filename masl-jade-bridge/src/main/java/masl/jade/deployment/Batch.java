@@ -35,7 +35,7 @@ public final class Batch {
         ObjectNode run = null;
         ObjectNode like = null;
         for (ObjectNode message : messages) {
-            if (like == null || !alike(message, like, run)) {
+            if (like == null || !alike(message, like)) {
                 like = message;
                 run = runs.addObject();
                 ObjectNode shared = message.deepCopy();
@@ -58,19 +58,19 @@ public final class Batch {
     }
 
     /**
-     * Whether {@code message} joins {@code run}, whose first message is {@code like}: it has the run's
+     * Whether {@code message} joins the run whose first message is {@code like}: it has the same
      * columns, at least one, and the same value as {@code like} in every other field.
      */
-    private static boolean alike(ObjectNode message, ObjectNode like, ObjectNode run) {
+    private static boolean alike(ObjectNode message, ObjectNode like) {
         if (message.size() != like.size()) {
             return false;
         }
         boolean columns = false;
         for (String column : COLUMNS) {
-            if (message.has(column) != run.has(column)) {
+            if (message.has(column) != like.has(column)) {
                 return false;
             }
-            columns |= run.has(column);
+            columns |= like.has(column);
         }
         if (!columns) {
             return false;
@@ -100,13 +100,14 @@ public final class Batch {
                 each.add(JsonNodeFactory.instance.objectNode());
                 continue;
             }
+            List<JsonNode> columns = COLUMNS.stream().map(run::path).toList();
             for (int i = 0; i < count; i++) {
                 ObjectNode one = JsonNodeFactory.instance.objectNode();
                 one.setAll(like);
-                for (String column : COLUMNS) {
-                    JsonNode value = run.path(column).get(i);
+                for (int column = 0; column < columns.size(); column++) {
+                    JsonNode value = columns.get(column).get(i);
                     if (value != null) {
-                        one.set(column, value);
+                        one.set(COLUMNS.get(column), value);
                     }
                 }
                 each.add(one);
