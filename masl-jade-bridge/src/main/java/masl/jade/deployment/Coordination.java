@@ -138,12 +138,19 @@ public final class Coordination {
      * the order the container made them (or one of them).
      */
     public void receive(ObjectNode message) {
+        Mission running = mission;
         // Every agent asking waits for the mission from now on: counted before any is answered.
-        Outbox.unpack(message, inner -> {
+        Runnable unpack = () -> Outbox.unpack(message, inner -> {
             if (waitsForTheMission(inner)) {
                 outbox(inner.path("agent").intValue()).busy(1);
             }
         }, this::take);
+        // A wave's requests wake their stand-ins: the mission's threads are woken once for all.
+        if (running == null) {
+            unpack.run();
+        } else {
+            running.scheduler().together(unpack);
+        }
     }
 
     /**

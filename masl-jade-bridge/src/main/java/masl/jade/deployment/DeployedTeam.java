@@ -13,6 +13,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.ForkJoinWorkerThread;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
@@ -102,15 +103,30 @@ public final class DeployedTeam implements AutoCloseable {
 
     /**
      * A message from the mission: a step to run, an answer to a request, a call to run; or a batch of
-     * them, in the order the mission made them.
+     * them, in the order the mission made them. The steps a batch lets go on start once it is all
+     * taken.
      */
     public void receive(ObjectNode message) {
+        List<Runnable> wave = new ArrayList<>();
         // Every agent let go runs from now on: counted before any runs, so that none sends alone.
         Outbox.unpack(message, inner -> {
             if (letsGoOn(inner)) {
                 outbox.busy(1);
             }
-        }, this::take);
+        }, inner -> take(inner, wave));
+        start(wave);
+    }
+
+    /**
+     * Starts the steps a message let go on. A wave's steps are forked by one task of the pool, which
+     * wakes its idle threads once, where each submission from outside would signal the pool again.
+     */
+    private void start(List<Runnable> wave) {
+        if (wave.size() == 1) {
+            steps.execute(wave.get(0));
+        } else if (!wave.isEmpty()) {
+            steps.execute(() -> wave.forEach(step -> ForkJoinTask.adapt(step).fork()));
+        }
     }
 
     private boolean letsGoOn(JsonNode message) {
@@ -119,13 +135,13 @@ public final class DeployedTeam implements AutoCloseable {
         return goesOn && hosted.containsKey(message.path("agent").intValue());
     }
 
-    private void take(ObjectNode message) {
+    private void take(ObjectNode message, List<Runnable> wave) {
         RemoteContext agent = hosted.get(message.path("agent").intValue());
         switch (message.path("kind").textValue()) {
-            case "resume" -> steps.execute(() -> step(agent, message));
+            case "resume" -> wave.add(() -> step(agent, message));
             case "answer" -> {
                 if (agent.returning().resumption(message)) {
-                    steps.execute(() -> step(agent, message));
+                    wave.add(() -> step(agent, message));
                 } else {
                     agent.answered(message);
                 }

@@ -70,6 +70,12 @@ public final class StandInsOnAPool implements Scheduler {
         others.scheduleAll(rest);
     }
 
+    /** Stand-ins a container's message lets go on: the pool's workers are woken once for all. */
+    @Override
+    public void together(Runnable work) {
+        pool.together(work);
+    }
+
     /** A batch a pool worker's run held: of stand-ins only, run in the pool's passes. */
     @Override
     public void scheduleWoken(WokenBatch batch) {

@@ -104,6 +104,8 @@ public final class PoolScheduler implements Scheduler {
     /** Runners waiting, in their task, for work: woken before any new runner is started. */
     private final ConcurrentLinkedQueue<PoolWorker> idle = new ConcurrentLinkedQueue<>();
     private final Runnable runner = this::drainRunQueue;
+    /** The wave the calling thread is making runnable in {@link #together}, if any. */
+    private final ThreadLocal<Together> together = new ThreadLocal<>();
     private volatile boolean shutDown;
 
     /** A pool of one worker per available processor. */
@@ -144,9 +146,49 @@ public final class PoolScheduler implements Scheduler {
         // A runner's own slice hands its agent over: that runner takes it once the slice ends, and
         // wakes another only if more work waits then (runAlone). Waking one now would cost a
         // thread wake-up per invocation or event for nothing when the agents take turns.
-        if (worker == null || worker.blockedCalls > 0) {
+        if (worker == null) {
+            Together wave = together.get();
+            if (wave == null || wave.scheduled++ == 0) {
+                startRunnerIfNeeded();
+            }
+        } else if (worker.blockedCalls > 0) {
             startRunnerIfNeeded();
         }
+    }
+
+    /**
+     * Wakes one runner for the first agent {@code work} makes runnable, and the runners the wave
+     * wants once it returns: a runner that drains the queue meanwhile and goes idle is not woken
+     * again for each agent that follows, a thread wake-up each.
+     */
+    @Override
+    public void together(Runnable work) {
+        if (ownWorker() != null || together.get() != null) {
+            work.run();
+            return;
+        }
+        Together wave = new Together();
+        together.set(wave);
+        try {
+            work.run();
+        } finally {
+            together.remove();
+            int wanted = Math.min(workers, (wave.scheduled + CHUNK - 1) / CHUNK);
+            int started = 0;
+            while (started < wanted && startRunnerIfNeeded()) {
+                started++;
+            }
+        }
+    }
+
+    /** How many runners wait, idle, for work. */
+    int idleRunners() {
+        return idle.size();
+    }
+
+    /** The agents a thread outside the pool made runnable in {@link #together}. */
+    private static final class Together {
+        int scheduled;
     }
 
     /** Appends the whole wave to the run queue as one item, then starts the runners it needs. */

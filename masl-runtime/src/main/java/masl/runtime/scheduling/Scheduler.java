@@ -48,6 +48,17 @@ public interface Scheduler {
     }
 
     /**
+     * Runs {@code work}, which makes many agents runnable ({@link #schedule}) from a thread that
+     * runs no slice of this scheduler (a message that lets a wave of agents go on): a scheduler may
+     * then wake its threads once for all of them rather than once per agent. Every agent made
+     * runnable in {@code work} has its slice run, as if {@code schedule}d outside it; a slice may
+     * start before {@code work} returns. By default, runs {@code work}.
+     */
+    default void together(Runnable work) {
+        work.run();
+    }
+
+    /**
      * Makes the agents of a batch that a trip let go runnable: by default wakes them now and
      * {@link #scheduleAll}s those woken; a scheduler whose threads run slices in runs leaves the
      * wake-up to the thread that runs them.

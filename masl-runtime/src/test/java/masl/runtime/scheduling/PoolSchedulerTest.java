@@ -20,7 +20,8 @@ import org.junit.jupiter.api.Timeout;
  * slice makes runnable runs right after it (32 in a row at most), and what slices defer to the run
  * is done after as many slices as it asks (32 to 4,096), when the queue is empty, and before a slice
  * blocks; and on two, where a busy worker's home batch is not left waiting, and the batch of a short
- * wave stays with the worker whose slice let it go.
+ * wave stays with the worker whose slice let it go; and agents made runnable together from outside
+ * the pool all run, the runner woken for the first and again once the wave is made runnable.
  */
 @Timeout(60)
 class PoolSchedulerTest {
@@ -258,6 +259,23 @@ class PoolSchedulerTest {
     }
 
     @Test
+    void agentsMadeRunnableTogetherRunThoughTheRunnerWentIdleAfterTheFirst() throws InterruptedException {
+        CountDownLatch firstRan = new CountDownLatch(1);
+        CountDownLatch allRan = new CountDownLatch(100);
+        scheduler.together(() -> {
+            scheduler.schedule(task(0, firstRan::countDown));
+            // The first agent's slice runs before the wave is all made runnable...
+            await(firstRan);
+            // ...and its runner, with nothing left, waits for work: only the end of the wave wakes it again.
+            awaitIdleRunner();
+            IntStream.rangeClosed(1, 100).forEach(id -> scheduler.schedule(task(id, allRan::countDown)));
+        });
+
+        assertTrue(allRan.await(20, TimeUnit.SECONDS), "ran: " + ran);
+        assertEquals(IntStream.rangeClosed(0, 100).boxed().toList(), ran);
+    }
+
+    @Test
     void noRunOutsideTheSchedulersThreads() {
         assertNull(scheduler.currentRun());
     }
@@ -272,6 +290,14 @@ class PoolSchedulerTest {
             assertTrue(gate.await(20, TimeUnit.SECONDS));
         } catch (InterruptedException e) {
             throw new IllegalStateException(e);
+        }
+    }
+
+    private void awaitIdleRunner() {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (scheduler.idleRunners() == 0) {
+            assertTrue(System.nanoTime() < deadline, "the runner never went idle");
+            Thread.onSpinWait();
         }
     }
 
