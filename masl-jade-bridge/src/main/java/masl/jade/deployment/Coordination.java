@@ -138,9 +138,14 @@ public final class Coordination {
      * the order the container made them (or one of them).
      */
     public void receive(ObjectNode message) {
+        receive(Batch.each(message));
+    }
+
+    /** The messages of a container's batch ({@link Batch#each}), in its order, as {@link #receive(ObjectNode)} takes them. */
+    public void receive(List<ObjectNode> messages) {
         Mission running = mission;
         // Every agent asking waits for the mission from now on: counted before any is answered.
-        Runnable unpack = () -> Outbox.unpack(message, inner -> {
+        Runnable unpack = () -> Outbox.unpack(messages, inner -> {
             if (waitsForTheMission(inner)) {
                 outbox(inner.path("agent").intValue()).busy(1);
             }
@@ -159,8 +164,13 @@ public final class Coordination {
      * named. A container speaks only for its own agents: it vouches for both ends of such an invocation.
      */
     public static List<Integer> agentsNamed(ObjectNode message) {
+        return agentsNamed(Batch.each(message));
+    }
+
+    /** The proxy ids the messages of a batch ({@link Batch#each}) name, as {@link #agentsNamed(ObjectNode)}. */
+    public static List<Integer> agentsNamed(List<ObjectNode> messages) {
         List<Integer> named = new ArrayList<>();
-        for (ObjectNode inner : Batch.each(message)) {
+        for (ObjectNode inner : messages) {
             named.add(inner.path("agent").asInt(-1));
             if ("invoked".equals(inner.path("kind").asText())) {
                 named.add(inner.path("callee").asInt(-1));

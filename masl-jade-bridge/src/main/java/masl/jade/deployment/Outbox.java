@@ -118,7 +118,11 @@ final class Outbox {
      * message before {@code take} takes any, so that what they let go on is counted before it runs.
      */
     static void unpack(ObjectNode message, Consumer<ObjectNode> first, Consumer<ObjectNode> take) {
-        List<ObjectNode> each = Batch.each(message);
+        unpack(Batch.each(message), first, take);
+    }
+
+    /** Takes the messages of a batch the other side sent ({@link Batch#each}), as {@link #unpack(ObjectNode, Consumer, Consumer)}. */
+    static void unpack(List<ObjectNode> each, Consumer<ObjectNode> first, Consumer<ObjectNode> take) {
         each.forEach(first);
         each.forEach(take);
     }

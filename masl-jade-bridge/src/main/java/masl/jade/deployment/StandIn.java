@@ -248,12 +248,18 @@ final class StandIn extends AgentProgram {
         }
     }
 
-    /** Adds the calls that are over since the last message, so that the program's futures complete. */
+    /**
+     * Adds the calls that are over since the last message, so that the program's futures complete:
+     * {@code "done"}, absent if none is (most messages of a wave).
+     */
     private ObjectNode withDone(ObjectNode message) {
-        ArrayNode done = message.putArray("done");
+        ArrayNode done = null;
         for (Iterator<Map.Entry<Long, CompletableFuture<Object>>> it = calls.entrySet().iterator(); it.hasNext(); ) {
             Map.Entry<Long, CompletableFuture<Object>> call = it.next();
             if (call.getValue().isDone()) {
+                if (done == null) {
+                    done = message.putArray("done");
+                }
                 done.add(ended(call.getValue().join()).put("call", call.getKey()));
                 it.remove();
             }

@@ -30,6 +30,7 @@ import masl.jade.acl.Conversations;
 import masl.jade.acl.JsonContent;
 import masl.jade.acl.PlacementContent;
 import masl.jade.deployment.ContainerLostException;
+import masl.jade.deployment.Batch;
 import masl.jade.deployment.Coordination;
 import masl.jade.deployment.Wire;
 import masl.jade.outside.OutsideCalls;
@@ -220,8 +221,9 @@ public final class Distribution {
             return;
         }
         // A batch is taken whole or refused whole: each message in it must come from its agent's container.
+        List<ObjectNode> messages = Batch.each(json);
         String from = null;
-        for (int id : Coordination.agentsNamed(json)) {
+        for (int id : Coordination.agentsNamed(messages)) {
             String agent = id >= 0 && id < deployment.names().size() ? deployment.names().get(id) : null;
             String container = agent == null ? null : deployment.containerOfAgent().get(agent);
             AID proven = container == null ? null : containers.get(container);
@@ -237,7 +239,7 @@ public final class Distribution {
             return;
         }
         traffic.receivedFrom(from);
-        deployment.coordination().receive(json);
+        deployment.coordination().receive(messages);
     }
 
     /**
