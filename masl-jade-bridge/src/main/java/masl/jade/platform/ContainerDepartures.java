@@ -11,7 +11,8 @@ import java.util.regex.Pattern;
  * words: one line per container, {@code masl: container c9 left the platform (…)}, instead of what
  * JADE says of it on the main container's standard error, in its log ({@code EOF reached}, then
  * {@code --- Node <c9> UNREACHABLE ---}) or with {@code printStackTrace} when its AMS removes the
- * container twice ({@code jade.core.NotFoundException: No container named c9 was found.}, JADE 4.3's words). Every
+ * container twice ({@code jade.core.NotFoundException: No container named c9 was found.}, JADE 4.3's words), and
+ * when the platform's shutdown cannot end it ({@code Cannot kill container c9: Unreachable.}). Every
  * coordinator hears of such a departure, a body's container as an outside agents' one; the bodies'
  * calls that now fail are said by the coordinator itself ({@code Distribution}). Uses no JADE class:
  * the {@code masl} command passes its standard error through it.
@@ -21,6 +22,11 @@ public final class ContainerDepartures {
     private static final Pattern UNREACHABLE = Pattern.compile("--- Node <(.+)> UNREACHABLE ---");
     private static final Pattern REMOVED_TWICE = Pattern.compile(
             "jade\\.core\\.NotFoundException: No container named (\\S+) was found\\.?");
+    /**
+     * What JADE 4.3's AMS logs when its platform's shutdown reaches a container it has not removed
+     * yet: after that container's departure, a line that only accompanies it.
+     */
+    private static final Pattern NOT_KILLED = Pattern.compile("Cannot kill container (\\S+): Unreachable\\.?");
     /** What JADE's connection reader logs when a peer's connection ends: the departure says it. */
     private static final String CONNECTION_ENDED = "EOF reached";
 
@@ -40,6 +46,11 @@ public final class ContainerDepartures {
         String line = text.strip();
         if (line.equals(CONNECTION_ENDED)) {
             return Optional.of("");
+        }
+        Matcher notKilled = NOT_KILLED.matcher(line);
+        if (notKilled.matches()) {
+            // Of a container not known to have left (the main container's own, in a failed shutdown), JADE's words stand.
+            return SAID.contains(notKilled.group(1)) ? Optional.of("") : Optional.empty();
         }
         Matcher departed = UNREACHABLE.matcher(line);
         if (!departed.matches()) {

@@ -32,6 +32,18 @@ class ContainerDeparturesTest {
     }
 
     @Test
+    void aShutdownThatCannotEndAContainerThatLeftSaysNothingMore() {
+        ContainerDepartures.inMaslWords("--- Node <lab-10> UNREACHABLE ---");
+
+        assertEquals(Optional.of(""), ContainerDepartures.inMaslWords("Cannot kill container lab-10: Unreachable."));
+    }
+
+    @Test
+    void aShutdownThatCannotEndAContainerNotKnownToHaveLeftIsSaidAsJadeSaysIt() {
+        assertEquals(Optional.empty(), ContainerDepartures.inMaslWords("Cannot kill container Main-Container: Unreachable."));
+    }
+
+    @Test
     void otherLinesAreNotADeparture() {
         assertEquals(Optional.empty(), ContainerDepartures.inMaslWords("Receiver unreachable."));
         assertEquals(Optional.empty(), ContainerDepartures.inMaslWords("jade.core.NotFoundException: No agent named x"));
