@@ -173,11 +173,7 @@ public final class PoolScheduler implements Scheduler {
             work.run();
         } finally {
             together.remove();
-            int wanted = Math.min(workers, (wave.scheduled + CHUNK - 1) / CHUNK);
-            int started = 0;
-            while (started < wanted && startRunnerIfNeeded()) {
-                started++;
-            }
+            startRunnersFor(wave.scheduled);
         }
     }
 
@@ -198,7 +194,12 @@ public final class PoolScheduler implements Scheduler {
             return;
         }
         runQueue.add(agents.size() == 1 ? agents.get(0) : new RunBatch(agents));
-        int wanted = Math.min(workers, (agents.size() + CHUNK - 1) / CHUNK);
+        startRunnersFor(agents.size());
+    }
+
+    /** Wakes or starts the runners a wave of {@code agents} queued wants: one per chunk of it, at most one per worker. */
+    private void startRunnersFor(int agents) {
+        int wanted = Math.min(workers, (agents + CHUNK - 1) / CHUNK);
         int started = 0;
         while (started < wanted && startRunnerIfNeeded()) {
             started++;
