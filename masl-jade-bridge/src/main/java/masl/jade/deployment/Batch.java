@@ -5,7 +5,9 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.Iterator;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -17,8 +19,8 @@ import java.util.Map;
  * and so is every arrival, so that a wave of 500 agents says its fields once and two numbers per agent
  * rather than an object each, a twentieth of the text to write, sign, send and parse.
  *
- * <p>The messages {@link #each} gives back are objects of their own, but those of one run share the
- * nodes of their common values: they are read, never changed.
+ * <p>The messages {@link #each} gives back are objects of their own, but those of one run share
+ * their common fields ({@link RunMember}): none is copied for each message.
  */
 public final class Batch {
 
@@ -86,7 +88,8 @@ public final class Batch {
 
     /**
      * The messages of a batch in their order, or {@code message} if it is not a batch. A run that is
-     * not well made gives one empty message, which names no agent: a side refuses it, or the batch.
+     * not well made (a column that is no array, shared fields that are no object or hold a column)
+     * gives one empty message, which names no agent: a side refuses it, or the batch.
      */
     public static List<ObjectNode> each(ObjectNode message) {
         List<ObjectNode> each = new ArrayList<>();
@@ -96,21 +99,17 @@ public final class Batch {
         }
         for (JsonNode run : message.path("runs")) {
             int count = count(run);
-            if (count < 0 || !(run.get("like") instanceof ObjectNode like)) {
+            if (count < 0 || !(run.get("like") instanceof ObjectNode like) || COLUMNS.stream().anyMatch(like::has)) {
                 each.add(JsonNodeFactory.instance.objectNode());
                 continue;
             }
-            List<JsonNode> columns = COLUMNS.stream().map(run::path).toList();
+            Map<String, JsonNode> shared = new LinkedHashMap<>();
+            like.fields().forEachRemaining(field -> shared.put(field.getKey(), field.getValue()));
+            Map<String, JsonNode> fields = Collections.unmodifiableMap(shared);
+            JsonNode agents = run.path("agent");
+            JsonNode seqs = run.path("seq");
             for (int i = 0; i < count; i++) {
-                ObjectNode one = JsonNodeFactory.instance.objectNode();
-                one.setAll(like);
-                for (int column = 0; column < columns.size(); column++) {
-                    JsonNode value = columns.get(column).get(i);
-                    if (value != null) {
-                        one.set(COLUMNS.get(column), value);
-                    }
-                }
-                each.add(one);
+                each.add(new ObjectNode(JsonNodeFactory.instance, new RunMember(fields, agents.get(i), seqs.get(i))));
             }
         }
         return each;

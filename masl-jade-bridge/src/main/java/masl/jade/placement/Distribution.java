@@ -96,7 +96,19 @@ public final class Distribution {
 
     /** The agents whose programs run in other containers, and what those make them from (MASL, not code). */
     private record Deployed(Map<String, String> containerOfAgent, DeployedSource source, Coordination coordination,
-            List<String> names) {
+            List<String> names, List<String> containerById) {
+
+        Deployed(Map<String, String> containerOfAgent, DeployedSource source, Coordination coordination,
+                List<String> names) {
+            this(containerOfAgent, source, coordination, names,
+                    names.stream().map(name -> containerOfAgent.getOrDefault(name, "")).toList());
+        }
+
+        /** The container of agent {@code proxyId}'s program, or null for an agent not deployed or no agent. */
+        String containerOf(int proxyId) {
+            String container = proxyId >= 0 && proxyId < containerById.size() ? containerById.get(proxyId) : "";
+            return container.isEmpty() ? null : container;
+        }
 
         List<String> agentsIn(String container) {
             return names.stream().filter(name -> container.equals(containerOfAgent.get(name))).toList();
@@ -224,10 +236,14 @@ public final class Distribution {
         List<ObjectNode> messages = Batch.each(json);
         String from = null;
         for (int id : Coordination.agentsNamed(messages)) {
-            String agent = id >= 0 && id < deployment.names().size() ? deployment.names().get(id) : null;
-            String container = agent == null ? null : deployment.containerOfAgent().get(agent);
+            String container = deployment.containerOf(id);
+            // A wave names one container's agents: its sender is checked once, not once per agent.
+            if (container != null && container.equals(from)) {
+                continue;
+            }
             AID proven = container == null ? null : containers.get(container);
             if (proven == null || !proven.equals(message.getSender())) {
+                String agent = id >= 0 && id < deployment.names().size() ? deployment.names().get(id) : null;
                 coordinator.refuse(message, agent == null ? "it names no deployed agent"
                         : "it does not come from the container of " + agent);
                 return;

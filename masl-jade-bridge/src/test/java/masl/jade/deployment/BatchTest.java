@@ -52,9 +52,18 @@ class BatchTest {
     @Test
     void aRunNotWellMadeIsOneMessageNamingNoAgent() throws Exception {
         ObjectNode batch = (ObjectNode) JSON.readTree("""
-                {"kind":"batch","runs":[{"like":{"kind":"yield"},"agent":[1,2]},{"like":3},{"like":{"kind":"yield"},"agent":7},5]}""");
+                {"kind":"batch","runs":[{"like":{"kind":"yield"},"agent":[1,2]},{"like":3},{"like":{"kind":"yield"},"agent":7},5,{"like":{"kind":"yield","agent":4},"seq":[1]}]}""");
         List<ObjectNode> each = Batch.each(batch);
-        assertEquals(List.of(1, 2, -1, -1, -1), each.stream().map(message -> message.path("agent").asInt(-1)).toList());
+        assertEquals(List.of(1, 2, -1, -1, -1, -1), each.stream().map(message -> message.path("agent").asInt(-1)).toList());
+    }
+
+    @Test
+    void aMessageOfARunChangedByItsTakerLeavesTheOthersAsTheyCame() throws Exception {
+        List<ObjectNode> each = overTheWire(Batch.of(List.of(wakeUp(1, 10), wakeUp(2, 11), wakeUp(3, 12))));
+        each.get(0).put("pc", 9).remove("seq");
+        assertEquals(wakeUp(1, 10).put("pc", 9).without("seq"), each.get(0));
+        assertEquals(List.of(wakeUp(2, 11), wakeUp(3, 12)), each.subList(1, 3));
+        assertEquals(wakeUp(3, 12), JSON.readTree(each.get(2).toString()));
     }
 
     @Test
