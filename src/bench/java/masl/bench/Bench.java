@@ -329,11 +329,12 @@ public final class Bench {
         DeployedMissions missions = DeployedMissions.installed();
         JadePlatform platform = JadePlatform.start(JadeOptions.mainContainer());
         try {
-            System.out.printf(Locale.ROOT, "%-44s | %8s | %12s | %12s | %12s | %12s%n", "", "N", "steps / s", "later half",
-                    "msgs to c", "msgs from c");
+            System.out.printf(Locale.ROOT, "%-44s | %8s | %12s | %12s | %12s | %12s | %22s | %12s%n", "", "N", "steps / s",
+                    "later half", "msgs to c", "msgs from c", "CPU ms/step: mission", "containers");
             for (int agents : new int[] {100, 1_000}) {
-                // Long enough for the later half to run after the containers' JIT has compiled a step's code.
-                int steps = (int) Math.max(10, options.seconds() * (agents == 100 ? 2_000 : 1_000));
+                // Long enough for the later half to run after the containers' JIT has compiled a step's code;
+                // N = 1,000: three times as long, since its JIT goes on compiling for about 20 s.
+                int steps = (int) Math.max(10, options.seconds() * (agents == 100 ? 2_000 : 3_000));
                 printDeployed("lock-step, deployed", agents, interleavedFigures(runs, List.of(
                         missions.prepare(platform, DeployedMissions.lockStep(agents, steps), DeployedMissions.Where.DEPLOYED)))
                         .get(0));
@@ -357,6 +358,9 @@ public final class Bench {
         }
         System.out.println("   (later half: the rate over the later half of the steps, once the containers' fresh JVMs have"
                 + " compiled a step's code;");
+        System.out.println("    CPU ms/step: every thread of this JVM, and of the two containers' together, over the later"
+                + " half; their sum over " + Runtime.getRuntime().availableProcessors() + " cores is the shortest step"
+                + " the machine allows them;");
         System.out.println("    goals: >= 1,000 steps/s at N=1000 deployed; deployed/placed >= 10x)");
         System.out.println();
     }
@@ -384,9 +388,12 @@ public final class Bench {
     private static Rates printDeployed(String row, int agents, List<DeployedMissions.Figures> runs) {
         double rate = median(runs.stream().mapToDouble(DeployedMissions.Figures::stepsPerSecond).toArray());
         double later = median(runs.stream().mapToDouble(DeployedMissions.Figures::laterStepsPerSecond).toArray());
-        System.out.printf(Locale.ROOT, "%-44s | %8d | %12s | %12s | %12.1f | %12.1f%n", row, agents, rate(rate), rate(later),
+        System.out.printf(Locale.ROOT, "%-44s | %8d | %12s | %12s | %12.1f | %12.1f | %22.2f | %12.2f%n", row, agents,
+                rate(rate), rate(later),
                 median(runs.stream().mapToDouble(DeployedMissions.Figures::toContainerPerStep).toArray()),
-                median(runs.stream().mapToDouble(DeployedMissions.Figures::fromContainerPerStep).toArray()));
+                median(runs.stream().mapToDouble(DeployedMissions.Figures::fromContainerPerStep).toArray()),
+                median(runs.stream().mapToDouble(figures -> figures.cpu().mission()).toArray()),
+                median(runs.stream().mapToDouble(figures -> figures.cpu().containers()).toArray()));
         return new Rates(rate, later);
     }
 

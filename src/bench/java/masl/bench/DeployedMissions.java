@@ -51,7 +51,7 @@ final class DeployedMissions {
      * and the later half shows the rate of a mission that runs for long.
      */
     record Figures(double stepsPerSecond, double laterStepsPerSecond, double toContainerPerStep,
-            double fromContainerPerStep) {
+            double fromContainerPerStep, JvmCpu.PerStep cpu) {
     }
 
     private static final List<String> CONTAINERS = List.of("c2", "c3");
@@ -108,12 +108,14 @@ final class DeployedMissions {
 
     private static Figures inProcess(MissionLoader program) throws InterruptedException {
         TripTimes trips = new TripTimes();
-        program.newMission().journal(new StringBuilder()).trace(event -> {
-            if (event instanceof TraceEvent.BarrierTripped) {
-                trips.tripped();
-            }
-        }).build().run(MISSION_TIMEOUT).requireCompleted();
-        return new Figures(trips.stepsPerSecond(), trips.laterStepsPerSecond(), 0, 0);
+        try (JvmCpu cpu = new JvmCpu(trips)) {
+            program.newMission().journal(new StringBuilder()).trace(event -> {
+                if (event instanceof TraceEvent.BarrierTripped) {
+                    trips.tripped();
+                }
+            }).build().run(MISSION_TIMEOUT).requireCompleted();
+            return new Figures(trips.stepsPerSecond(), trips.laterStepsPerSecond(), 0, 0, cpu.perStep());
+        }
     }
 
     private Figures inContainers(JadePlatform platform, MissionLoader program, String source, Where where)
@@ -146,11 +148,14 @@ final class DeployedMissions {
             launcher.place(spread);
         }
         List<Process> containers = new ArrayList<>();
-        try (SecretFile shared = secret.writeTo(secretFile)) {
+        JvmCpu.PerStep perStep;
+        try (SecretFile shared = secret.writeTo(secretFile); JvmCpu cpu = new JvmCpu(trips)) {
             for (String container : CONTAINERS) {
                 containers.add(container(platform, container, secretFile));
+                cpu.container(containers.get(containers.size() - 1));
             }
             MissionOutcome outcome = launcher.run(platform, MISSION_TIMEOUT);
+            perStep = cpu.perStep();
             outcome.requireCompleted();
         } finally {
             for (Process container : containers) {
@@ -161,7 +166,7 @@ final class DeployedMissions {
         }
         double perContainerStep = (double) trips.count() * CONTAINERS.size();
         return new Figures(trips.stepsPerSecond(), trips.laterStepsPerSecond(), sum(traffic.sent()) / perContainerStep,
-                sum(traffic.received()) / perContainerStep);
+                sum(traffic.received()) / perContainerStep, perStep);
     }
 
     /** Deletes the containers' logs and the folder they were written to. */
