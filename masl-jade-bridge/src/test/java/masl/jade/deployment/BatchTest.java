@@ -67,6 +67,15 @@ class BatchTest {
     }
 
     @Test
+    void alikeMessagesWhoseFieldsCameInAnotherOrderAreRunsOfTheirOwnAndComeBackAsTheyWent() throws Exception {
+        ObjectNode first = JsonNodeFactory.instance.objectNode().put("kind", "yield").put("pc", 3).put("agent", 1);
+        ObjectNode second = JsonNodeFactory.instance.objectNode().put("pc", 3).put("kind", "yield").put("agent", 2);
+        ObjectNode batch = Batch.of(List.of(first, second));
+        assertEquals(2, batch.get("runs").size(), batch.toString());
+        assertEquals(List.of(first, second), overTheWire(batch));
+    }
+
+    @Test
     void aMessageThatIsNoBatchIsItself() {
         ObjectNode one = wakeUp(1, 2);
         assertEquals(List.of(one), Batch.each(one));
