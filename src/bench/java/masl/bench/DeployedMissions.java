@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
 import java.util.stream.Stream;
@@ -54,7 +55,12 @@ final class DeployedMissions {
             double fromContainerPerStep, JvmCpu.PerStep cpu) {
     }
 
-    private static final List<String> CONTAINERS = List.of("c2", "c3");
+    /**
+     * Each mission's two containers are named after it: a container that served the last mission may
+     * still be known to the platform, its departure not yet seen, and a new one of the same name would
+     * not be let in.
+     */
+    private final AtomicInteger missionNumbers = new AtomicInteger();
     private static final Duration MISSION_TIMEOUT = Duration.ofMinutes(10);
 
     private final Path masl;
@@ -121,9 +127,11 @@ final class DeployedMissions {
     private Figures inContainers(JadePlatform platform, MissionLoader program, String source, Where where)
             throws Exception {
         List<String> names = program.program().agents().stream().map(agent -> agent.name()).toList();
+        int mission = missionNumbers.incrementAndGet();
+        List<String> containerNames = List.of("c2-" + mission, "c3-" + mission);
         Map<String, String> spread = new LinkedHashMap<>();
         for (int i = 0; i < names.size(); i++) {
-            spread.put(names.get(i), CONTAINERS.get(i % CONTAINERS.size()));
+            spread.put(names.get(i), containerNames.get(i % containerNames.size()));
         }
         MissionSecret secret = MissionSecret.generate();
         Path secretFile = work.resolve("secret-" + System.nanoTime());
@@ -150,7 +158,7 @@ final class DeployedMissions {
         List<Process> containers = new ArrayList<>();
         JvmCpu.PerStep perStep;
         try (SecretFile shared = secret.writeTo(secretFile); JvmCpu cpu = new JvmCpu(trips)) {
-            for (String container : CONTAINERS) {
+            for (String container : containerNames) {
                 containers.add(container(platform, container, secretFile));
                 cpu.container(containers.get(containers.size() - 1));
             }
@@ -164,7 +172,7 @@ final class DeployedMissions {
                 }
             }
         }
-        double perContainerStep = (double) trips.count() * CONTAINERS.size();
+        double perContainerStep = (double) trips.count() * containerNames.size();
         return new Figures(trips.stepsPerSecond(), trips.laterStepsPerSecond(), sum(traffic.sent()) / perContainerStep,
                 sum(traffic.received()) / perContainerStep, perStep);
     }
