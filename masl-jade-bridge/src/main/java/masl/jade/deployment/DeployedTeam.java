@@ -202,8 +202,8 @@ public final class DeployedTeam implements AutoCloseable {
     }
 
     private void step(RemoteContext agent, ObjectNode resume) {
-        ObjectNode yield = resume.objectNode().put("kind", "yield").put("agent", agent.id());
         agent.turn().programGoesOn();
+        Throwable failed = null;
         try {
             agent.completeDone(resume.get("done"));
             agent.quiet().told(resume);
@@ -215,10 +215,9 @@ public final class DeployedTeam implements AutoCloseable {
         } catch (MissionLost gone) {
             return;
         } catch (RuntimeException | Error failure) {
-            yield.put("failed", RemotePrimitiveException.classNameOf(failure))
-                    .put("message", String.valueOf(failure.getMessage()));
+            failed = failure;
         }
-        ObjectNode returnedFrom = yield.has("failed") ? null : agent.returning().taken();
+        ObjectNode returnedFrom = failed != null ? null : agent.returning().taken();
         if (returnedFrom != null) {
             // The program returned from a call that waits for the mission's answer: no thread waits with it.
             if (CalleeTurn.restsDuring(returnedFrom.get("op").textValue())) {
@@ -228,6 +227,11 @@ public final class DeployedTeam implements AutoCloseable {
             return;
         }
         agent.turn().programRests();
+        // The step's end, made only now: most steps return from a call instead, which is their message.
+        ObjectNode yield = resume.objectNode().put("kind", "yield").put("agent", agent.id());
+        if (failed != null) {
+            yield.put("failed", RemotePrimitiveException.classNameOf(failed)).put("message", String.valueOf(failed.getMessage()));
+        }
         send(yield.put("pc", agent.program().pc()), agent.quiet().busyChangeOfNext());
     }
 
