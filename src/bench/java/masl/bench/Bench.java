@@ -388,13 +388,18 @@ public final class Bench {
     private static Rates printDeployed(String row, int agents, List<DeployedMissions.Figures> runs) {
         double rate = median(runs.stream().mapToDouble(DeployedMissions.Figures::stepsPerSecond).toArray());
         double later = median(runs.stream().mapToDouble(DeployedMissions.Figures::laterStepsPerSecond).toArray());
-        System.out.printf(Locale.ROOT, "%-44s | %8d | %12s | %12s | %12.1f | %12.1f | %22.2f | %12.2f%n", row, agents,
+        System.out.printf(Locale.ROOT, "%-44s | %8d | %12s | %12s | %12.1f | %12.1f | %22s | %12s%n", row, agents,
                 rate(rate), rate(later),
                 median(runs.stream().mapToDouble(DeployedMissions.Figures::toContainerPerStep).toArray()),
                 median(runs.stream().mapToDouble(DeployedMissions.Figures::fromContainerPerStep).toArray()),
-                median(runs.stream().mapToDouble(figures -> figures.cpu().mission()).toArray()),
-                median(runs.stream().mapToDouble(figures -> figures.cpu().containers()).toArray()));
+                millis(median(runs.stream().mapToDouble(figures -> figures.cpu().mission()).toArray())),
+                millis(median(runs.stream().mapToDouble(figures -> figures.cpu().containers()).toArray())));
         return new Rates(rate, later);
+    }
+
+    /** A CPU time in milliseconds, or a dash where none was read. */
+    private static String millis(double figure) {
+        return Double.isNaN(figure) ? "-" : String.format(Locale.ROOT, "%.2f", figure);
     }
 
     private static double record(Map<String, List<StartUp.Timing>> timings, String row, StartUp.Timing timing) {

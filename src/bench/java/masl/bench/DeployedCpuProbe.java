@@ -17,7 +17,7 @@ import masl.translator.MissionLoader;
  * coordination's own code on both sides (stand-ins, outboxes, batches, remote contexts), without
  * the three JVMs' scheduling, JADE's transport and their JITs competing for the machine's cores,
  * which make {@code gradle bench}'s deployed rows vary by a third from run to run. The process's CPU
- * time and the clock are read at each barrier trip of the later half of each mission. Not a test and
+ * time and the clock are read at the middle barrier trip of each mission and at its last. Not a test and
  * not part of {@code gradle bench}: {@code gradle deployedCpuProbe -PprobeArgs="agents steps missions"}
  * (defaults 1,000, 3,000, 4); the first mission warms the JIT up and is not printed.
  */

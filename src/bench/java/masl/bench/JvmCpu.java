@@ -20,6 +20,9 @@ final class JvmCpu implements AutoCloseable {
 
     /** CPU per step over the later half, in milliseconds; NaN if too few readings fell in it. */
     record PerStep(double mission, double containers) {
+
+        /** No figure: a mission too short for two readings in its later half (in-process, a few milliseconds). */
+        static final PerStep NOT_READ = new PerStep(Double.NaN, Double.NaN);
     }
 
     private static final long PERIOD_MILLIS = 100;
@@ -66,7 +69,7 @@ final class JvmCpu implements AutoCloseable {
         Reading first = readings.stream().filter(reading -> reading.steps() >= half).findFirst().orElse(null);
         Reading last = readings.isEmpty() ? null : readings.get(readings.size() - 1);
         if (first == null || last.steps() <= first.steps()) {
-            return new PerStep(Double.NaN, Double.NaN);
+            return PerStep.NOT_READ;
         }
         double steps = last.steps() - first.steps();
         return new PerStep((last.mission() - first.mission()) / 1e6 / steps,

@@ -100,14 +100,12 @@ public final class Distribution {
 
         Deployed(Map<String, String> containerOfAgent, DeployedSource source, Coordination coordination,
                 List<String> names) {
-            this(containerOfAgent, source, coordination, names,
-                    names.stream().map(name -> containerOfAgent.getOrDefault(name, "")).toList());
+            this(containerOfAgent, source, coordination, names, names.stream().map(containerOfAgent::get).toList());
         }
 
         /** The container of agent {@code proxyId}'s program, or null for an agent not deployed or no agent. */
         String containerOf(int proxyId) {
-            String container = proxyId >= 0 && proxyId < containerById.size() ? containerById.get(proxyId) : "";
-            return container.isEmpty() ? null : container;
+            return proxyId >= 0 && proxyId < containerById.size() ? containerById.get(proxyId) : null;
         }
 
         List<String> agentsIn(String container) {
