@@ -78,13 +78,17 @@ public final class Batch {
             if (!field.getKey().equals(same.getKey())) {
                 return false;
             }
-            if (COLUMNS.contains(field.getKey())) {
+            if (isColumn(field.getKey())) {
                 columns = true;
             } else if (!field.getValue().equals(same.getValue())) {
                 return false;
             }
         }
         return columns;
+    }
+
+    private static boolean isColumn(String field) {
+        return "agent".equals(field) || "seq".equals(field);
     }
 
     /**

@@ -47,6 +47,8 @@ public final class Coordination {
     private final NamedCalls named = new NamedCalls(this);
     private final MissionLabels labels = new MissionLabels(this);
     private final Map<Integer, StandIn> standIns = new ConcurrentHashMap<>();
+    /** The stand-ins by proxy id once the mission's agents are all made ({@link #agents}): read per message. */
+    private volatile StandIn[] standInsById;
     private final Map<Long, Run> runs = new ConcurrentHashMap<>();
     private final AtomicLong runNumbers = new AtomicLong();
 
@@ -128,6 +130,9 @@ public final class Coordination {
      */
     public void agents(Mission mission, List<AgentImplementation> implementations) {
         this.agents = List.copyOf(implementations);
+        StandIn[] byId = new StandIn[agents.size()];
+        standIns.forEach((id, standIn) -> byId[id] = standIn);
+        this.standInsById = byId;
         this.mission = mission;
         standIns.forEach((id, standIn) ->
                 DeployedPrograms.onBoundaryWork(mission.agentOf(agents.get(id)), standIn::boundaryWork));
@@ -146,8 +151,9 @@ public final class Coordination {
         Mission running = mission;
         // Every agent asking waits for the mission from now on: counted before any is answered.
         Runnable unpack = () -> Outbox.unpack(messages, inner -> {
-            if (waitsForTheMission(inner)) {
-                outbox(inner.path("agent").intValue()).busy(1);
+            StandIn waiting = waitsForTheMission(inner);
+            if (waiting != null) {
+                outbox(waiting).busy(1);
             }
         }, this::take);
         // A wave's requests wake their stand-ins: the mission's threads are woken once for all.
@@ -179,12 +185,22 @@ public final class Coordination {
         return named;
     }
 
-    private boolean waitsForTheMission(JsonNode message) {
+    /** The stand-in of the agent {@code message} names if the message has it wait for the mission, else null. */
+    private StandIn waitsForTheMission(JsonNode message) {
         String kind = message.path("kind").asText();
         // A step that ran code for the mission waits for the answer to its request again.
         boolean waits = "call".equals(kind) || "yield".equals(kind)
                 || "ran".equals(kind) && message.path("inStep").booleanValue();
-        return waits && standIns.containsKey(message.path("agent").intValue());
+        return waits ? standIn(message.path("agent").intValue()) : null;
+    }
+
+    /** The stand-in of agent {@code proxyId}, or null if it runs no program deployed. */
+    private StandIn standIn(int proxyId) {
+        StandIn[] byId = standInsById;
+        if (byId == null) {
+            return standIns.get(proxyId);
+        }
+        return proxyId >= 0 && proxyId < byId.length ? byId[proxyId] : null;
     }
 
     private void take(ObjectNode message) {
@@ -194,7 +210,7 @@ public final class Coordination {
         }
         switch (message.path("kind").asText()) {
             case "call", "yield" -> {
-                StandIn standIn = standIns.get(message.path("agent").intValue());
+                StandIn standIn = standIn(message.path("agent").intValue());
                 if (standIn != null) {
                     standIn.requested(message);
                 }
@@ -263,22 +279,32 @@ public final class Coordination {
         return agents;
     }
 
-    /** Sends {@code message} to the container of agent {@code proxyId}, whose agent it lets go on. */
-    void send(int proxyId, ObjectNode message) {
-        outbox(proxyId).add(message.put("agent", proxyId), -1);
+    /** Sends {@code message} to the container of {@code standIn}'s agent, which it lets go on. */
+    void send(StandIn standIn, ObjectNode message) {
+        outbox(standIn).add(message.put("agent", standIn.id()), -1);
     }
 
     /**
-     * Sends {@code message} to the container of agent {@code proxyId}, whose step runs there: with
+     * Sends {@code message} to the container of {@code standIn}'s agent, whose step runs there: with
      * the others the outbox holds, at once if none of its agents waits for the mission.
      */
-    void push(int proxyId, ObjectNode message) {
-        outbox(proxyId).add(message.put("agent", proxyId), 0);
+    void push(StandIn standIn, ObjectNode message) {
+        outbox(standIn).add(message.put("agent", standIn.id()), 0);
     }
 
-    /** Agent {@code proxyId}'s container no longer waits for the mission for it: it ended. */
-    void ended(int proxyId) {
-        outbox(proxyId).busy(-1);
+    /** The container of {@code standIn}'s agent no longer waits for the mission for it: it ended. */
+    void ended(StandIn standIn) {
+        outbox(standIn).busy(-1);
+    }
+
+    /** The outbox of {@code standIn}'s container, kept by the stand-in once named: it never changes. */
+    private Outbox outbox(StandIn standIn) {
+        Outbox outbox = standIn.outbox();
+        if (outbox == null) {
+            outbox = outbox(standIn.id());
+            standIn.outbox(outbox);
+        }
+        return outbox;
     }
 
     /**

@@ -6,10 +6,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ForkJoinPool;
@@ -35,7 +33,8 @@ public final class DeployedTeam implements AutoCloseable {
     /** No agent runs here to begin with: each waits for its first step. */
     private final Outbox outbox;
     private final List<AgentImplementation> agents;
-    private final Map<Integer, RemoteContext> hosted = new ConcurrentHashMap<>();
+    /** The context of each agent that runs here, by proxy id (null for the others): fixed once made. */
+    private final RemoteContext[] hosted;
     private final Callbacks callbacks = new Callbacks();
     private final TeamMembers members = new TeamMembers();
     private final TeamJournal journal = new TeamJournal();
@@ -71,17 +70,23 @@ public final class DeployedTeam implements AutoCloseable {
             return implementation;
         });
         List<MissionProgram.AgentSpec> specs = program.agents();
+        this.hosted = new RemoteContext[specs.size()];
         for (int id = 0; id < specs.size(); id++) {
             if (names.contains(specs.get(id).name())) {
-                hosted.put(id, new RemoteContext(id, made.programs().get(id),
-                        new OwnPermeability(made.types().get(id)), this));
+                hosted[id] = new RemoteContext(id, made.programs().get(id), new OwnPermeability(made.types().get(id)), this);
             }
         }
     }
 
     /** The proxy ids of the agents this container runs. */
     public Collection<Integer> hosted() {
-        return List.copyOf(hosted.keySet());
+        List<Integer> ids = new ArrayList<>();
+        for (int id = 0; id < hosted.length; id++) {
+            if (hosted[id] != null) {
+                ids.add(id);
+            }
+        }
+        return ids;
     }
 
     List<AgentImplementation> agents() {
@@ -98,7 +103,7 @@ public final class DeployedTeam implements AutoCloseable {
 
     /** The context of agent {@code proxyId} if it runs here, else null. */
     RemoteContext context(int proxyId) {
-        return hosted.get(proxyId);
+        return proxyId >= 0 && proxyId < hosted.length ? hosted[proxyId] : null;
     }
 
     /**
@@ -132,11 +137,11 @@ public final class DeployedTeam implements AutoCloseable {
     private boolean letsGoOn(JsonNode message) {
         String kind = message.path("kind").asText();
         boolean goesOn = "resume".equals(kind) || "answer".equals(kind) || inStep(message);
-        return goesOn && hosted.containsKey(message.path("agent").intValue());
+        return goesOn && context(message.path("agent").intValue()) != null;
     }
 
     private void take(ObjectNode message, List<Runnable> wave) {
-        RemoteContext agent = hosted.get(message.path("agent").intValue());
+        RemoteContext agent = context(message.path("agent").intValue());
         switch (message.path("kind").textValue()) {
             case "resume" -> wave.add(() -> step(agent, message));
             case "answer" -> {

@@ -74,6 +74,8 @@ final class StandIn extends AgentProgram {
      */
     private boolean endOwed;
     private boolean finished;
+    /** Its container's outbox, once the mission named it ({@link Coordination}): the same from then on. */
+    private volatile Outbox outbox;
 
     StandIn(int id, AgentProgram twin, Coordination coordination) {
         this.id = id;
@@ -83,6 +85,14 @@ final class StandIn extends AgentProgram {
 
     int id() {
         return id;
+    }
+
+    Outbox outbox() {
+        return outbox;
+    }
+
+    void outbox(Outbox outbox) {
+        this.outbox = outbox;
     }
 
     void requested(ObjectNode request) {
@@ -166,12 +176,12 @@ final class StandIn extends AgentProgram {
      */
     private void endOfStep(AgentContext ctx, ObjectNode end) {
         if (end.has("failed")) {
-            coordination.ended(id);
+            coordination.ended(this);
             throw new RemotePrimitiveException(end.get("failed").textValue(), end.path("message").textValue());
         }
         if (finished) {
             ctx.finish();
-            coordination.ended(id);
+            coordination.ended(this);
         }
     }
 
@@ -193,7 +203,7 @@ final class StandIn extends AgentProgram {
                 message.putObject("atRest").put("latest", rest.latestStep()).put("barrier", rest.barrierDue());
             }
             passing = rest != null;
-            coordination.send(id, withDone(message));
+            coordination.send(this, withDone(message));
         }
     }
 
@@ -206,7 +216,7 @@ final class StandIn extends AgentProgram {
         synchronized (toStep) {
             if (passing) {
                 passing = false;
-                coordination.push(id, JsonNodeFactory.instance.objectNode().put("kind", "attend").put("seq", ++sent));
+                coordination.push(this, JsonNodeFactory.instance.objectNode().put("kind", "attend").put("seq", ++sent));
             }
         }
     }
@@ -253,6 +263,9 @@ final class StandIn extends AgentProgram {
      * {@code "done"}, absent if none is (most messages of a wave).
      */
     private ObjectNode withDone(ObjectNode message) {
+        if (calls.isEmpty()) {
+            return message;
+        }
         ArrayNode done = null;
         for (Iterator<Map.Entry<Long, CompletableFuture<Object>>> it = calls.entrySet().iterator(); it.hasNext(); ) {
             Map.Entry<Long, CompletableFuture<Object>> call = it.next();
