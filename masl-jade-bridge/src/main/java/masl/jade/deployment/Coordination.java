@@ -149,18 +149,42 @@ public final class Coordination {
     /** The messages of a container's batch ({@link Batch#each}), in its order, as {@link #receive(ObjectNode)} takes them. */
     public void receive(List<ObjectNode> messages) {
         Mission running = mission;
-        // Every agent asking waits for the mission from now on: counted before any is answered.
-        Runnable unpack = () -> Outbox.unpack(messages, inner -> {
-            StandIn waiting = waitsForTheMission(inner);
-            if (waiting != null) {
-                outbox(waiting).busy(1);
-            }
-        }, this::take);
+        Runnable unpack = () -> {
+            countWaiting(messages);
+            messages.forEach(this::take);
+        };
         // A wave's requests wake their stand-ins: the mission's threads are woken once for all.
         if (running == null) {
             unpack.run();
         } else {
             running.scheduler().together(unpack);
+        }
+    }
+
+    /**
+     * Every agent asking in {@code messages} waits for the mission from now on: counted before any is
+     * answered, so that no answer goes alone; in one change per outbox, as a batch is one container's.
+     */
+    private void countWaiting(List<ObjectNode> messages) {
+        Outbox counting = null;
+        int waiting = 0;
+        for (ObjectNode message : messages) {
+            StandIn asking = waitsForTheMission(message);
+            if (asking == null) {
+                continue;
+            }
+            Outbox outbox = outbox(asking);
+            if (outbox != counting) {
+                if (counting != null) {
+                    counting.busy(waiting);
+                }
+                counting = outbox;
+                waiting = 0;
+            }
+            waiting++;
+        }
+        if (counting != null) {
+            counting.busy(waiting);
         }
     }
 

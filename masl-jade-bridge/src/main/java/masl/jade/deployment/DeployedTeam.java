@@ -112,13 +112,19 @@ public final class DeployedTeam implements AutoCloseable {
      * taken.
      */
     public void receive(ObjectNode message) {
-        List<Runnable> wave = new ArrayList<>();
+        List<ObjectNode> each = Batch.each(message);
         // Every agent let go runs from now on: counted before any runs, so that none sends alone.
-        Outbox.unpack(message, inner -> {
+        int goingOn = 0;
+        for (ObjectNode inner : each) {
             if (letsGoOn(inner)) {
-                outbox.busy(1);
+                goingOn++;
             }
-        }, inner -> take(inner, wave));
+        }
+        if (goingOn > 0) {
+            outbox.busy(goingOn);
+        }
+        List<Runnable> wave = new ArrayList<>();
+        each.forEach(inner -> take(inner, wave));
         start(wave);
     }
 

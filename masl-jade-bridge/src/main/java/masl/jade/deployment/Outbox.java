@@ -6,7 +6,6 @@ import java.util.List;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
-import java.util.function.Consumer;
 
 /**
  * One side's messages on the link between the mission and a container, combined: they go as one
@@ -111,20 +110,6 @@ final class Outbox {
             timed = true;
             TIMER.schedule(this::expire, Math.min(quietLeft, holdLeft), TimeUnit.NANOSECONDS);
         }
-    }
-
-    /**
-     * Takes a message the other side sent: each of a batch's, or the one. {@code first} sees every
-     * message before {@code take} takes any, so that what they let go on is counted before it runs.
-     */
-    static void unpack(ObjectNode message, Consumer<ObjectNode> first, Consumer<ObjectNode> take) {
-        unpack(Batch.each(message), first, take);
-    }
-
-    /** Takes the messages of a batch the other side sent ({@link Batch#each}), as {@link #unpack(ObjectNode, Consumer, Consumer)}. */
-    static void unpack(List<ObjectNode> each, Consumer<ObjectNode> first, Consumer<ObjectNode> take) {
-        each.forEach(first);
-        each.forEach(take);
     }
 
     private void flush() {
