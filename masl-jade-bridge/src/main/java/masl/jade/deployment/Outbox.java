@@ -17,7 +17,9 @@ import java.util.concurrent.TimeUnit;
  *
  * <p>An agent that stays busy (a long primitive, a request the mission holds: a synchronous call, a
  * wait for a state) must not hold back the others: what is held goes anyway once nothing was added
- * for {@link #QUIET_NANOS} or {@link #HOLD_NANOS} after the first message held. A message the other
+ * for {@link #QUIET_NANOS} (looked at every {@link #QUIET_NANOS}, so between one and two of them
+ * after the last message, which is added with no clock read), or {@link #HOLD_NANOS} after the first
+ * message held. A message the other
  * side waits for while this side is busy (a call to run, its result) goes at once ({@link #now}).
  */
 final class Outbox {
@@ -44,7 +46,9 @@ final class Outbox {
     private int busy;
     private List<ObjectNode> held;
     private long firstHeld;
-    private long lastHeld;
+    /** Messages added since this outbox was made, and as many when its timer last looked: read without a clock per message. */
+    private long added;
+    private long addedAtLastLook;
     private boolean timed;
 
     private static ScheduledExecutorService timer() {
@@ -66,16 +70,16 @@ final class Outbox {
 
     /** Adds {@code message}, and {@code busyChange} to the agents busy on this side (-1: it unblocks one there). */
     synchronized void add(ObjectNode message, int busyChange) {
-        long now = System.nanoTime();
         if (held == null) {
             held = new ArrayList<>();
-            firstHeld = now;
+            firstHeld = System.nanoTime();
         }
         held.add(message);
-        lastHeld = now;
+        added++;
         busy(busyChange);
         if (held != null && !timed) {
             timed = true;
+            addedAtLastLook = added;
             TIMER.schedule(this::expire, QUIET_NANOS, TimeUnit.NANOSECONDS);
         }
     }
@@ -101,14 +105,15 @@ final class Outbox {
         if (held == null) {
             return;
         }
-        long now = System.nanoTime();
-        long quietLeft = QUIET_NANOS - (now - lastHeld);
-        long holdLeft = HOLD_NANOS - (now - firstHeld);
-        if (quietLeft <= 0 || holdLeft <= 0) {
+        // Quiet: nothing was added since the last look, QUIET_NANOS ago (or up to twice that since the last message).
+        boolean quiet = added == addedAtLastLook;
+        long holdLeft = HOLD_NANOS - (System.nanoTime() - firstHeld);
+        if (quiet || holdLeft <= 0) {
             flush();
         } else {
             timed = true;
-            TIMER.schedule(this::expire, Math.min(quietLeft, holdLeft), TimeUnit.NANOSECONDS);
+            addedAtLastLook = added;
+            TIMER.schedule(this::expire, Math.min(QUIET_NANOS, holdLeft), TimeUnit.NANOSECONDS);
         }
     }
 
