@@ -46,6 +46,10 @@ final class RunCommand {
         if (line.threads && line.seed != null) {
             throw new UsageException("--threads and --seed choose two different schedulers: give one of them");
         }
+        if (line.outputFolder != null) {
+            throw new UsageException("--out is where --sim writes a simulation's outputs: give it with --sim SCENARIO"
+                    + " (masl run FILE writes its journal to standard output and its trace to --trace FILE)");
+        }
         if (!line.platform.equals("jade") && (line.mainHost != null || line.mainPort != null)) {
             throw new UsageException("--main-host and --main-port join a JADE platform: give them with --platform jade");
         }

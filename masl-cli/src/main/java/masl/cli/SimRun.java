@@ -62,6 +62,15 @@ final class SimRun {
         if (line.threads) {
             throw new UsageException("--threads and --sim: the scenario chooses how agents and physics share time");
         }
+        if (line.platform.equals("jade") || line.mainHost != null || line.mainPort != null || line.port != null
+                || line.place != null || line.deploy != null || line.secretFile != null) {
+            throw new UsageException("--platform jade, --main-host, --main-port, --port, --place, --deploy and"
+                    + " --secret-file are for a JADE platform: --sim runs the mission and its simulated robots in this JVM");
+        }
+        if (line.traceFile != null) {
+            throw new UsageException("--trace and --sim: the simulation writes its trace to its output folder"
+                    + " (trace.jsonl in --out DIR, by default NAME.out beside the scenario)");
+        }
         Path scenarioFile = existingFile(line.scenarioFile);
         Scenario scenario;
         try {

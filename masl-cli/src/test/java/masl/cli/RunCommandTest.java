@@ -122,6 +122,16 @@ class RunCommandTest {
     }
 
     @Test
+    void anOutputFolderWithoutTheSimulatorIsBadUsageNotIgnored() throws IOException {
+        String program = write("ok.masl", HEADER + "scalar entry main (true) { .logln(1); }\n");
+        Run run = Run.of("run", program, "--out", folder.resolve("out").toString());
+        assertEquals(64, run.status());
+        assertTrue(run.err().contains("--out is where --sim writes a simulation's outputs"), run.err());
+        assertEquals("", run.out(), "the mission did not run");
+        assertFalse(Files.exists(folder.resolve("out")));
+    }
+
+    @Test
     void theTraceIsWrittenAsJsonLines() throws IOException {
         Path trace = folder.resolve("trace.jsonl");
         String program = write("traced.masl", HEADER + "synchronous entry main (true) { .nop(); }\n");

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import masl.cli.CheckCommandTest.Run;
 import org.junit.jupiter.api.Test;
@@ -207,5 +208,25 @@ class SimRunTest {
         assertEquals(64, Run.of("run", "--sim", scenario.toString(), "drive.masl").status());
         assertEquals(64, Run.of("run", "--sim", folder.resolve("none.xml").toString()).status());
         assertEquals(64, Run.of("run", "--sim", scenario.toString(), "--threads").status());
+    }
+
+    @Test
+    void optionsOfAJadePlatformOrOfAProgramsTraceAreBadUsageWithTheSimulatorNotIgnored() throws IOException {
+        Path scenario = scenario(DRIVE);
+        for (List<String> jade : List.of(List.of("--platform", "jade"), List.of("--deploy", "*=c2"),
+                List.of("--place", "a=c2"), List.of("--main-host", "127.0.0.1", "--main-port", "1099"),
+                List.of("--port", "1099"), List.of("--secret-file", "secret"))) {
+            List<String> args = new ArrayList<>(List.of("run", "--sim", scenario.toString()));
+            args.addAll(jade);
+            Run run = Run.of(args.toArray(String[]::new));
+            assertEquals(64, run.status(), String.join(" ", jade));
+            assertTrue(run.err().contains("are for a JADE platform: --sim runs the mission and its simulated robots"
+                    + " in this JVM"), run.err());
+        }
+        Run traced = Run.of("run", "--sim", scenario.toString(), "--trace", folder.resolve("t.jsonl").toString());
+        assertEquals(64, traced.status());
+        assertTrue(traced.err().contains("trace.jsonl in --out DIR"), traced.err());
+        assertFalse(Files.exists(folder.resolve("t.jsonl")));
+        assertFalse(Files.exists(folder.resolve("drive.out")), "nothing ran");
     }
 }
