@@ -52,8 +52,8 @@ final class CommandLine {
     Long timeoutSeconds;
     Long callTimeoutMillis;
     String traceFile;
-    /** The size, in bytes, at which the trace is cut ({@code --trace-limit}). */
-    long traceLimit = JsonLinesTrace.DEFAULT_LIMIT;
+    /** The size, in bytes, at which the trace is cut ({@code --trace-limit}); null if not given. */
+    Long traceLimitGiven;
     String platform = "inproc";
     String mainHost;
     Integer mainPort;
@@ -66,6 +66,11 @@ final class CommandLine {
 
     private CommandLine(String command) {
         this.command = command;
+    }
+
+    /** The size, in bytes, at which the trace is cut: {@code --trace-limit}'s, or the default. */
+    long traceLimit() {
+        return traceLimitGiven != null ? traceLimitGiven : JsonLinesTrace.DEFAULT_LIMIT;
     }
 
     /** The options {@code command} accepts. */
@@ -135,7 +140,7 @@ final class CommandLine {
             case "--sim" -> scenarioFile = value;
             case "-o" -> outputFile = value;
             case "--trace" -> traceFile = value;
-            case "--trace-limit" -> traceLimit = size(option, value, JsonLinesTrace.MIN_LIMIT);
+            case "--trace-limit" -> traceLimitGiven = size(option, value, JsonLinesTrace.MIN_LIMIT);
             case "--seed" -> seed = number(option, value, Long.MIN_VALUE, Long.MAX_VALUE);
             case "--timeout" -> timeoutSeconds = number(option, value, 1, MAX_TIMEOUT_SECONDS);
             case "--call-timeout" -> callTimeoutMillis = number(option, value, 1, MAX_TIMEOUT_SECONDS * 1000);

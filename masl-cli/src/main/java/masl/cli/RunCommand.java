@@ -46,6 +46,9 @@ final class RunCommand {
         if (line.threads && line.seed != null) {
             throw new UsageException("--threads and --seed choose two different schedulers: give one of them");
         }
+        if (line.traceLimitGiven != null && line.traceFile == null) {
+            throw new UsageException("--trace-limit cuts the trace of --trace FILE: give it with --trace (or with --sim)");
+        }
         if (line.outputFolder != null) {
             throw new UsageException("--out is where --sim writes a simulation's outputs: give it with --sim SCENARIO"
                     + " (masl run FILE writes its journal to standard output and its trace to --trace FILE)");
@@ -80,7 +83,7 @@ final class RunCommand {
         JournalOutput journal = new JournalOutput(out);
         if (line.platform.equals("jade")) {
             JadeRun jade = new JadeRun(line, source, agentPath, loaded, journal, err);
-            TraceOutput trace = TraceOutput.open(line.traceFile, line.traceLimit);
+            TraceOutput trace = TraceOutput.open(line.traceFile, line.traceLimit());
             MissionOutcome outcome;
             try {
                 outcome = jade.run(trace, timeout, signals);
@@ -106,7 +109,7 @@ final class RunCommand {
             builder.callTimeout(Duration.ofMillis(line.callTimeoutMillis));
         }
         builder.journal(journal);
-        TraceOutput trace = TraceOutput.open(line.traceFile, line.traceLimit);
+        TraceOutput trace = TraceOutput.open(line.traceFile, line.traceLimit());
         builder.trace(trace.trace());
         Mission mission = builder.build();
         journal.whenFailed(() -> mission.stop(JOURNAL_LOST));

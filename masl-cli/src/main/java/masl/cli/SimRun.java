@@ -106,7 +106,7 @@ final class SimRun {
             RunOptions options = RunOptions.defaults()
                     .withJournal(progress.journal(journal))
                     .withOutput(output)
-                    .withTraceLimit(line.traceLimit)
+                    .withTraceLimit(line.traceLimit())
                     .whenWarned(warnings -> new DiagnosticPrinter(Map.of()).print(warnings, err))
                     .withTimeout(line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds))
                     .whenReady(mission -> {
@@ -127,7 +127,7 @@ final class SimRun {
                 progress.end();
             }
             if (result.traceCut()) {
-                err.println("masl: " + TraceOutput.cutAt(output.resolve(ScenarioRunner.TRACE), line.traceLimit));
+                err.println("masl: " + TraceOutput.cutAt(output.resolve(ScenarioRunner.TRACE), line.traceLimit()));
             }
             return report(result, scenario, output, signals, journal);
         } catch (ScenarioException doesNotFit) {

@@ -110,6 +110,17 @@ class TraceOutputTest {
                 + " got 'lots'\n"), word.err());
     }
 
+    @Test
+    void aLimitWithoutATraceToCutIsBadUsageNotIgnored() throws IOException {
+        Path program = Files.writeString(folder.resolve("tick.masl"), TICKING);
+
+        Run run = Run.of("run", program.toString(), "--trace-limit", "64K");
+
+        assertEquals(64, run.status());
+        assertTrue(run.err().startsWith("masl: --trace-limit cuts the trace of --trace FILE"), run.err());
+        assertEquals("", run.out(), "the mission did not run");
+    }
+
     /** A program that logs "hi". */
     private Path hello() throws IOException {
         return Files.writeString(folder.resolve("hello.masl"), """
