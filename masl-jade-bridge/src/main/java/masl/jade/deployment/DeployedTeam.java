@@ -4,7 +4,6 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
-import java.util.Collection;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.BlockingQueue;
@@ -76,17 +75,6 @@ public final class DeployedTeam implements AutoCloseable {
                 hosted[id] = new RemoteContext(id, made.programs().get(id), new OwnPermeability(made.types().get(id)), this);
             }
         }
-    }
-
-    /** The proxy ids of the agents this container runs. */
-    public Collection<Integer> hosted() {
-        List<Integer> ids = new ArrayList<>();
-        for (int id = 0; id < hosted.length; id++) {
-            if (hosted[id] != null) {
-                ids.add(id);
-            }
-        }
-        return ids;
     }
 
     List<AgentImplementation> agents() {
