@@ -87,6 +87,7 @@ public final class Batch {
         return columns;
     }
 
+    /** Whether {@code field} is one of {@link #COLUMNS}: compared with each, as a field of every message of a wave is. */
     private static boolean isColumn(String field) {
         return "agent".equals(field) || "seq".equals(field);
     }
