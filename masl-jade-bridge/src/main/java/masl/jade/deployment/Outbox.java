@@ -19,8 +19,8 @@ import java.util.concurrent.TimeUnit;
  * wait for a state) must not hold back the others: what is held goes anyway once nothing was added
  * for {@link #QUIET_NANOS} (looked at every {@link #QUIET_NANOS}, so between one and two of them
  * after the last message, which is added with no clock read), or {@link #HOLD_NANOS} after the first
- * message held. A message the other
- * side waits for while this side is busy (a call to run, its result) goes at once ({@link #now}).
+ * message held. A message the other side waits for while this side is busy (a call to run, its
+ * result) goes at once ({@link #now}).
  */
 final class Outbox {
 
@@ -46,9 +46,8 @@ final class Outbox {
     private int busy;
     private List<ObjectNode> held;
     private long firstHeld;
-    /** Messages added since this outbox was made, and as many when its timer last looked: read without a clock per message. */
-    private long added;
-    private long addedAtLastLook;
+    /** Whether a message was added since the timer last looked: what tells it quiet, with no clock read per message. */
+    private boolean addedSinceLook;
     private boolean timed;
 
     private static ScheduledExecutorService timer() {
@@ -75,11 +74,11 @@ final class Outbox {
             firstHeld = System.nanoTime();
         }
         held.add(message);
-        added++;
+        addedSinceLook = true;
         busy(busyChange);
         if (held != null && !timed) {
             timed = true;
-            addedAtLastLook = added;
+            addedSinceLook = false;
             TIMER.schedule(this::expire, QUIET_NANOS, TimeUnit.NANOSECONDS);
         }
     }
@@ -106,13 +105,13 @@ final class Outbox {
             return;
         }
         // Quiet: nothing was added since the last look, QUIET_NANOS ago (or up to twice that since the last message).
-        boolean quiet = added == addedAtLastLook;
+        boolean quiet = !addedSinceLook;
         long holdLeft = HOLD_NANOS - (System.nanoTime() - firstHeld);
         if (quiet || holdLeft <= 0) {
             flush();
         } else {
             timed = true;
-            addedAtLastLook = added;
+            addedSinceLook = false;
             TIMER.schedule(this::expire, Math.min(QUIET_NANOS, holdLeft), TimeUnit.NANOSECONDS);
         }
     }

@@ -205,7 +205,7 @@ public final class Distribution {
      */
     public Wire wireTo(int proxyId) {
         Deployed deployment = deployed;
-        return wires.computeIfAbsent(deployment.containerOfAgent().get(deployment.names().get(proxyId)),
+        return wires.computeIfAbsent(deployment.containerOf(proxyId),
                 name -> message -> {
                     AID container = containers.get(name);
                     ACLMessage inform = Conversations.inform(container, Conversations.DEPLOYED, message.toString());
