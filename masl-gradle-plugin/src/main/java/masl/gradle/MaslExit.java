@@ -1,11 +1,15 @@
 package masl.gradle;
 
+import java.io.OutputStream;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import masl.translator.diagnostics.MaslErrorLines;
+import org.gradle.api.GradleException;
+import org.gradle.api.tasks.JavaExec;
 
 /**
- * The message of a failed {@code maslRun}: which mission, why, and masl's exit status with what it
- * means. Gradle 4.4's {@code JavaExec} gives no exit status but in the message of its failure ("…
+ * The message of a failed {@code maslRun} or {@code maslContainer}: which mission or container, why,
+ * and masl's exit status with what it means. Gradle 4.4's {@code JavaExec} gives no exit status but in the message of its failure ("…
  * finished with non-zero exit value 2"), which every Gradle since words the same way.
  */
 final class MaslExit {
@@ -15,8 +19,30 @@ final class MaslExit {
     private MaslExit() {
     }
 
+    /**
+     * Runs {@code exec}, {@code task}'s own action, failing with what {@link #describe} says if masl
+     * fails: masl's standard error passes on to the task's as it comes, read for why.
+     */
+    static void reporting(JavaExec task, Runnable exec, String what, String name) {
+        OutputStream errors = task.getErrorOutput();
+        MaslErrorLines report = new MaslErrorLines(errors);
+        task.setErrorOutput(report);
+        try {
+            exec.run();
+        } catch (RuntimeException failed) {
+            throw new GradleException(describe(what, name, failed, report.why()), failed);
+        } finally {
+            task.setErrorOutput(errors);
+        }
+    }
+
     static String describe(String mission, RuntimeException failure, String why) {
-        StringBuilder message = new StringBuilder("mission ").append(mission).append(" failed");
+        return describe("mission", mission, failure, why);
+    }
+
+    /** {@code what} is {@code mission} or {@code container}, {@code name} its name. */
+    static String describe(String what, String name, RuntimeException failure, String why) {
+        StringBuilder message = new StringBuilder(what).append(' ').append(name).append(" failed");
         if (!why.isEmpty()) {
             message.append(": ").append(why);
         }

@@ -17,7 +17,8 @@ import org.gradle.api.tasks.SourceSetContainer;
  * The MASL plug-in, id {@code org.masl} (alias {@code masl}): applies {@code java}, translates the
  * MASL programs of {@code src/main/masl} (task {@code maslCompile}) and {@code src/test/masl}
  * ({@code maslCompileTest}) into Java under {@code build/generated/masl} and compiles it into the
- * source set's output, runs a mission ({@code maslRun}) and runs the tests on the JUnit Platform.
+ * source set's output, runs a mission ({@code maslRun}), hosts agents of a mission run elsewhere in a
+ * JADE container ({@code maslContainer}) and runs the tests on the JUnit Platform.
  *
  * <p>A program's agent classes may be written beside it, in the same source set's Java: its
  * translation runs after that Java is compiled and checks the descriptors against the classes.
@@ -44,6 +45,7 @@ public class MaslPlugin implements Plugin<Project> {
         MaslCompile compile = translation(project, extension, main, "maslCompile");
         translation(project, extension, sourceSets.getByName(SourceSet.TEST_SOURCE_SET_NAME), "maslCompileTest");
         missionRun(project, artifacts, extension, main, compile);
+        container(project, artifacts, extension, main);
         JUnitPlatformTests.configure(project, artifacts);
     }
 
@@ -83,7 +85,8 @@ public class MaslPlugin implements Plugin<Project> {
         MaslRun run = project.getTasks().create("maslRun", MaslRun.class);
         run.setGroup("masl");
         run.setDescription("Runs a MASL mission of src/main/masl and prints its journal"
-                + " (-Pmission=NAME, -Pplatform=inproc|jade, -Pseed=N, -Ptimeout=S, -PcallTimeout=MS)");
+                + " (-Pmission=NAME, -Pplatform=inproc|jade, -Pseed=N, -Ptimeout=S, -PcallTimeout=MS;"
+                + " with jade: -Pplace=A=C,..., -Pdeploy=A=C,..., -Pport=P, -PsecretFile=F)");
         // Read when run: a build script may give maslCompile other sources (this repository's missions/ does).
         Callable<FileCollection> programs = compile::getSource;
         run.setPrograms(project.files(programs));
@@ -93,12 +96,42 @@ public class MaslPlugin implements Plugin<Project> {
         run.setSeed(stringProperty(project, "seed"));
         run.setTimeoutSeconds(stringProperty(project, "timeout"));
         run.setCallTimeoutMillis(stringProperty(project, "callTimeout"));
-        Configuration tool = MaslTool.create(project, artifacts, run);
-        // The agent path is given to masl as such, not as class path too; masl translates the program
-        // again, so the classes maslCompile generated are not on it either.
-        run.setClasspath(project.files(main.getOutput().getClassesDirs(), main.getOutput().getResourcesDir(), tool)
-                .minus(extension.getAgentPath()));
+        run.setPlace(stringProperty(project, "place"));
+        run.setDeploy(stringProperty(project, "deploy"));
+        run.setPort(stringProperty(project, "port"));
+        run.setSecretFile(stringProperty(project, "secretFile"));
+        Configuration tool = MaslTool.create(project, artifacts, "maslTool", "maslRun", run::inJade);
+        run.setClasspath(toolClassPath(project, extension, main, tool));
         run.dependsOn(main.getClassesTaskName());
+    }
+
+    private static void container(Project project, MaslArtifacts artifacts, MaslExtension extension, SourceSet main) {
+        MaslContainer container = project.getTasks().create("maslContainer", MaslContainer.class);
+        container.setGroup("masl");
+        container.setDescription("Hosts, in a JADE container, the agents a mission run elsewhere places or deploys on it"
+                + " (-Pcontainer=NAME -PmainHost=H -PmainPort=P, -PsecretFile=F, -Ptimeout=S, -Pserve)");
+        container.setAgentPath(extension.getAgentPath());
+        container.setContainer(stringProperty(project, "container"));
+        container.setMainHost(stringProperty(project, "mainHost"));
+        container.setMainPort(stringProperty(project, "mainPort"));
+        container.setSecretFile(stringProperty(project, "secretFile"));
+        container.setTimeoutSeconds(stringProperty(project, "timeout"));
+        // -Pserve alone says yes, as a flag.
+        String serve = stringProperty(project, "serve");
+        container.setServe(serve != null && !serve.equals("false"));
+        Configuration tool = MaslTool.create(project, artifacts, "maslContainerTool", "maslContainer", () -> true);
+        container.setClasspath(toolClassPath(project, extension, main, tool));
+        container.dependsOn(main.getClassesTaskName());
+    }
+
+    /**
+     * The class path of a task that runs masl: the project's classes and resources and {@code tool}.
+     * The agent path is given to masl as such, not as class path too; masl translates the program
+     * again, so the classes maslCompile generated are not on it either.
+     */
+    private static FileCollection toolClassPath(Project project, MaslExtension extension, SourceSet main, Configuration tool) {
+        return project.files(main.getOutput().getClassesDirs(), main.getOutput().getResourcesDir(), tool)
+                .minus(extension.getAgentPath());
     }
 
     private static String stringProperty(Project project, String name) {

@@ -1,13 +1,11 @@
 package masl.gradle;
 
 import java.io.File;
-import java.io.OutputStream;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
 import java.util.stream.Collectors;
 import masl.runtime.scheduling.ReplayCommand;
-import masl.translator.diagnostics.MaslErrorLines;
 import org.gradle.api.GradleException;
 import org.gradle.api.file.ConfigurableFileCollection;
 import org.gradle.api.file.FileCollection;
@@ -39,6 +37,10 @@ public class MaslRun extends JavaExec {
     private String seed;
     private String timeoutSeconds;
     private String callTimeoutMillis;
+    private String place;
+    private String deploy;
+    private String port;
+    private String secretFile;
 
     public MaslRun() {
         setMainClassName(this, MAIN_CLASS);
@@ -135,6 +137,46 @@ public class MaslRun extends JavaExec {
         this.callTimeoutMillis = callTimeoutMillis;
     }
 
+    /** {@code AGENT=CONTAINER,…}: bodies placed in other containers ({@code masl run --place}). */
+    @Internal
+    public String getPlace() {
+        return place;
+    }
+
+    public void setPlace(String place) {
+        this.place = place;
+    }
+
+    /** {@code AGENT=CONTAINER,…}: programs deployed in other containers ({@code masl run --deploy}). */
+    @Internal
+    public String getDeploy() {
+        return deploy;
+    }
+
+    public void setDeploy(String deploy) {
+        this.deploy = deploy;
+    }
+
+    /** The port of the main container the run starts, where containers join it ({@code masl run --port}). */
+    @Internal
+    public String getPort() {
+        return port;
+    }
+
+    public void setPort(String port) {
+        this.port = port;
+    }
+
+    /** Where the run writes the mission's secret, which its containers read ({@code masl run --secret-file}). */
+    @Internal
+    public String getSecretFile() {
+        return secretFile;
+    }
+
+    public void setSecretFile(String secretFile) {
+        this.secretFile = secretFile;
+    }
+
     /**
      * JavaExec's action, with the arguments of the mission chosen, this task as the replay hint, and
      * masl's failure named as such: why and with which exit status.
@@ -145,16 +187,7 @@ public class MaslRun extends JavaExec {
         File program = chosenProgram();
         setArgs(arguments(program));
         systemProperty(ReplayCommand.PROPERTY, ReplayCommand.gradle(missionName(program), sameRunProperties()).template());
-        OutputStream errors = getErrorOutput();
-        MaslErrorLines report = new MaslErrorLines(errors);
-        setErrorOutput(report);
-        try {
-            super.exec();
-        } catch (RuntimeException failed) {
-            throw new GradleException(MaslExit.describe(missionName(program), failed, report.why()), failed);
-        } finally {
-            setErrorOutput(errors);
-        }
+        MaslExit.reporting(this, super::exec, "mission", missionName(program));
     }
 
     /** The project properties besides the mission and the seed that make a run what it was. */
@@ -172,25 +205,34 @@ public class MaslRun extends JavaExec {
     private List<String> arguments(File program) {
         // Gradle shows its own progress; masl's would reach the build's output even under -q.
         List<String> arguments = new ArrayList<>(List.of("run", ProjectModel.relative(projectDir, program), "--quiet"));
-        String path = agentPath.getFiles().stream().map(File::getPath).collect(Collectors.joining(File.pathSeparator));
-        if (!path.isEmpty()) {
-            arguments.addAll(List.of("--agent-path", path));
-        }
+        arguments.addAll(agentPathArguments(agentPath));
         if (inJade()) {
             arguments.addAll(List.of("--platform", platform));
         } else if (platform != null && !platform.equals("inproc")) {
             throw new GradleException("unknown platform '" + platform + "': inproc (the default) or jade");
         }
-        if (seed != null) {
-            arguments.addAll(List.of("--seed", seed));
-        }
-        if (timeoutSeconds != null) {
-            arguments.addAll(List.of("--timeout", timeoutSeconds));
-        }
-        if (callTimeoutMillis != null) {
-            arguments.addAll(List.of("--call-timeout", callTimeoutMillis));
-        }
+        // masl refuses the options a run would ignore (--deploy without JADE): its line says why.
+        option(arguments, "--place", place);
+        option(arguments, "--deploy", deploy);
+        option(arguments, "--port", port);
+        option(arguments, "--secret-file", secretFile);
+        option(arguments, "--seed", seed);
+        option(arguments, "--timeout", timeoutSeconds);
+        option(arguments, "--call-timeout", callTimeoutMillis);
         return arguments;
+    }
+
+    /** {@code --agent-path} and the entries of {@code agentPath}, or nothing if it has none. */
+    static List<String> agentPathArguments(FileCollection agentPath) {
+        String path = agentPath.getFiles().stream().map(File::getPath).collect(Collectors.joining(File.pathSeparator));
+        return path.isEmpty() ? List.of() : List.of("--agent-path", path);
+    }
+
+    /** {@code option} and {@code value}, if there is a value. */
+    static void option(List<String> arguments, String option, String value) {
+        if (value != null) {
+            arguments.addAll(List.of(option, value));
+        }
     }
 
     private File chosenProgram() {

@@ -1,6 +1,7 @@
 package masl.gradle;
 
 import java.util.Map;
+import java.util.function.BooleanSupplier;
 import org.gradle.api.Project;
 import org.gradle.api.artifacts.Configuration;
 import org.gradle.api.artifacts.ModuleDependency;
@@ -9,23 +10,22 @@ import org.gradle.api.attributes.AttributeContainer;
 import org.gradle.api.plugins.JavaPlugin;
 
 /**
- * The configuration {@code maslTool}: what {@code maslRun} runs, the {@code masl} command
- * ({@code masl-cli}) with the project's runtime dependencies, resolved together so that no module
- * appears twice. Only a run inside JADE brings {@code masl-jade-bridge} and JADE; the simulator
- * ({@code simexecbots}, ode4j) never comes, maslRun running {@code .masl} programs only. Nothing is
- * resolved unless maslRun runs.
+ * The configurations {@code maslTool} and {@code maslContainerTool}: what {@code maslRun} and
+ * {@code maslContainer} run, the {@code masl} command ({@code masl-cli}) with the project's runtime
+ * dependencies, resolved together so that no module appears twice. Only a run inside JADE, and a
+ * container, bring {@code masl-jade-bridge} and JADE; the simulator ({@code simexecbots}, ode4j)
+ * never comes, the tasks running {@code .masl} programs only. Nothing is resolved unless its task runs.
  */
 final class MaslTool {
-
-    static final String NAME = "maslTool";
 
     private MaslTool() {
     }
 
-    static Configuration create(Project project, MaslArtifacts artifacts, MaslRun run) {
+    /** The configuration {@code name}, the masl command {@code task} runs: with JADE if {@code inJade} says so when resolved. */
+    static Configuration create(Project project, MaslArtifacts artifacts, String name, String task, BooleanSupplier inJade) {
         Configuration runtime = project.getConfigurations().getByName(JavaPlugin.RUNTIME_CLASSPATH_CONFIGURATION_NAME);
-        Configuration tool = project.getConfigurations().create(NAME);
-        tool.setDescription("The masl command maslRun runs, with the project's runtime dependencies");
+        Configuration tool = project.getConfigurations().create(name);
+        tool.setDescription("The masl command " + task + " runs, with the project's runtime dependencies");
         tool.setCanBeConsumed(false);
         runtime.getExtendsFrom().forEach(tool::extendsFrom);
         AttributeContainer attributes = runtime.getAttributes();
@@ -33,7 +33,7 @@ final class MaslTool {
         tool.withDependencies(dependencies -> {
             ModuleDependency cli = (ModuleDependency) project.getDependencies().create(artifacts.module("masl-cli"));
             cli.exclude(Map.of("group", artifacts.group(), "module", "simexecbots"));
-            if (!run.inJade()) {
+            if (!inJade.getAsBoolean()) {
                 cli.exclude(Map.of("group", artifacts.group(), "module", "masl-jade-bridge"));
             }
             dependencies.add(cli);
