@@ -23,9 +23,9 @@ final class CommandLine {
             "compile", Set.of("--agent-path", "-d", "--quiet"),
             "run", Set.of("--agent-path", "--threads", "--quiet", "--seed", "--timeout", "--call-timeout", "--trace",
                     "--trace-limit", "--platform", "--main-host", "--main-port", "--sim", "--out", "--place", "--port",
-                    "--deploy", "--secret-file", "--no-cache"),
+                    "--deploy", "--secret-file", "--no-cache", "--local-host"),
             "container", Set.of("--agent-path", "--main-host", "--main-port", "--name", "--timeout", "--secret-file",
-                    "--serve"),
+                    "--serve", "--local-host"),
             "timeline", Set.of("-o"),
             "lsp", Set.of("--agent-path"));
     /** A size: digits, then a unit K, M or G, with or without {@code iB} or {@code B}. */
@@ -57,6 +57,8 @@ final class CommandLine {
     String platform = "inproc";
     String mainHost;
     Integer mainPort;
+    /** The address this JVM's JADE container binds to and is reached at ({@link LocalHost}); null: loopback. */
+    String localHost;
     String scenarioFile;
     String place;
     String deploy;
@@ -147,6 +149,7 @@ final class CommandLine {
             case "--platform" -> platform = oneOf(option, value, "inproc", "jade");
             case "--main-host" -> mainHost = value;
             case "--main-port" -> mainPort = port(option, value);
+            case "--local-host" -> localHost = value;
             case "--port" -> port = port(option, value);
             case "--place" -> place = value;
             case "--deploy" -> deploy = value;

@@ -56,6 +56,8 @@ final class ContainerCommand {
         if (!line.operands.isEmpty()) {
             throw new UsageException("masl container takes no operand: descriptors and classes come from --agent-path");
         }
+        String localHost = LocalHost.checked(line.localHost);
+        LocalHost.reachableFrom(line.mainHost, localHost);
         DescriptorLoader descriptors = new DescriptorLoader(AgentPath.parse(line.agentPath));
         Duration timeout = line.timeoutSeconds == null ? NO_TIMEOUT : Duration.ofSeconds(line.timeoutSeconds);
         MissionSecret.Source secret = MissionSecret.Source.file(line.secretFile != null ? Path.of(line.secretFile)
@@ -190,6 +192,12 @@ final class ContainerCommand {
         return null;
     }
 
+    /** The platform to join, and this container's own address there: loopback unless {@code --local-host}. */
+    private static JadeOptions platform(CommandLine line) {
+        JadeOptions join = JadeOptions.join(line.mainHost, line.mainPort);
+        return line.localHost == null ? join : join.withLocalHost(line.localHost);
+    }
+
     /**
      * Joins, retrying for {@value #JOIN_SECONDS} s while the main container does not answer yet (it
      * may start after this command, and its port opens a moment before it accepts containers); the
@@ -202,7 +210,7 @@ final class ContainerCommand {
         String said = null;
         while (true) {
             try {
-                return MaslContainer.start(JadeOptions.join(line.mainHost, line.mainPort), line.containerName,
+                return MaslContainer.start(platform(line), line.containerName,
                         descriptors::loadByClassName, descriptors.implementationClasses(),
                         event -> out.println("masl-event " + event.getContent()), secret,
                         refusal -> err.println("masl: container " + line.containerName + ": " + refusal), translator);

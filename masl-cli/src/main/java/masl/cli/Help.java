@@ -26,7 +26,7 @@ final class Help {
         COMMANDS.put("run", new Command("""
                 masl run FILE [--agent-path PATH] [--threads | --seed N] [--timeout SECONDS] [--trace FILE] [--quiet]
                         [--trace-limit SIZE] [--call-timeout MS] [--platform inproc|jade] [--no-cache]
-                        [--main-host HOST --main-port PORT | --port PORT]
+                        [--main-host HOST --main-port PORT | --port PORT] [--local-host ADDRESS]
                         [--place AGENT=CONTAINER,... | --place FILE] [--deploy AGENT=CONTAINER,...]
                         [--secret-file FILE]
                 masl run --sim SCENARIO [--out DIR] [--seed N] [--timeout SECONDS] [--agent-path PATH] [--quiet]
@@ -37,17 +37,18 @@ final class Help {
                 with --sim, the mission the scenario names runs on its simulated robots; trajectories,
                 events, trace, journal and a picture go to --out (default: NAME.out beside NAME.scenario.xml)
                 """, List.of("--agent-path", "--threads", "--seed", "--timeout", "--call-timeout", "--trace", "--trace-limit",
-                "--no-cache", "--quiet", "--platform", "--main-host", "--port", "--place", "--deploy", "--secret-file", "--sim",
+                "--no-cache", "--quiet", "--platform", "--main-host", "--port", "--local-host", "--place", "--deploy", "--secret-file", "--sim",
                 "--out")));
         COMMANDS.put("container", new Command("""
                 masl container --main-host HOST --main-port PORT --name CONTAINER [--agent-path PATH]
-                        [--timeout SECONDS] [--secret-file FILE] [--serve]
+                        [--timeout SECONDS] [--secret-file FILE] [--serve] [--local-host ADDRESS]
                 """, "masl container --main-host HOST --main-port PORT --name CONTAINER [OPTION]...", """
                 join a JADE platform as container CONTAINER and host the bodies (the primitives) of the
                 agents a run --place puts there, their programs running in the run's JVM; and run the
                 programs of the agents a run --deploy puts there, translated here; ends with the mission,
                 or with --serve serves the next one
-                """, List.of("--main-host", "--name", "--agent-path", "--timeout", "--secret-file", "--serve")));
+                """, List.of("--main-host", "--name", "--agent-path", "--timeout", "--secret-file", "--serve",
+                "--local-host")));
         COMMANDS.put("compile", new Command("""
                 masl compile FILE -d DIR [--agent-path PATH] [--quiet]
                 """, null, """
@@ -125,6 +126,12 @@ final class Help {
                 """);
         OPTIONS.put("--port", """
                 --port PORT         with --platform jade: the port of the main container run starts (default: a free one)
+                """);
+        OPTIONS.put("--local-host", """
+                --local-host ADDRESS
+                                    with --platform jade (and for container): the address of this machine the
+                                    JVM's container listens on and is reached at by the others (default:
+                                    127.0.0.1, only this machine); needed to join a main container on another one
                 """);
         OPTIONS.put("--place", """
                 --place AGENT=CONTAINER,... or FILE (lines AGENT=CONTAINER)

@@ -75,8 +75,13 @@ final class JadeRun {
         }
         this.loaded = loaded;
         this.descriptors = new DescriptorLoader(agentPath.withFirst(source.folder()));
-        this.options = line.mainHost != null ? JadeOptions.join(line.mainHost, line.mainPort)
+        String localHost = LocalHost.checked(line.localHost);
+        if (line.mainHost != null) {
+            LocalHost.reachableFrom(line.mainHost, localHost);
+        }
+        JadeOptions platform = line.mainHost != null ? JadeOptions.join(line.mainHost, line.mainPort)
                 : line.port != null ? JadeOptions.mainContainer().withPort(line.port) : JadeOptions.mainContainer();
+        this.options = localHost != null ? platform.withLocalHost(localHost) : platform;
         this.placement = line.place == null ? Map.of() : placement(line.place, loaded);
         this.deployment = line.deploy == null ? Map.of() : deployment(line.deploy, loaded, placement.keySet(), descriptors);
         this.deployedSource = deployment.isEmpty() ? null : deployedSource(source);

@@ -57,9 +57,9 @@ final class RunCommand {
             throw new UsageException("--main-host and --main-port join a JADE platform: give them with --platform jade");
         }
         if (!line.platform.equals("jade") && (line.place != null || line.deploy != null || line.port != null
-                || line.secretFile != null)) {
-            throw new UsageException("--place, --deploy, --port and --secret-file are for a JADE platform: give them with"
-                    + " --platform jade");
+                || line.localHost != null || line.secretFile != null)) {
+            throw new UsageException("--place, --deploy, --port, --local-host and --secret-file are for a JADE platform:"
+                    + " give them with --platform jade");
         }
         try (StopOnSignal signals = new StopOnSignal(err)) {
             return translateAndRun(line, source, signals);

@@ -63,9 +63,9 @@ final class SimRun {
             throw new UsageException("--threads and --sim: the scenario chooses how agents and physics share time");
         }
         if (line.platform.equals("jade") || line.mainHost != null || line.mainPort != null || line.port != null
-                || line.place != null || line.deploy != null || line.secretFile != null) {
-            throw new UsageException("--platform jade, --main-host, --main-port, --port, --place, --deploy and"
-                    + " --secret-file are for a JADE platform: --sim runs the mission and its simulated robots in this JVM");
+                || line.localHost != null || line.place != null || line.deploy != null || line.secretFile != null) {
+            throw new UsageException("--platform jade, --main-host, --main-port, --port, --local-host, --place, --deploy"
+                    + " and --secret-file are for a JADE platform: --sim runs the mission and its simulated robots in this JVM");
         }
         if (line.traceFile != null) {
             throw new UsageException("--trace and --sim: the simulation writes its trace to its output folder"

@@ -129,6 +129,37 @@ class JadeRunTest {
         assertEquals("my notes\n", Files.readString(Path.of(notes)));
     }
 
+    /** 203.0.113.1 is of TEST-NET-3, never a machine's own address. */
+    @Test
+    void aLocalHostIsAnAddressOfThisMachineAndJoiningAnotherMachineNeedsOne() throws IOException {
+        String program = write("one.masl", HEADER + "scalar entry main (true) { .nop(); }\n");
+        Run elsewhere = Run.of("run", program, "--platform", "jade", "--local-host", "203.0.113.1");
+        assertEquals(64, elsewhere.status());
+        assertTrue(elsewhere.err().startsWith("masl: --local-host 203.0.113.1 is not an address of this machine: give the"
+                + " one the other machines reach it at\n"), elsewhere.err());
+        Run everywhere = Run.of("container", "--main-host", "127.0.0.1", "--main-port", "1099", "--name", "c2",
+                "--local-host", "0.0.0.0");
+        assertEquals(64, everywhere.status());
+        assertTrue(everywhere.err().startsWith("masl: --local-host 0.0.0.0 is every address of this machine"), everywhere.err());
+        Run unbound = Run.of("run", program, "--platform", "jade", "--local-host", "127.0.0.2");
+        assertEquals(64, unbound.status());
+        assertTrue(unbound.err().startsWith("masl: --local-host 127.0.0.2 is no interface's address, which JADE binds to"),
+                unbound.err());
+        Run withoutJade = Run.of("run", program, "--local-host", "127.0.0.1");
+        assertEquals(64, withoutJade.status());
+        assertTrue(withoutJade.err().startsWith("masl: --place, --deploy, --port, --local-host and --secret-file are for a"
+                + " JADE platform: give them with --platform jade\n"), withoutJade.err());
+
+        String onLoopback = "masl: the main container at 203.0.113.1 is on another machine, which cannot reach this JVM's"
+                + " container on loopback: give --local-host ADDRESS, this machine's address on their network\n";
+        Run container = Run.of("container", "--main-host", "203.0.113.1", "--main-port", "1099", "--name", "c2");
+        assertEquals(64, container.status());
+        assertTrue(container.err().startsWith(onLoopback), container.err());
+        Run joining = Run.of("run", program, "--platform", "jade", "--main-host", "203.0.113.1", "--main-port", "1099");
+        assertEquals(64, joining.status());
+        assertTrue(joining.err().startsWith(onLoopback), joining.err());
+    }
+
     @Test
     void aContainerNeedsItsPlatformAndName() {
         Run noName = Run.of("container", "--main-host", "127.0.0.1", "--main-port", "1099");

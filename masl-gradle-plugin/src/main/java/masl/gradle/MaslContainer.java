@@ -23,6 +23,7 @@ public class MaslContainer extends JavaExec {
     private String container;
     private String mainHost;
     private String mainPort;
+    private String localHost;
     private String secretFile;
     private String timeoutSeconds;
     private boolean serve;
@@ -69,6 +70,16 @@ public class MaslContainer extends JavaExec {
 
     public void setMainPort(String mainPort) {
         this.mainPort = mainPort;
+    }
+
+    /** This machine's address the container listens on, which the main container reaches it at (loopback unless given). */
+    @Internal
+    public String getLocalHost() {
+        return localHost;
+    }
+
+    public void setLocalHost(String localHost) {
+        this.localHost = localHost;
     }
 
     /** The mission's secret, as the run wrote it: the container obeys only messages signed with it. */
@@ -118,6 +129,7 @@ public class MaslContainer extends JavaExec {
         // Without the platform's address masl refuses, saying what it needs.
         MaslRun.option(arguments, "--main-host", mainHost);
         MaslRun.option(arguments, "--main-port", mainPort);
+        MaslRun.option(arguments, "--local-host", localHost);
         arguments.addAll(MaslRun.agentPathArguments(agentPath));
         MaslRun.option(arguments, "--secret-file", secretFile);
         MaslRun.option(arguments, "--timeout", timeoutSeconds);

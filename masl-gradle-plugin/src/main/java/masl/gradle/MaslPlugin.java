@@ -86,7 +86,7 @@ public class MaslPlugin implements Plugin<Project> {
         run.setGroup("masl");
         run.setDescription("Runs a MASL mission of src/main/masl and prints its journal"
                 + " (-Pmission=NAME, -Pplatform=inproc|jade, -Pseed=N, -Ptimeout=S, -PcallTimeout=MS;"
-                + " with jade: -Pplace=A=C,..., -Pdeploy=A=C,..., -Pport=P, -PsecretFile=F)");
+                + " with jade: -Pplace=A=C,..., -Pdeploy=A=C,..., -Pport=P, -PlocalHost=ADDRESS, -PsecretFile=F)");
         // Read when run: a build script may give maslCompile other sources (this repository's missions/ does).
         Callable<FileCollection> programs = compile::getSource;
         run.setPrograms(project.files(programs));
@@ -99,6 +99,7 @@ public class MaslPlugin implements Plugin<Project> {
         run.setPlace(stringProperty(project, "place"));
         run.setDeploy(stringProperty(project, "deploy"));
         run.setPort(stringProperty(project, "port"));
+        run.setLocalHost(stringProperty(project, "localHost"));
         run.setSecretFile(stringProperty(project, "secretFile"));
         Configuration tool = MaslTool.create(project, artifacts, "maslTool", "maslRun", run::inJade);
         run.setClasspath(toolClassPath(project, extension, main, tool));
@@ -109,11 +110,12 @@ public class MaslPlugin implements Plugin<Project> {
         MaslContainer container = project.getTasks().create("maslContainer", MaslContainer.class);
         container.setGroup("masl");
         container.setDescription("Hosts, in a JADE container, the agents a mission run elsewhere places or deploys on it"
-                + " (-Pcontainer=NAME -PmainHost=H -PmainPort=P, -PsecretFile=F, -Ptimeout=S, -Pserve)");
+                + " (-Pcontainer=NAME -PmainHost=H -PmainPort=P, -PlocalHost=ADDRESS, -PsecretFile=F, -Ptimeout=S, -Pserve)");
         container.setAgentPath(extension.getAgentPath());
         container.setContainer(stringProperty(project, "container"));
         container.setMainHost(stringProperty(project, "mainHost"));
         container.setMainPort(stringProperty(project, "mainPort"));
+        container.setLocalHost(stringProperty(project, "localHost"));
         container.setSecretFile(stringProperty(project, "secretFile"));
         container.setTimeoutSeconds(stringProperty(project, "timeout"));
         // -Pserve alone says yes, as a flag.

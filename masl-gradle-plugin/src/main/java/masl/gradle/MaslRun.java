@@ -40,6 +40,7 @@ public class MaslRun extends JavaExec {
     private String place;
     private String deploy;
     private String port;
+    private String localHost;
     private String secretFile;
 
     public MaslRun() {
@@ -167,6 +168,16 @@ public class MaslRun extends JavaExec {
         this.port = port;
     }
 
+    /** This machine's address the platform listens on, for containers on other machines ({@code masl run --local-host}). */
+    @Internal
+    public String getLocalHost() {
+        return localHost;
+    }
+
+    public void setLocalHost(String localHost) {
+        this.localHost = localHost;
+    }
+
     /** Where the run writes the mission's secret, which its containers read ({@code masl run --secret-file}). */
     @Internal
     public String getSecretFile() {
@@ -215,6 +226,7 @@ public class MaslRun extends JavaExec {
         option(arguments, "--place", place);
         option(arguments, "--deploy", deploy);
         option(arguments, "--port", port);
+        option(arguments, "--local-host", localHost);
         option(arguments, "--secret-file", secretFile);
         option(arguments, "--seed", seed);
         option(arguments, "--timeout", timeoutSeconds);

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -67,6 +68,22 @@ class DeployedMissionTest {
         assertTrue(result.getOutput().contains("(masl exit status 64: masl was called wrongly)"), result.getOutput());
     }
 
+    /** 203.0.113.1 is of TEST-NET-3, never a machine's own address: masl refuses it, and says so. */
+    @Test
+    void bothTasksListenOnTheAddressAskedWhichMaslChecks() throws IOException {
+        copySampleTo(build);
+        write(build.resolve("settings.gradle"), UserBuild.SETTINGS + "rootProject.name = 'counter-team'\n");
+        String refused = " failed: --local-host 203.0.113.1 is not an address of this machine: give the one the other"
+                + " machines reach it at (masl exit status 64: masl was called wrongly)";
+
+        BuildResult run = gradle(build, "maslRun", "-Pplatform=jade", "-PlocalHost=203.0.113.1").buildAndFail();
+        assertTrue(run.getOutput().contains("mission count" + refused), run.getOutput());
+
+        BuildResult container = gradle(build, "maslContainer", "-Pcontainer=c2", "-PmainHost=127.0.0.1", "-PmainPort=1099",
+                "-PlocalHost=203.0.113.1").buildAndFail();
+        assertTrue(container.getOutput().contains("container c2" + refused), container.getOutput());
+    }
+
     @Test
     void aContainerWithoutAPlatformToJoinFailsSayingWhatItNeeds() throws IOException {
         copySampleTo(build);
@@ -93,7 +110,7 @@ class DeployedMissionTest {
     }
 
     private static int freePort() throws IOException {
-        try (ServerSocket socket = new ServerSocket(0)) {
+        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
             return socket.getLocalPort();
         }
     }
