@@ -1,10 +1,5 @@
 package masl.maven;
 
-import java.io.File;
-import java.io.IOException;
-import java.io.InputStream;
-import java.io.OutputStream;
-import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -20,11 +15,13 @@ import org.eclipse.aether.repository.RemoteRepository;
 
 /**
  * {@code masl:run -Dmission=NAME}: runs a mission of {@code src/main/masl} with {@code masl run} in a
- * JVM of its own, started in the project's folder, after the project is compiled (the goal forks the
- * lifecycle up to {@code compile}): the journal, and only it, on standard output, as it is written;
- * masl's diagnostics and reports on standard error. A program error or a mission that does not
- * complete fails the build with masl's exit status, what it means and, for a failed mission, the
- * command that runs it again.
+ * JVM of its own ({@link MaslJvm}), started in the project's folder, after the project is compiled
+ * (the goal forks the lifecycle up to {@code compile}): the journal, and only it, on standard output,
+ * as it is written; masl's diagnostics and reports on standard error. In JADE, the mission's agents
+ * may be spread over containers that {@code masl:container} (or {@code masl container}) started
+ * ({@code -Dplace}, {@code -Ddeploy}, {@code -Dport}, {@code -DsecretFile}, passed on to masl, which
+ * says what it refuses). A program error or a mission that does not complete fails the build with
+ * masl's exit status, what it means and, for a failed mission, the command that runs it again.
  */
 public class RunMojo extends ProgramsMojo {
 
@@ -33,6 +30,10 @@ public class RunMojo extends ProgramsMojo {
     private String seed;
     private String timeout;
     private String callTimeout;
+    private String place;
+    private String deploy;
+    private String port;
+    private String secretFile;
     private RepositorySystem repositorySystem;
     private RepositorySystemSession repositorySession;
     private List<RemoteRepository> remoteRepositories;
@@ -44,18 +45,12 @@ public class RunMojo extends ProgramsMojo {
         if (!inJade && platform != null && !platform.equals("inproc")) {
             throw new MojoFailureException("unknown platform '" + platform + "': inproc (the default) or jade");
         }
-        List<Path> classPath = new MaslTool(repositorySystem, repositorySession, remoteRepositories)
-                .classPath(project(), plugin(), inJade, agentPath());
+        MaslJvm masl = new MaslJvm(this, new MaslTool(repositorySystem, repositorySession, remoteRepositories), inJade);
         String name = Programs.missionName(program);
         ReplayCommand replay = ReplayCommand.maven(name, sameRunProperties());
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", classPath.stream().map(Path::toString).collect(Collectors.joining(File.pathSeparator)),
-                // A seeded run that fails names this goal as the way to run it again.
-                "-D" + ReplayCommand.PROPERTY + "=" + replay.template(),
-                MaslTool.MAIN_CLASS));
-        command.addAll(arguments(program, inJade));
         MaslErrorLines report = new MaslErrorLines(System.err);
-        int status = run(command, report);
+        // A seeded run that fails names this goal as the way to run it again.
+        int status = masl.run(List.of(ReplayCommand.PROPERTY + "=" + replay.template()), arguments(masl, program, inJade), report);
         if (status != 0) {
             throw new MojoFailureException(failure(name, status, report.why(), inJade ? null : replay));
         }
@@ -73,60 +68,22 @@ public class RunMojo extends ProgramsMojo {
         return properties;
     }
 
-    private List<String> arguments(Path program, boolean inJade) {
+    private List<String> arguments(MaslJvm masl, Path program, boolean inJade) {
         // Maven shows its own progress; masl's would be mixed into the journal's output otherwise.
         List<String> arguments = new ArrayList<>(List.of("run", relative(program), "--quiet"));
-        String path = agentPath().stream().map(Path::toString).collect(Collectors.joining(File.pathSeparator));
-        if (!path.isEmpty()) {
-            arguments.addAll(List.of("--agent-path", path));
-        }
+        arguments.addAll(masl.agentPathOption());
         if (inJade) {
             arguments.addAll(List.of("--platform", platform));
         }
-        addOption(arguments, "--seed", seed);
-        addOption(arguments, "--timeout", timeout);
-        addOption(arguments, "--call-timeout", callTimeout);
+        MaslJvm.addOption(arguments, "--seed", seed);
+        MaslJvm.addOption(arguments, "--timeout", timeout);
+        MaslJvm.addOption(arguments, "--call-timeout", callTimeout);
+        // Those of a mission spread over containers; masl refuses them outside JADE, and says so.
+        MaslJvm.addOption(arguments, "--place", place);
+        MaslJvm.addOption(arguments, "--deploy", deploy);
+        MaslJvm.addOption(arguments, "--port", port);
+        MaslJvm.addOption(arguments, "--secret-file", secretFile);
         return arguments;
-    }
-
-    private static void addOption(List<String> arguments, String option, String value) {
-        if (value != null) {
-            arguments.addAll(List.of(option, value));
-        }
-    }
-
-    /**
-     * Runs masl with the journal on this JVM's standard output, as it is written, and its standard
-     * error passed on to this JVM's through {@code report}, which reads why a run failed.
-     */
-    private int run(List<String> command, MaslErrorLines report) throws MojoExecutionException {
-        Process masl;
-        try {
-            masl = new ProcessBuilder(command).directory(project().getBasedir())
-                    .redirectInput(ProcessBuilder.Redirect.INHERIT).redirectOutput(ProcessBuilder.Redirect.INHERIT).start();
-        } catch (IOException cannotStart) {
-            throw new MojoExecutionException("cannot start " + command.get(0), cannotStart);
-        }
-        Thread errors = new Thread(() -> passOn(masl.getErrorStream(), report), "masl run's standard error");
-        errors.start();
-        try {
-            int status = masl.waitFor();
-            errors.join();
-            return status;
-        } catch (InterruptedException interrupted) {
-            masl.destroy();
-            Thread.currentThread().interrupt();
-            throw new MojoExecutionException("interrupted while the mission ran", interrupted);
-        }
-    }
-
-    private static void passOn(InputStream from, OutputStream to) {
-        try (from) {
-            from.transferTo(to);
-            to.flush();
-        } catch (IOException cannotPass) {
-            throw new UncheckedIOException("cannot pass on masl's standard error", cannotPass);
-        }
     }
 
     /**
@@ -138,8 +95,7 @@ public class RunMojo extends ProgramsMojo {
         if (!why.isEmpty()) {
             message.append(": ").append(why);
         }
-        message.append(" (masl exit status ").append(status).append(": ").append(ExitStatus.meaning(status))
-                .append("); masl's report is above");
+        message.append(" (").append(MaslJvm.status(status)).append("); masl's report is above");
         if (status != ExitStatus.MISSION_FAILED || replay == null) {
             return message.toString();
         }

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -34,6 +35,13 @@ record Maven(String name, Path mvn) {
     }
 
     Result run(Path project, String... goals) throws IOException, InterruptedException {
+        try (Running maven = start(project, goals)) {
+            return maven.await(Duration.ofMinutes(10));
+        }
+    }
+
+    /** Starts a build in the background; closing it stops it, and what it started, if it still runs. */
+    Running start(Path project, String... goals) throws IOException {
         if (!Files.isExecutable(mvn)) {
             throw new IllegalStateException(name + " is not installed at " + mvn + " (tools/ensure-maven.sh installs Debian's)");
         }
@@ -45,12 +53,36 @@ record Maven(String name, Path mvn) {
                 .redirectOutput(log.toFile());
         builder.environment().put("JAVA_HOME", System.getProperty("java.home"));
         builder.environment().remove("MAVEN_OPTS");
-        Process maven = builder.start();
-        if (!maven.waitFor(10, TimeUnit.MINUTES)) {
-            maven.destroyForcibly();
-            throw new AssertionError(name + " did not finish " + command + " in 10 minutes:\n" + Files.readString(log));
+        return new Running(name + " " + command, builder.start(), log);
+    }
+
+    /** A build under way, its output (standard error with standard output) in a log file. */
+    record Running(String command, Process process, Path log) implements AutoCloseable {
+
+        /** Waits for the build's end, failing if it does not end within {@code limit}. */
+        Result await(Duration limit) throws IOException, InterruptedException {
+            if (!process.waitFor(limit.toMillis(), TimeUnit.MILLISECONDS)) {
+                close();
+                throw new AssertionError(command + " did not finish in " + limit.toSeconds() + " s:\n" + output());
+            }
+            return new Result(process.exitValue(), output());
         }
-        return new Result(maven.exitValue(), Files.readString(log, StandardCharsets.UTF_8));
+
+        String output() throws IOException {
+            return Files.readString(log, StandardCharsets.UTF_8);
+        }
+
+        /** Stops the JVMs the build started (masl's), then the build, if they still run. */
+        @Override
+        public void close() throws InterruptedException {
+            List<ProcessHandle> started = process.descendants().toList();
+            started.forEach(ProcessHandle::destroyForcibly);
+            process.destroyForcibly();
+            process.waitFor(30, TimeUnit.SECONDS);
+            for (ProcessHandle child : started) {
+                child.onExit().completeOnTimeout(child, 30, TimeUnit.SECONDS).join();
+            }
+        }
     }
 
     @Override

@@ -36,13 +36,13 @@ class PluginDescriptorTest {
     }
 
     @Test
-    void declaresTheFourGoalsInTheirPhases() {
+    void declaresTheFiveGoalsInTheirPhases() {
         Map<String, String> phases = new TreeMap<>();
         for (Element mojo : children(child(plugin, "mojos"), "mojo")) {
             phases.put(text(mojo, "goal"), text(mojo, "phase") + "/" + text(mojo, "executePhase"));
         }
         assertEquals(Map.of("compile", "generate-sources/null", "testCompile", "generate-test-sources/null", "check", "null/null",
-                "run", "null/compile"), phases);
+                "run", "null/compile", "container", "null/compile"), phases);
     }
 
     @Test

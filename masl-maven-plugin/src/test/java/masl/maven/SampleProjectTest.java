@@ -5,9 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.time.Duration;
 import java.util.List;
 import java.util.jar.JarFile;
 import java.util.stream.Stream;
@@ -25,7 +27,10 @@ import org.junit.jupiter.params.provider.MethodSource;
  * journal (Maven 3.9, which then runs it in JADE too) or of a mission that fails, failing with its
  * status and the command that replays it (Debian's); an error in a mission and in a descriptor failing
  * {@code masl:check} at their positions; one in a mission of the tests failing the build before any
- * test runs. Few builds per Maven: each costs seconds of JVM start and of Maven's own plug-ins.
+ * test runs; a robot's copy of the sample serving a container ({@code masl:container}) to which the
+ * base station's copy deploys the mission's agents ({@code masl:run -Ddeploy}), and a deployment
+ * outside JADE failing with masl's refusal. Few builds per Maven: each costs seconds of JVM start and
+ * of Maven's own plug-ins.
  */
 @Tag("slow")
 class SampleProjectTest {
@@ -93,6 +98,46 @@ class SampleProjectTest {
         assertTrue(output.lines().anyMatch(line -> line.matches("\\[ERROR\\] src/test/masl/click\\.masl:7:2[45]: error: .*clack.*")), output);
         assertFalse(output.contains("T E S T S"), "no test runs:\n" + output);
         assertTrue(Files.isDirectory(project.resolve("target/classes/masl/generated/count")), "the main code compiled first");
+    }
+
+    @Test
+    void aRobotsBuildServesAContainerTheBaseStationsRunDeploysTheMissionsAgentsTo(@TempDir Path folder) throws Exception {
+        // Two copies, two builds: the robot's hosts the agents, the base station's runs the mission.
+        Path robot = sample(folder.resolve("robot"));
+        Path station = sample(folder.resolve("station"));
+        int port = freePort();
+        String secret = "-DsecretFile=" + folder.resolve("mission-secret");
+
+        try (Maven.Running container = Maven.current().start(robot, "-q", "masl:container", "-Dname=c2", "-DmainHost=127.0.0.1",
+                "-DmainPort=" + port, "-Dtimeout=300", secret)) {
+            Maven.Result run = Maven.current().run(station, "-q", "masl:run", "-Dmission=count", "-Dplatform=jade", "-Dport=" + port,
+                    "-Ddeploy=*=c2", "-Dtimeout=120", secret);
+            Maven.Result hosted = container.await(Duration.ofMinutes(2));
+
+            assertEquals(0, run.status(), run.output() + "\nthe container's build:\n" + hosted.output());
+            assertTrue(run.output().lines().anyMatch("total=9"::equals), "the journal of masl:run:\n" + run.output());
+            assertEquals(0, hosted.status(), hosted.output());
+            assertTrue(hosted.output().lines().anyMatch("masl-ended hosted a,b,c"::equals), "the container's output:\n" + hosted.output());
+        }
+    }
+
+    @Test
+    void aDeploymentOutsideJadeFailsTheBuildWithMaslsRefusal(@TempDir Path folder) throws Exception {
+        Path project = sample(folder);
+
+        Maven.Result run = Maven.debian().run(project, "masl:run", "-Dmission=count", "-Ddeploy=*=c2");
+
+        assertEquals(1, run.status(), run.output());
+        String refusal = "--place, --deploy, --port and --secret-file are for a JADE platform: give them with --platform jade";
+        assertTrue(run.output().lines().anyMatch(("masl: " + refusal)::equals), "masl's line, passed on:\n" + run.output());
+        assertTrue(run.output().contains("mission count failed: " + refusal
+                + " (masl exit status 64: masl was given a bad option); masl's report is above"), run.output());
+    }
+
+    private static int freePort() throws IOException {
+        try (ServerSocket socket = new ServerSocket(0)) {
+            return socket.getLocalPort();
+        }
     }
 
     /** The missions translated and compiled with the project's agent class, and the JUnit test of count green. */
