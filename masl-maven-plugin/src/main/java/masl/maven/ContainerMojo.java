@@ -10,7 +10,7 @@ import org.eclipse.aether.RepositorySystemSession;
 import org.eclipse.aether.repository.RemoteRepository;
 
 /**
- * {@code masl:container -Dname=C -DmainHost=H -DmainPort=P}: joins the JADE platform of a
+ * {@code masl:container -Dcontainer=C -DmainHost=H -DmainPort=P}: joins the JADE platform of a
  * {@code masl run} elsewhere as container C with {@code masl container} in a JVM of its own
  * ({@link MaslJvm}), after the project is compiled (the goal forks the lifecycle up to
  * {@code compile}), so that the agents a run places or deploys there ({@code masl:run -Dplace=…} or
@@ -21,9 +21,10 @@ import org.eclipse.aether.repository.RemoteRepository;
  */
 public class ContainerMojo extends MaslMojo {
 
-    private String name;
+    private String container;
     private String mainHost;
     private String mainPort;
+    private String localHost;
     private boolean serve;
     private String secretFile;
     private String timeout;
@@ -38,7 +39,8 @@ public class ContainerMojo extends MaslMojo {
         // masl says which of these it needs, and refuses a container without them.
         MaslJvm.addOption(arguments, "--main-host", mainHost);
         MaslJvm.addOption(arguments, "--main-port", mainPort);
-        MaslJvm.addOption(arguments, "--name", name);
+        MaslJvm.addOption(arguments, "--local-host", localHost);
+        MaslJvm.addOption(arguments, "--name", container);
         arguments.addAll(masl.agentPathOption());
         MaslJvm.addOption(arguments, "--timeout", timeout);
         MaslJvm.addOption(arguments, "--secret-file", secretFile);
@@ -49,7 +51,7 @@ public class ContainerMojo extends MaslMojo {
         int status = masl.run(List.of(), arguments, report);
         if (status != 0) {
             String why = report.why();
-            throw new MojoFailureException("container " + (name == null ? "" : name + " ") + "failed"
+            throw new MojoFailureException("container " + (container == null ? "" : container + " ") + "failed"
                     + (why.isEmpty() ? "" : ": " + why) + " (" + MaslJvm.status(status) + "); masl's report is above");
         }
     }

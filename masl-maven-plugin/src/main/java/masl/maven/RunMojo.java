@@ -33,6 +33,7 @@ public class RunMojo extends ProgramsMojo {
     private String place;
     private String deploy;
     private String port;
+    private String localHost;
     private String secretFile;
     private RepositorySystem repositorySystem;
     private RepositorySystemSession repositorySession;
@@ -82,6 +83,7 @@ public class RunMojo extends ProgramsMojo {
         MaslJvm.addOption(arguments, "--place", place);
         MaslJvm.addOption(arguments, "--deploy", deploy);
         MaslJvm.addOption(arguments, "--port", port);
+        MaslJvm.addOption(arguments, "--local-host", localHost);
         MaslJvm.addOption(arguments, "--secret-file", secretFile);
         return arguments;
     }

@@ -108,7 +108,7 @@ class SampleProjectTest {
         int port = freePort();
         String secret = "-DsecretFile=" + folder.resolve("mission-secret");
 
-        try (Maven.Running container = Maven.current().start(robot, "-q", "masl:container", "-Dname=c2", "-DmainHost=127.0.0.1",
+        try (Maven.Running container = Maven.current().start(robot, "-q", "masl:container", "-Dcontainer=c2", "-DmainHost=127.0.0.1",
                 "-DmainPort=" + port, "-Dtimeout=300", secret)) {
             Maven.Result run = Maven.current().run(station, "-q", "masl:run", "-Dmission=count", "-Dplatform=jade", "-Dport=" + port,
                     "-Ddeploy=*=c2", "-Dtimeout=120", secret);
@@ -128,7 +128,8 @@ class SampleProjectTest {
         Maven.Result run = Maven.debian().run(project, "masl:run", "-Dmission=count", "-Ddeploy=*=c2");
 
         assertEquals(1, run.status(), run.output());
-        String refusal = "--place, --deploy, --port and --secret-file are for a JADE platform: give them with --platform jade";
+        String refusal = "--place, --deploy, --port, --local-host and --secret-file are for a JADE platform: give them with"
+                + " --platform jade";
         assertTrue(run.output().lines().anyMatch(("masl: " + refusal)::equals), "masl's line, passed on:\n" + run.output());
         assertTrue(run.output().contains("mission count failed: " + refusal
                 + " (masl exit status 64: masl was given a bad option); masl's report is above"), run.output());
