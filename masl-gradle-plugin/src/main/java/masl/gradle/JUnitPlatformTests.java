@@ -55,7 +55,7 @@ final class JUnitPlatformTests {
         console.setGroup("verification");
         console.setDescription("Runs the JUnit 5 tests on the JUnit Platform (what `test` does from Gradle 4.6)");
         console.setClasspath(tests.getRuntimeClasspath());
-        MaslRun.setMainClassName(console, "org.junit.platform.console.ConsoleLauncher");
+        MaslCommandTask.setMainClassName(console, "org.junit.platform.console.ConsoleLauncher");
         File reports = ProjectModel.buildDir(project, "test-results/junit-platform");
         String roots = tests.getOutput().getClassesDirs().getFiles().stream().map(File::getPath)
                 .collect(Collectors.joining(File.pathSeparator));

@@ -3,10 +3,7 @@ package masl.gradle;
 import java.util.ArrayList;
 import java.util.List;
 import org.gradle.api.GradleException;
-import org.gradle.api.file.ConfigurableFileCollection;
-import org.gradle.api.file.FileCollection;
 import org.gradle.api.tasks.Internal;
-import org.gradle.api.tasks.JavaExec;
 import org.gradle.api.tasks.TaskAction;
 
 /**
@@ -17,31 +14,12 @@ import org.gradle.api.tasks.TaskAction;
  * comes from the run, which the container translates itself. A container that cannot join, or
  * whose mission fails, fails the task with masl's reason and exit status. Never up to date.
  */
-public class MaslContainer extends JavaExec {
+public class MaslContainer extends MaslCommandTask {
 
-    private final ConfigurableFileCollection agentPath = getProject().files();
     private String container;
     private String mainHost;
     private String mainPort;
-    private String localHost;
-    private String secretFile;
-    private String timeoutSeconds;
     private boolean serve;
-
-    public MaslContainer() {
-        MaslRun.setMainClassName(this, MaslRun.MAIN_CLASS);
-        // The default secret file of a run started in the same folder is found there.
-        setWorkingDir(getProject().getProjectDir());
-    }
-
-    @Internal
-    public FileCollection getAgentPath() {
-        return agentPath;
-    }
-
-    public void setAgentPath(Object entries) {
-        agentPath.setFrom(entries);
-    }
 
     /** The container's name, as a run's {@code --place} and {@code --deploy} name it. */
     @Internal
@@ -72,36 +50,6 @@ public class MaslContainer extends JavaExec {
         this.mainPort = mainPort;
     }
 
-    /** This machine's address the container listens on, which the main container reaches it at (loopback unless given). */
-    @Internal
-    public String getLocalHost() {
-        return localHost;
-    }
-
-    public void setLocalHost(String localHost) {
-        this.localHost = localHost;
-    }
-
-    /** The mission's secret, as the run wrote it: the container obeys only messages signed with it. */
-    @Internal
-    public String getSecretFile() {
-        return secretFile;
-    }
-
-    public void setSecretFile(String secretFile) {
-        this.secretFile = secretFile;
-    }
-
-    /** How long to wait for the mission's end (with {@link #isServe}: each mission's). */
-    @Internal
-    public String getTimeoutSeconds() {
-        return timeoutSeconds;
-    }
-
-    public void setTimeoutSeconds(String timeoutSeconds) {
-        this.timeoutSeconds = timeoutSeconds;
-    }
-
     /** Whether the container serves the next mission at the same address once one ended, until stopped. */
     @Internal
     public boolean isServe() {
@@ -127,12 +75,12 @@ public class MaslContainer extends JavaExec {
     private List<String> arguments() {
         List<String> arguments = new ArrayList<>(List.of("container", "--name", container));
         // Without the platform's address masl refuses, saying what it needs.
-        MaslRun.option(arguments, "--main-host", mainHost);
-        MaslRun.option(arguments, "--main-port", mainPort);
-        MaslRun.option(arguments, "--local-host", localHost);
-        arguments.addAll(MaslRun.agentPathArguments(agentPath));
-        MaslRun.option(arguments, "--secret-file", secretFile);
-        MaslRun.option(arguments, "--timeout", timeoutSeconds);
+        option(arguments, "--main-host", mainHost);
+        option(arguments, "--main-port", mainPort);
+        option(arguments, "--local-host", getLocalHost());
+        arguments.addAll(agentPathArguments());
+        option(arguments, "--secret-file", getSecretFile());
+        option(arguments, "--timeout", getTimeoutSeconds());
         if (serve) {
             arguments.add("--serve");
         }

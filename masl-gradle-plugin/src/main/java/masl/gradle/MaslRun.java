@@ -9,11 +9,8 @@ import masl.runtime.scheduling.ReplayCommand;
 import org.gradle.api.GradleException;
 import org.gradle.api.file.ConfigurableFileCollection;
 import org.gradle.api.file.FileCollection;
-import org.gradle.api.provider.Property;
 import org.gradle.api.tasks.Internal;
-import org.gradle.api.tasks.JavaExec;
 import org.gradle.api.tasks.TaskAction;
-import org.gradle.util.GradleVersion;
 
 /**
  * Runs one mission of {@code src/main/masl} with the {@code masl} command ({@code masl run}) in a JVM
@@ -25,49 +22,17 @@ import org.gradle.util.GradleVersion;
  * first line about it) and with which exit status; a seeded run's replay hint names this task
  * ({@link ReplayCommand#gradle}). Never up to date: running is the point.
  */
-public class MaslRun extends JavaExec {
-
-    static final String MAIN_CLASS = "masl.cli.Main";
+public class MaslRun extends MaslCommandTask {
 
     private final ConfigurableFileCollection programs = getProject().files();
-    private final ConfigurableFileCollection agentPath = getProject().files();
     private final File projectDir = getProject().getProjectDir();
     private String mission;
     private String platform;
     private String seed;
-    private String timeoutSeconds;
     private String callTimeoutMillis;
     private String place;
     private String deploy;
     private String port;
-    private String localHost;
-    private String secretFile;
-
-    public MaslRun() {
-        setMainClassName(this, MAIN_CLASS);
-        // Program names in diagnostics are relative to it, as maslCompile's are.
-        setWorkingDir(projectDir);
-    }
-
-    /**
-     * JavaExec's main class is {@code main} up to Gradle 6.3 (removed in 8) and the property
-     * {@code mainClass} from 6.4 (absent from 4.4): each is called reflectively, so that the plug-in
-     * compiles against the API of both.
-     */
-    @SuppressWarnings("unchecked")
-    static void setMainClassName(JavaExec task, String name) {
-        boolean before64 = GradleVersion.current().compareTo(GradleVersion.version("6.4")) < 0;
-        try {
-            if (before64) {
-                JavaExec.class.getMethod("setMain", String.class).invoke(task, name);
-            } else {
-                ((Property<String>) JavaExec.class.getMethod("getMainClass").invoke(task)).set(name);
-            }
-        } catch (ReflectiveOperationException absent) {
-            throw new IllegalStateException("JavaExec." + (before64 ? "setMain" : "getMainClass") + "() is missing from Gradle "
-                    + GradleVersion.current().getVersion(), absent);
-        }
-    }
 
     @Internal
     public FileCollection getPrograms() {
@@ -76,15 +41,6 @@ public class MaslRun extends JavaExec {
 
     public void setPrograms(Object files) {
         programs.setFrom(files);
-    }
-
-    @Internal
-    public FileCollection getAgentPath() {
-        return agentPath;
-    }
-
-    public void setAgentPath(Object entries) {
-        agentPath.setFrom(entries);
     }
 
     /** The program's file name without {@code .masl}; may be omitted when there is one program. */
@@ -118,15 +74,6 @@ public class MaslRun extends JavaExec {
 
     public void setSeed(String seed) {
         this.seed = seed;
-    }
-
-    @Internal
-    public String getTimeoutSeconds() {
-        return timeoutSeconds;
-    }
-
-    public void setTimeoutSeconds(String timeoutSeconds) {
-        this.timeoutSeconds = timeoutSeconds;
     }
 
     @Internal
@@ -168,26 +115,6 @@ public class MaslRun extends JavaExec {
         this.port = port;
     }
 
-    /** This machine's address the platform listens on, for containers on other machines ({@code masl run --local-host}). */
-    @Internal
-    public String getLocalHost() {
-        return localHost;
-    }
-
-    public void setLocalHost(String localHost) {
-        this.localHost = localHost;
-    }
-
-    /** Where the run writes the mission's secret, which its containers read ({@code masl run --secret-file}). */
-    @Internal
-    public String getSecretFile() {
-        return secretFile;
-    }
-
-    public void setSecretFile(String secretFile) {
-        this.secretFile = secretFile;
-    }
-
     /**
      * JavaExec's action, with the arguments of the mission chosen, this task as the replay hint, and
      * masl's failure named as such: why and with which exit status.
@@ -204,8 +131,8 @@ public class MaslRun extends JavaExec {
     /** The project properties besides the mission and the seed that make a run what it was. */
     private List<String> sameRunProperties() {
         List<String> properties = new ArrayList<>();
-        if (timeoutSeconds != null) {
-            properties.add("timeout=" + timeoutSeconds);
+        if (getTimeoutSeconds() != null) {
+            properties.add("timeout=" + getTimeoutSeconds());
         }
         if (callTimeoutMillis != null) {
             properties.add("callTimeout=" + callTimeoutMillis);
@@ -216,7 +143,7 @@ public class MaslRun extends JavaExec {
     private List<String> arguments(File program) {
         // Gradle shows its own progress; masl's would reach the build's output even under -q.
         List<String> arguments = new ArrayList<>(List.of("run", ProjectModel.relative(projectDir, program), "--quiet"));
-        arguments.addAll(agentPathArguments(agentPath));
+        arguments.addAll(agentPathArguments());
         if (inJade()) {
             arguments.addAll(List.of("--platform", platform));
         } else if (platform != null && !platform.equals("inproc")) {
@@ -226,25 +153,12 @@ public class MaslRun extends JavaExec {
         option(arguments, "--place", place);
         option(arguments, "--deploy", deploy);
         option(arguments, "--port", port);
-        option(arguments, "--local-host", localHost);
-        option(arguments, "--secret-file", secretFile);
+        option(arguments, "--local-host", getLocalHost());
+        option(arguments, "--secret-file", getSecretFile());
         option(arguments, "--seed", seed);
-        option(arguments, "--timeout", timeoutSeconds);
+        option(arguments, "--timeout", getTimeoutSeconds());
         option(arguments, "--call-timeout", callTimeoutMillis);
         return arguments;
-    }
-
-    /** {@code --agent-path} and the entries of {@code agentPath}, or nothing if it has none. */
-    static List<String> agentPathArguments(FileCollection agentPath) {
-        String path = agentPath.getFiles().stream().map(File::getPath).collect(Collectors.joining(File.pathSeparator));
-        return path.isEmpty() ? List.of() : List.of("--agent-path", path);
-    }
-
-    /** {@code option} and {@code value}, if there is a value. */
-    static void option(List<String> arguments, String option, String value) {
-        if (value != null) {
-            arguments.addAll(List.of(option, value));
-        }
     }
 
     private File chosenProgram() {
