@@ -331,14 +331,20 @@ public final class Bench {
         try {
             System.out.printf(Locale.ROOT, "%-44s | %8s | %12s | %12s | %12s | %12s | %22s | %12s%n", "", "N", "steps / s",
                     "later half", "msgs to c", "msgs from c", "CPU ms/step: mission", "containers");
-            for (int agents : new int[] {100, 1_000}) {
-                // Long enough for the later half to run after the containers' JIT has compiled a step's code;
-                // N = 1,000: three times as long, since its JIT goes on compiling for about 20 s.
-                int steps = (int) Math.max(10, options.seconds() * (agents == 100 ? 2_000 : 3_000));
-                printDeployed("lock-step, deployed", agents, interleavedFigures(runs, List.of(
-                        missions.prepare(platform, DeployedMissions.lockStep(agents, steps), DeployedMissions.Where.DEPLOYED)))
-                        .get(0));
-            }
+            // Long enough for the later half to run after the JIT has compiled the new program's code;
+            // N = 1,000: longer, since its JIT goes on compiling for longer.
+            int stepsOf100 = (int) Math.max(10, options.seconds() * 2_000);
+            int stepsOf1000 = (int) Math.max(10, options.seconds() * 3_000);
+            Callable<DeployedMissions.Figures> of100 = missions.prepare(platform,
+                    DeployedMissions.lockStep(100, stepsOf100), DeployedMissions.Where.DEPLOYED);
+            Callable<DeployedMissions.Figures> of1000 = missions.prepare(platform,
+                    DeployedMissions.lockStep(1_000, stepsOf1000), DeployedMissions.Where.DEPLOYED);
+            // The serving containers' first mission is their JIT's: not one of a row's.
+            of1000.call();
+            List<List<DeployedMissions.Figures>> lockStep = interleavedFigures(runs, List.of(of100, of1000));
+            Rates rateOf100 = printDeployed("lock-step, deployed", 100, lockStep.get(0));
+            Rates rateOf1000 = printDeployed("lock-step, deployed", 1_000, lockStep.get(1));
+            printStepCost(rateOf100.later(), rateOf1000.later());
             int agents = 10;
             int steps = (int) Math.max(10, options.seconds() * 200);
             String source = DeployedMissions.tenOwnPrimitives(agents, steps);
@@ -356,8 +362,8 @@ public final class Bench {
             closeQuietly(platform);
             missions.close();
         }
-        System.out.println("   (later half: the rate over the later half of the steps, once the containers' fresh JVMs have"
-                + " compiled a step's code;");
+        System.out.println("   (later half: the rate over the later half of the steps; the containers serve one mission after"
+                + " another (--serve), from a warm-up one on;");
         System.out.println("    CPU ms/step: every thread of this JVM, and of the two containers' together, over the later"
                 + " half; their sum over " + Runtime.getRuntime().availableProcessors() + " cores is the shortest step"
                 + " the machine allows them;");
@@ -379,6 +385,20 @@ public final class Bench {
             }
         }
         return figures;
+    }
+
+    /**
+     * What a deployed lock-step step costs whatever its size, and per agent, from the later halves of
+     * N = 100 and 1,000: a step's time is taken as the one plus N times the other. The goal of 1,000
+     * steps per second at N = 1,000 leaves 1 ms less the fixed part for 1,000 agents.
+     */
+    private static void printStepCost(double ratePer100, double ratePer1000) {
+        double stepOf100 = 1_000.0 / ratePer100;
+        double stepOf1000 = 1_000.0 / ratePer1000;
+        double perAgentMicros = (stepOf1000 - stepOf100) * 1_000.0 / 900;
+        double fixedMillis = stepOf100 - 100 * perAgentMicros / 1_000.0;
+        System.out.printf(Locale.ROOT, "   a step, later halves: %.2f ms whatever its size + %.2f us per agent; the goal at"
+                + " N=1000 leaves %.2f us per agent%n", fixedMillis, perAgentMicros, Math.max(0, 1.0 - fixedMillis));
     }
 
     /** Median steps per second of a deployed row, over the whole mission and over its later half. */

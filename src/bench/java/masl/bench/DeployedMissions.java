@@ -11,7 +11,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.Collectors;
 import java.util.stream.IntStream;
 import java.util.stream.Stream;
@@ -29,10 +28,10 @@ import masl.translator.MissionLoader;
 import masl.translator.TranslationKey;
 
 /**
- * Missions whose agents run in two other JVMs, as a user deploys them: {@code masl container} of the
- * installed command ({@code masl-cli/build/install}, which {@code gradle bench} installs first), two
- * fresh ones per mission (a container serves one mission and ends with it), joined to a main container
- * in this JVM, where the mission runs through {@link JadeLauncher} as {@code masl run --platform jade}
+ * Missions whose agents run in two other JVMs, as a user deploys them: {@code masl container --serve}
+ * of the installed command ({@code masl-cli/build/install}, which {@code gradle bench} installs first),
+ * two started with the first mission and serving each next one, as a robot's container does, joined to
+ * a main container in this JVM, where the mission runs through {@link JadeLauncher} as {@code masl run --platform jade}
  * runs it. Agents are spread over the two containers in turn ({@code --deploy '*=c2+c3'}, or
  * {@code --place} likewise). Steps are the barrier trips of the mission's trace, timed from the end
  * of the first (the containers' start left out), over the whole mission and over its later half
@@ -47,28 +46,29 @@ final class DeployedMissions {
 
     /**
      * A run: steps per second over the whole mission and over its later half, and coordination
-     * messages per step and container, each way. The containers' JVMs are fresh for each mission: the
-     * first few hundred steps run while their JIT compiles JADE's, Jackson's and the program's code,
-     * and the later half shows the rate of a mission that runs for long.
+     * messages per step and container, each way. The containers' JVMs served the missions before
+     * (a warm-up one at least), so that their JIT has compiled JADE's, Jackson's and the bridge's code;
+     * each mission's program is translated and compiled anew, and the later half leaves its first
+     * steps out.
      */
     record Figures(double stepsPerSecond, double laterStepsPerSecond, double toContainerPerStep,
             double fromContainerPerStep, JvmCpu.PerStep cpu) {
     }
 
-    /**
-     * Each mission's two containers are named after it: a container that served the last mission may
-     * still be known to the platform, its departure not yet seen, and a new one of the same name would
-     * not be let in.
-     */
-    private final AtomicInteger missionNumbers = new AtomicInteger();
     private static final Duration MISSION_TIMEOUT = Duration.ofMinutes(10);
+    private static final List<String> CONTAINERS = List.of("c2", "c3");
 
     private final Path masl;
     private final Path work;
+    /** Where each mission writes its secret, which the serving containers wait for anew. */
+    private final Path secretFile;
+    /** The serving containers, started with the first mission in containers. */
+    private final List<Process> serving = new ArrayList<>();
 
     private DeployedMissions(Path masl, Path work) {
         this.masl = masl;
         this.work = work;
+        this.secretFile = work.resolve("secret");
     }
 
     /** With the installed command of {@code gradle bench}. */
@@ -125,14 +125,11 @@ final class DeployedMissions {
     private Figures inContainers(JadePlatform platform, MissionLoader program, String source, Where where)
             throws Exception {
         List<String> names = program.program().agents().stream().map(agent -> agent.name()).toList();
-        int mission = missionNumbers.incrementAndGet();
-        List<String> containerNames = List.of("c2-" + mission, "c3-" + mission);
         Map<String, String> spread = new LinkedHashMap<>();
         for (int i = 0; i < names.size(); i++) {
-            spread.put(names.get(i), containerNames.get(i % containerNames.size()));
+            spread.put(names.get(i), CONTAINERS.get(i % CONTAINERS.size()));
         }
         MissionSecret secret = MissionSecret.generate();
-        Path secretFile = work.resolve("secret-" + System.nanoTime());
         TripTimes trips = new TripTimes();
         ContainerTraffic traffic = new ContainerTraffic();
         DescriptorLoader descriptors = new DescriptorLoader(AgentPath.parse(""), null);
@@ -153,30 +150,31 @@ final class DeployedMissions {
         } else {
             launcher.place(spread);
         }
-        List<Process> containers = new ArrayList<>();
         JvmCpu.PerStep perStep;
         try (SecretFile shared = secret.writeTo(secretFile); JvmCpu cpu = new JvmCpu(trips)) {
-            for (String container : containerNames) {
-                containers.add(container(platform, container, secretFile));
-                cpu.container(containers.get(containers.size() - 1));
+            if (serving.isEmpty()) {
+                for (String container : CONTAINERS) {
+                    serving.add(container(platform, container));
+                }
             }
+            serving.forEach(cpu::container);
             MissionOutcome outcome = launcher.run(platform, MISSION_TIMEOUT);
             perStep = cpu.perStep();
             outcome.requireCompleted();
-        } finally {
-            for (Process container : containers) {
-                if (!container.waitFor(60, TimeUnit.SECONDS)) {
-                    container.destroyForcibly();
-                }
-            }
         }
-        double perContainerStep = (double) trips.count() * containerNames.size();
+        double perContainerStep = (double) trips.count() * CONTAINERS.size();
         return new Figures(trips.stepsPerSecond(), trips.laterStepsPerSecond(), sum(traffic.sent()) / perContainerStep,
                 sum(traffic.received()) / perContainerStep, perStep);
     }
 
-    /** Deletes the containers' logs and the folder they were written to. */
-    void close() throws IOException {
+    /** Stops the serving containers, and deletes their logs and the folder they were written to. */
+    void close() throws IOException, InterruptedException {
+        for (Process container : serving) {
+            container.destroy();
+            if (!container.waitFor(30, TimeUnit.SECONDS)) {
+                container.destroyForcibly();
+            }
+        }
         try (Stream<Path> files = Files.walk(work)) {
             for (Path file : files.sorted(Comparator.reverseOrder()).toList()) {
                 Files.deleteIfExists(file);
@@ -188,8 +186,8 @@ final class DeployedMissions {
         return counts.values().stream().mapToLong(Long::longValue).sum();
     }
 
-    private Process container(JadePlatform platform, String name, Path secretFile) throws IOException {
-        return new ProcessBuilder(masl.toString(), "container", "--main-host", platform.host(), "--main-port",
+    private Process container(JadePlatform platform, String name) throws IOException {
+        return new ProcessBuilder(masl.toString(), "container", "--serve", "--main-host", platform.host(), "--main-port",
                 String.valueOf(platform.port()), "--name", name, "--timeout", "600", "--secret-file", secretFile.toString())
                 .redirectErrorStream(true)
                 .redirectOutput(work.resolve(name + ".log").toFile())
