@@ -19,8 +19,8 @@ import org.eclipse.aether.repository.RemoteRepository;
  * (the goal forks the lifecycle up to {@code compile}): the journal, and only it, on standard output,
  * as it is written; masl's diagnostics and reports on standard error. In JADE, the mission's agents
  * may be spread over containers that {@code masl:container} (or {@code masl container}) started
- * ({@code -Dplace}, {@code -Ddeploy}, {@code -Dport}, {@code -DsecretFile}, passed on to masl, which
- * says what it refuses). A program error or a mission that does not complete fails the build with
+ * ({@code -Dplace}, {@code -Ddeploy}, {@code -Dport}, {@code -DlocalHost}, {@code -DsecretFile},
+ * passed on to masl, which says what it refuses). A program error or a mission that does not complete fails the build with
  * masl's exit status, what it means and, for a failed mission, the command that runs it again.
  */
 public class RunMojo extends ProgramsMojo {
