@@ -72,7 +72,7 @@ final class MaslExit {
             case 74 -> "an output could not be written";
             case 130 -> "stopped by Ctrl-C";
             case 143 -> "stopped by SIGTERM";
-            default -> "not one of masl's";
+            default -> "a status masl does not give";
         };
     }
 }

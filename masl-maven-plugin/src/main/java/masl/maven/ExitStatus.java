@@ -12,7 +12,7 @@ final class ExitStatus {
         return switch (status) {
             case 1 -> "errors in the program or its descriptors, or an agent class that cannot be made";
             case MISSION_FAILED -> "the mission failed, deadlocked, timed out or was stopped, or its journal or trace could not be written";
-            case 64 -> "masl was given a bad option";
+            case 64 -> "masl was called wrongly";
             case 70 -> "an internal error of masl";
             case 71 -> "out of memory before the mission ran: the program is too large for masl's heap";
             case 74 -> "an output could not be written";

@@ -132,7 +132,7 @@ class SampleProjectTest {
                 + " --platform jade";
         assertTrue(run.output().lines().anyMatch(("masl: " + refusal)::equals), "masl's line, passed on:\n" + run.output());
         assertTrue(run.output().contains("mission count failed: " + refusal
-                + " (masl exit status 64: masl was given a bad option); masl's report is above"), run.output());
+                + " (masl exit status 64: masl was called wrongly); masl's report is above"), run.output());
     }
 
     private static int freePort() throws IOException {
