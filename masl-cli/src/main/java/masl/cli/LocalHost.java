@@ -26,15 +26,13 @@ final class LocalHost {
             throw new UsageException("--local-host " + host + " is every address of this machine: give the one the"
                     + " other machines reach it at");
         }
-        if (address.isLoopbackAddress() && !assigned(address)) {
-            throw new UsageException("--local-host " + host + " is no interface's address, which JADE binds to: give"
-                    + " 127.0.0.1, or the address the other machines reach this one at");
+        if (assigned(address)) {
+            return host;
         }
-        if (!assigned(address)) {
-            throw new UsageException("--local-host " + host + " is not an address of this machine: give the one the"
-                    + " other machines reach it at");
-        }
-        return host;
+        throw new UsageException(address.isLoopbackAddress()
+                ? "--local-host " + host + " is no interface's address, which JADE binds to: give 127.0.0.1, or the"
+                        + " address the other machines reach this one at"
+                : "--local-host " + host + " is not an address of this machine: give the one the other machines reach it at");
     }
 
     /**
