@@ -90,20 +90,14 @@ public class MaslPlugin implements Plugin<Project> {
         // Read when run: a build script may give maslCompile other sources (this repository's missions/ does).
         Callable<FileCollection> programs = compile::getSource;
         run.setPrograms(project.files(programs));
-        run.setAgentPath(extension.getAgentPath());
         run.setMission(stringProperty(project, "mission"));
         run.setPlatform(stringProperty(project, "platform"));
         run.setSeed(stringProperty(project, "seed"));
-        run.setTimeoutSeconds(stringProperty(project, "timeout"));
         run.setCallTimeoutMillis(stringProperty(project, "callTimeout"));
         run.setPlace(stringProperty(project, "place"));
         run.setDeploy(stringProperty(project, "deploy"));
         run.setPort(stringProperty(project, "port"));
-        run.setLocalHost(stringProperty(project, "localHost"));
-        run.setSecretFile(stringProperty(project, "secretFile"));
-        Configuration tool = MaslTool.create(project, artifacts, "maslTool", "maslRun", run::inJade);
-        run.setClasspath(toolClassPath(project, extension, main, tool));
-        run.dependsOn(main.getClassesTaskName());
+        commandTask(project, extension, main, run, MaslTool.create(project, artifacts, "maslTool", "maslRun", run::inJade));
     }
 
     private static void container(Project project, MaslArtifacts artifacts, MaslExtension extension, SourceSet main) {
@@ -111,29 +105,32 @@ public class MaslPlugin implements Plugin<Project> {
         container.setGroup("masl");
         container.setDescription("Hosts, in a JADE container, the agents a mission run elsewhere places or deploys on it"
                 + " (-Pcontainer=NAME -PmainHost=H -PmainPort=P, -PlocalHost=ADDRESS, -PsecretFile=F, -Ptimeout=S, -Pserve)");
-        container.setAgentPath(extension.getAgentPath());
         container.setContainer(stringProperty(project, "container"));
         container.setMainHost(stringProperty(project, "mainHost"));
         container.setMainPort(stringProperty(project, "mainPort"));
-        container.setLocalHost(stringProperty(project, "localHost"));
-        container.setSecretFile(stringProperty(project, "secretFile"));
-        container.setTimeoutSeconds(stringProperty(project, "timeout"));
         // -Pserve alone says yes, as a flag.
         String serve = stringProperty(project, "serve");
         container.setServe(serve != null && !serve.equals("false"));
-        Configuration tool = MaslTool.create(project, artifacts, "maslContainerTool", "maslContainer", () -> true);
-        container.setClasspath(toolClassPath(project, extension, main, tool));
-        container.dependsOn(main.getClassesTaskName());
+        commandTask(project, extension, main, container,
+                MaslTool.create(project, artifacts, "maslContainerTool", "maslContainer", () -> true));
     }
 
     /**
-     * The class path of a task that runs masl: the project's classes and resources and {@code tool}.
-     * The agent path is given to masl as such, not as class path too; masl translates the program
-     * again, so the classes maslCompile generated are not on it either.
+     * What every task that runs masl takes alike ({@link MaslCommandTask}): the agent path, the
+     * properties {@code timeout}, {@code localHost} and {@code secretFile}, and its class path, the
+     * project's classes and resources and {@code tool}, after the classes are built. The agent path
+     * is given to masl as such, not as class path too; masl translates the program again, so the
+     * classes maslCompile generated are not on it either.
      */
-    private static FileCollection toolClassPath(Project project, MaslExtension extension, SourceSet main, Configuration tool) {
-        return project.files(main.getOutput().getClassesDirs(), main.getOutput().getResourcesDir(), tool)
-                .minus(extension.getAgentPath());
+    private static void commandTask(Project project, MaslExtension extension, SourceSet main, MaslCommandTask task,
+            Configuration tool) {
+        task.setAgentPath(extension.getAgentPath());
+        task.setTimeoutSeconds(stringProperty(project, "timeout"));
+        task.setLocalHost(stringProperty(project, "localHost"));
+        task.setSecretFile(stringProperty(project, "secretFile"));
+        task.setClasspath(project.files(main.getOutput().getClassesDirs(), main.getOutput().getResourcesDir(), tool)
+                .minus(extension.getAgentPath()));
+        task.dependsOn(main.getClassesTaskName());
     }
 
     private static String stringProperty(Project project, String name) {
