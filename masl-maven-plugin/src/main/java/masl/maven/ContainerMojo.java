@@ -50,9 +50,8 @@ public class ContainerMojo extends MaslMojo {
         MaslErrorLines report = new MaslErrorLines(System.err);
         int status = masl.run(List.of(), arguments, report);
         if (status != 0) {
-            String why = report.why();
-            throw new MojoFailureException("container " + (container == null ? "" : container + " ") + "failed"
-                    + (why.isEmpty() ? "" : ": " + why) + " (" + MaslJvm.status(status) + "); masl's report is above");
+            String what = container == null ? "container" : "container " + container;
+            throw new MojoFailureException(MaslJvm.failure(what, status, report.why()).toString());
         }
     }
 }

@@ -83,9 +83,17 @@ final class MaslJvm {
         }
     }
 
-    /** "masl exit status N: what it means", for a failure's message. */
-    static String status(int status) {
-        return "masl exit status " + status + ": " + ExitStatus.meaning(status);
+    /**
+     * The message of a goal that masl failed: what failed ({@code mission count}, {@code container c2}),
+     * why (masl's own words, if it said any), with which exit status and what it means.
+     */
+    static StringBuilder failure(String what, int status, String why) {
+        StringBuilder message = new StringBuilder(what).append(" failed");
+        if (!why.isEmpty()) {
+            message.append(": ").append(why);
+        }
+        return message.append(" (masl exit status ").append(status).append(": ").append(ExitStatus.meaning(status))
+                .append("); masl's report is above");
     }
 
     private static void passOn(InputStream from, OutputStream to) {

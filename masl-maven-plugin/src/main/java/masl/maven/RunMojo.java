@@ -93,11 +93,7 @@ public class RunMojo extends ProgramsMojo {
      * mission that ran and failed, the command that runs it again (none in JADE, where no seed applies).
      */
     private String failure(String name, int status, String why, ReplayCommand replay) {
-        StringBuilder message = new StringBuilder("mission ").append(name).append(" failed");
-        if (!why.isEmpty()) {
-            message.append(": ").append(why);
-        }
-        message.append(" (").append(MaslJvm.status(status)).append("); masl's report is above");
+        StringBuilder message = MaslJvm.failure("mission " + name, status, why);
         if (status != ExitStatus.MISSION_FAILED || replay == null) {
             return message.toString();
         }
