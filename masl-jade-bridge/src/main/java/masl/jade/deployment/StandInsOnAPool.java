@@ -25,7 +25,7 @@ public final class StandInsOnAPool implements Scheduler {
 
     private final Scheduler others;
     private final Coordination coordination;
-    private final PoolScheduler pool = new PoolScheduler();
+    private final PoolScheduler pool = PoolScheduler.forStepsElsewhere();
     /** Whether the pool runs each agent, by proxy id: written by {@link #start}, before any slice. */
     private volatile boolean[] onPool = new boolean[0];
 

@@ -62,7 +62,8 @@ import java.util.concurrent.locks.LockSupport;
  * the flush may have tripped a barrier) and before its agent blocks in a primitive. A runner whose
  * own agents wait at a barrier for agents another runner is running spins a moment (up to
  * {@value #SPIN_NANOS} ns) for the trip before it goes idle: in lock-step, a thread wake-up per step
- * would cost more than the step. Nothing else makes a runner spin.
+ * would cost more than the step; a pool {@link #forStepsElsewhere} never spins. Nothing else
+ * makes a runner spin.
  */
 public final class PoolScheduler implements Scheduler {
 
@@ -94,6 +95,8 @@ public final class PoolScheduler implements Scheduler {
 
     private final ForkJoinPool pool;
     private final int workers;
+    /** How long a runner that ran out of work waits for another runner's trip: {@link #SPIN_NANOS} or 0. */
+    private final long spinNanos;
     private final ScheduledThreadPoolExecutor timer;
     /** {@link AgentTask}s, {@link RunBatch}es and {@link WokenBatch}es, in the order they were made runnable. */
     final ConcurrentLinkedQueue<Object> runQueue = new ConcurrentLinkedQueue<>();
@@ -114,10 +117,24 @@ public final class PoolScheduler implements Scheduler {
     }
 
     public PoolScheduler(int workers) {
+        this(workers, SPIN_NANOS);
+    }
+
+    /**
+     * A pool of one worker per available processor for agents whose steps run elsewhere (deployed
+     * agents' stand-ins): a runner never spins for a trip, since the arrivals that make it come from
+     * another JVM, a round trip later, far longer than a spin, whose CPU the other JVMs would lack.
+     */
+    public static PoolScheduler forStepsElsewhere() {
+        return new PoolScheduler(Runtime.getRuntime().availableProcessors(), 0);
+    }
+
+    private PoolScheduler(int workers, long spinNanos) {
         if (workers < 1) {
             throw new IllegalArgumentException("workers: " + workers);
         }
         this.workers = workers;
+        this.spinNanos = spinNanos;
         AtomicInteger count = new AtomicInteger();
         ForkJoinPool.ForkJoinWorkerThreadFactory factory = forkJoinPool -> {
             PoolWorker thread = new PoolWorker(forkJoinPool, this);
@@ -408,7 +425,10 @@ public final class PoolScheduler implements Scheduler {
      * work came, false if the runner should stop.
      */
     private boolean awaitAnotherRunnersWork(SliceRun run) {
-        long deadline = System.nanoTime() + SPIN_NANOS;
+        if (spinNanos == 0) {
+            return hasWork();
+        }
+        long deadline = System.nanoTime() + spinNanos;
         while (runners.get() - idle.size() > 1 && !shutDown && run.awaitsOthers()) {
             for (int i = 0; i < 64; i++) {
                 if (hasWork()) {
