@@ -30,30 +30,40 @@ public final class Batch {
     private Batch() {
     }
 
-    /** The batch of {@code messages}, in their order. */
-    public static ObjectNode of(List<ObjectNode> messages) {
+    /**
+     * A message as an outbox holds it: its fields but its columns, and its columns, null where it has
+     * none. Messages that say the same to several agents may share one {@code fields} object
+     * ({@link WakeUps}), which is then never changed: a run of them is found by its identity, with no
+     * field compared.
+     */
+    record Held(ObjectNode fields, JsonNode agent, JsonNode seq) {
+
+        /** {@code message} as held: its columns are taken out of it, which is the outbox's from then on. */
+        static Held of(ObjectNode message) {
+            return new Held(message, message.remove("agent"), message.remove("seq"));
+        }
+    }
+
+    /** The batch of {@code messages}, in their order; it shares their fields, which must not change while it is sent. */
+    static ObjectNode of(List<Held> messages) {
         ObjectNode batch = JsonNodeFactory.instance.objectNode().put("kind", "batch");
         ArrayNode runs = batch.putArray("runs");
-        ObjectNode run = null;
-        ObjectNode like = null;
-        for (ObjectNode message : messages) {
+        Held like = null;
+        ArrayNode agents = null;
+        ArrayNode seqs = null;
+        for (Held message : messages) {
             if (like == null || !alike(message, like)) {
                 like = message;
-                run = runs.addObject();
-                ObjectNode shared = message.deepCopy();
-                shared.remove(COLUMNS);
-                run.set("like", shared);
-                for (String column : COLUMNS) {
-                    if (message.has(column)) {
-                        run.putArray(column);
-                    }
-                }
+                ObjectNode run = runs.addObject();
+                run.set("like", message.fields());
+                agents = message.agent() == null ? null : run.putArray("agent");
+                seqs = message.seq() == null ? null : run.putArray("seq");
             }
-            for (String column : COLUMNS) {
-                JsonNode value = message.get(column);
-                if (value != null) {
-                    ((ArrayNode) run.get(column)).add(value);
-                }
+            if (agents != null) {
+                agents.add(message.agent());
+            }
+            if (seqs != null) {
+                seqs.add(message.seq());
             }
         }
         return batch;
@@ -61,35 +71,31 @@ public final class Batch {
 
     /**
      * Whether {@code message} joins the run whose first message is {@code like}: it has the same
-     * fields in the same order, at least one a column, and the same value as {@code like} in every
-     * other. The messages of a wave are made by the same code, their fields in one order: walking
-     * both in step spares a lookup per field. Alike messages whose fields came in another order
-     * make runs of their own, which carry them as well.
+     * columns, at least one, and the same other fields, the same object or in the same order with the
+     * same values. The messages of a wave are made by the same code, their fields in one order:
+     * walking both in step spares a lookup per field. Alike messages whose fields came in another
+     * order make runs of their own, which carry them as well.
      */
-    private static boolean alike(ObjectNode message, ObjectNode like) {
-        if (message.size() != like.size()) {
+    private static boolean alike(Held message, Held like) {
+        if ((message.agent() == null) != (like.agent() == null) || (message.seq() == null) != (like.seq() == null)
+                || message.agent() == null && message.seq() == null) {
             return false;
         }
-        boolean columns = false;
-        Iterator<Map.Entry<String, JsonNode>> first = like.fields();
-        for (Iterator<Map.Entry<String, JsonNode>> fields = message.fields(); fields.hasNext(); ) {
+        if (message.fields() == like.fields()) {
+            return true;
+        }
+        if (message.fields().size() != like.fields().size()) {
+            return false;
+        }
+        Iterator<Map.Entry<String, JsonNode>> first = like.fields().fields();
+        for (Iterator<Map.Entry<String, JsonNode>> fields = message.fields().fields(); fields.hasNext(); ) {
             Map.Entry<String, JsonNode> field = fields.next();
             Map.Entry<String, JsonNode> same = first.next();
-            if (!field.getKey().equals(same.getKey())) {
-                return false;
-            }
-            if (isColumn(field.getKey())) {
-                columns = true;
-            } else if (!field.getValue().equals(same.getValue())) {
+            if (!field.getKey().equals(same.getKey()) || !field.getValue().equals(same.getValue())) {
                 return false;
             }
         }
-        return columns;
-    }
-
-    /** Whether {@code field} is one of {@link #COLUMNS}: compared with each, as a field of every message of a wave is. */
-    private static boolean isColumn(String field) {
-        return "agent".equals(field) || "seq".equals(field);
+        return true;
     }
 
     /**

@@ -1,7 +1,9 @@
 package masl.jade.deployment;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.IntNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.LongNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
@@ -46,6 +48,7 @@ public final class Coordination {
     private final ContextCalls calls = new ContextCalls(this);
     private final NamedCalls named = new NamedCalls(this);
     private final MissionLabels labels = new MissionLabels(this);
+    private final WakeUps wakeUps = new WakeUps();
     private final Map<Integer, StandIn> standIns = new ConcurrentHashMap<>();
     /** The stand-ins by proxy id once the mission's agents are all made ({@link #agents}): read per message. */
     private volatile StandIn[] standInsById;
@@ -299,13 +302,20 @@ public final class Coordination {
         return labels;
     }
 
+    WakeUps wakeUps() {
+        return wakeUps;
+    }
+
     List<AgentImplementation> agents() {
         return agents;
     }
 
-    /** Sends {@code message} to the container of {@code standIn}'s agent, which it lets go on. */
-    void send(StandIn standIn, ObjectNode message) {
-        outbox(standIn).add(message.put("agent", standIn.id()), -1);
+    /**
+     * Sends the message of number {@code seq} and fields {@code fields}, which must not change from
+     * then on, to the container of {@code standIn}'s agent, which it lets go on.
+     */
+    void send(StandIn standIn, ObjectNode fields, long seq) {
+        outbox(standIn).add(new Batch.Held(fields, IntNode.valueOf(standIn.id()), LongNode.valueOf(seq)), -1);
     }
 
     /**

@@ -35,6 +35,7 @@ public final class DeployedTeam implements AutoCloseable {
     /** The context of each agent that runs here, by proxy id (null for the others): fixed once made. */
     private final RemoteContext[] hosted;
     private final Callbacks callbacks = new Callbacks();
+    private final ReturnRequests returnRequests = new ReturnRequests();
     private final TeamMembers members = new TeamMembers();
     private final TeamJournal journal = new TeamJournal();
     /**
@@ -83,6 +84,10 @@ public final class DeployedTeam implements AutoCloseable {
 
     Callbacks callbacks() {
         return callbacks;
+    }
+
+    ReturnRequests returnRequests() {
+        return returnRequests;
     }
 
     TeamMembers members() {
@@ -216,10 +221,10 @@ public final class DeployedTeam implements AutoCloseable {
         } catch (RuntimeException | Error failure) {
             failed = failure;
         }
-        ObjectNode returnedFrom = failed != null ? null : agent.returning().taken();
+        Batch.Held returnedFrom = failed != null ? null : agent.returning().taken();
         if (returnedFrom != null) {
             // The program returned from a call that waits for the mission's answer: no thread waits with it.
-            if (CalleeTurn.restsDuring(returnedFrom.get("op").textValue())) {
+            if (CalleeTurn.restsDuring(returnedFrom.fields().get("op").textValue())) {
                 agent.turn().programRests();
             }
             send(returnedFrom, agent.quiet().busyChangeOfNext());
@@ -239,8 +244,19 @@ public final class DeployedTeam implements AutoCloseable {
      * the journal since the last message; {@code busyChange} to the steps running here (-1, or 0 for
      * one that counts as running no more, {@link #letGo}).
      */
-    synchronized void send(ObjectNode message, int busyChange) {
-        outbox.add(withJournal(message), busyChange);
+    void send(ObjectNode message, int busyChange) {
+        send(Batch.Held.of(message), busyChange);
+    }
+
+    /** Sends {@code message} as {@link #send(ObjectNode, int)} does; its fields are not changed, and may be shared. */
+    synchronized void send(Batch.Held message, int busyChange) {
+        String written = journal.drain();
+        if (written.isEmpty()) {
+            outbox.add(message, busyChange);
+        } else {
+            ObjectNode withJournal = message.fields().deepCopy().put("journal", written);
+            outbox.add(new Batch.Held(withJournal, message.agent(), message.seq()), busyChange);
+        }
     }
 
     /**

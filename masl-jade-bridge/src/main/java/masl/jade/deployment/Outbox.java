@@ -44,7 +44,7 @@ final class Outbox {
 
     private final Wire wire;
     private int busy;
-    private List<ObjectNode> held;
+    private List<Batch.Held> held;
     private long firstHeld;
     /** Whether a message was added since the timer last looked: what tells it quiet, with no clock read per message. */
     private boolean addedSinceLook;
@@ -67,8 +67,16 @@ final class Outbox {
         this.busy = busy;
     }
 
-    /** Adds {@code message}, and {@code busyChange} to the agents busy on this side (-1: it unblocks one there). */
-    synchronized void add(ObjectNode message, int busyChange) {
+    /**
+     * Adds {@code message}, and {@code busyChange} to the agents busy on this side (-1: it unblocks
+     * one there); the outbox owns {@code message} from then on.
+     */
+    void add(ObjectNode message, int busyChange) {
+        add(Batch.Held.of(message), busyChange);
+    }
+
+    /** Adds {@code message} as {@link #add(ObjectNode, int)} does; its fields must not change until it is sent. */
+    synchronized void add(Batch.Held message, int busyChange) {
         if (held == null) {
             held = new ArrayList<>();
             firstHeld = System.nanoTime();
@@ -83,7 +91,7 @@ final class Outbox {
         }
     }
 
-    /** Sends {@code message} at once, after what is held. */
+    /** Sends {@code message} at once, after what is held; the outbox owns it from then on. */
     synchronized void now(ObjectNode message) {
         add(message, 0);
         if (held != null) {

@@ -122,13 +122,26 @@ final class QuietBoundaries {
         return atRest && attendFrom <= toldAt;
     }
 
-    /** Adds to {@code request} the boundaries passed since the last request; the next are the mission's until it answers. */
+    /** Adds to {@code request} the boundaries passed since the last request, as {@link #requested} counts them. */
     void request(ObjectNode request) {
-        if (passed > 0) {
-            request.put("passed", passed).put("latest", latestStep);
-            passed = 0;
+        int latest = latestStep;
+        long passedHere = requested();
+        if (passedHere > 0) {
+            request.put("passed", passedHere).put("latest", latest);
         }
+    }
+
+    /** The boundaries passed since the last request, which goes now: the next are the mission's until it answers. */
+    long requested() {
+        long passedHere = passed;
+        passed = 0;
         atRest = false;
         inARow = 0;
+        return passedHere;
+    }
+
+    /** The place of the program's latest step, which a request says with the boundaries it passed here. */
+    int latestStep() {
+        return latestStep;
     }
 }

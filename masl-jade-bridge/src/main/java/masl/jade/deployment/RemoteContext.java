@@ -2,6 +2,7 @@ package masl.jade.deployment;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.IntNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
@@ -169,8 +170,21 @@ final class RemoteContext implements AgentContext, Values.Labels {
     }
 
     private boolean bool(String op, ObjectNode request) {
-        return ReturningCalls.returns(op) ? returning.returned(request(op, request))
+        return ReturningCalls.returns(op) ? returning.returned(returnRequest(op, request))
                 : call(op, request).booleanValue();
+    }
+
+    /**
+     * The request of the call {@code op} the program returns from, with {@code arguments}: with none
+     * (a step boundary, a loop's iteration), fields the container's alike requests share.
+     */
+    private Batch.Held returnRequest(String op, ObjectNode arguments) {
+        if (!arguments.isEmpty()) {
+            return Batch.Held.of(request(op, arguments));
+        }
+        int latest = quiet.latestStep();
+        long passed = quiet.requested();
+        return new Batch.Held(team.returnRequests().of(op, program.pc(), passed, latest), IntNode.valueOf(id), null);
     }
 
     ReturningCalls returning() {

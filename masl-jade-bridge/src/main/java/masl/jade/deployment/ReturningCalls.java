@@ -1,7 +1,6 @@
 package masl.jade.deployment;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicBoolean;
 
@@ -23,7 +22,7 @@ final class ReturningCalls {
 
     // Confined to the thread running the agent's step.
     /** The request of the call the program returned from at once. */
-    private ObjectNode returnedFrom;
+    private Batch.Held returnedFrom;
     /** Whether the latest answer to a call resumed the step that waited in it. */
     private boolean resumedInCall;
     /** Whether the mission's next answer to the agent starts its program's next step. */
@@ -35,7 +34,7 @@ final class ReturningCalls {
     }
 
     /** The program returns from its call {@code request}, which goes once its step has returned: false. */
-    boolean returned(ObjectNode request) {
+    boolean returned(Batch.Held request) {
         returnedFrom = request;
         return false;
     }
@@ -59,8 +58,8 @@ final class ReturningCalls {
      * The request of the call the program returned from, or null; if there is one, the mission's next
      * answer to this agent starts its next step ({@link #resumption}).
      */
-    ObjectNode taken() {
-        ObjectNode request = returnedFrom;
+    Batch.Held taken() {
+        Batch.Held request = returnedFrom;
         returnedFrom = null;
         if (request != null) {
             awaitsResumption.set(true);

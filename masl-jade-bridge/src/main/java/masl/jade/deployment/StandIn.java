@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Function;
 import masl.runtime.AgentContext;
 import masl.runtime.AgentProgram;
 import masl.runtime.DeployedPrograms;
@@ -128,10 +129,9 @@ final class StandIn extends AgentProgram {
         } else if (suspended) {
             // The program waits in the call that suspended it: the answer is its resumption, from pc.
             suspended = false;
-            toStep(ctx, JsonNodeFactory.instance.objectNode().put("kind", "answer")
-                    .put("value", false).put("resumed", true).put("pc", pc));
+            wakeUp(ctx, true);
         } else {
-            toStep(ctx, JsonNodeFactory.instance.objectNode().put("kind", "resume").put("pc", pc));
+            wakeUp(ctx, false);
         }
         while (true) {
             ObjectNode message = requests.poll();
@@ -186,24 +186,31 @@ final class StandIn extends AgentProgram {
     }
 
     private void answer(AgentContext ctx, JsonNode value) {
-        ObjectNode answer = JsonNodeFactory.instance.objectNode().put("kind", "answer").put("pc", pc);
-        answer.set("value", value);
-        toStep(ctx, answer);
+        toStep(ctx, rest -> {
+            ObjectNode answer = JsonNodeFactory.instance.objectNode().put("kind", "answer").put("pc", pc);
+            answer.set("value", value);
+            if (rest != null) {
+                answer.putObject("atRest").put("latest", rest.latestStep()).put("barrier", rest.barrierDue());
+            }
+            return answer;
+        });
+    }
+
+    /** Lets the step go on with nothing to give it ({@link WakeUps}): the call's resumption if {@code resumed}, else the start of a step. */
+    private void wakeUp(AgentContext ctx, boolean resumed) {
+        toStep(ctx, rest -> coordination.wakeUps().of(resumed, pc, rest));
     }
 
     /**
-     * Sends {@code message}, which lets the step go on in its container, numbered and saying whether
-     * its boundaries are at rest ({@link QuietBoundaries}): read after what arrived before the lock.
+     * Sends the message that lets the step go on in its container, made by {@code fields} of whether
+     * its boundaries are at rest ({@link QuietBoundaries}; null if not), read after what arrived
+     * before the lock; numbered.
      */
-    private void toStep(AgentContext ctx, ObjectNode message) {
+    private void toStep(AgentContext ctx, Function<DeployedPrograms.AtRest, ObjectNode> fields) {
         synchronized (toStep) {
             DeployedPrograms.AtRest rest = DeployedPrograms.atRest(ctx);
-            message.put("seq", ++sent);
-            if (rest != null) {
-                message.putObject("atRest").put("latest", rest.latestStep()).put("barrier", rest.barrierDue());
-            }
             passing = rest != null;
-            coordination.send(this, withDone(message));
+            coordination.send(this, withDone(fields.apply(rest)), ++sent);
         }
     }
 
@@ -259,25 +266,28 @@ final class StandIn extends AgentProgram {
     }
 
     /**
-     * Adds the calls that are over since the last message, so that the program's futures complete:
-     * {@code "done"}, absent if none is (most messages of a wave).
+     * {@code message} with the calls that are over since the last message, so that the program's
+     * futures complete: {@code "done"}, absent if none is (most messages of a wave); a copy of it if
+     * it has some, since a wake-up's fields are shared.
      */
     private ObjectNode withDone(ObjectNode message) {
         if (calls.isEmpty()) {
             return message;
         }
+        ObjectNode withDone = message;
         ArrayNode done = null;
         for (Iterator<Map.Entry<Long, CompletableFuture<Object>>> it = calls.entrySet().iterator(); it.hasNext(); ) {
             Map.Entry<Long, CompletableFuture<Object>> call = it.next();
             if (call.getValue().isDone()) {
                 if (done == null) {
-                    done = message.putArray("done");
+                    withDone = message.deepCopy();
+                    done = withDone.putArray("done");
                 }
                 done.add(ended(call.getValue().join()).put("call", call.getKey()));
                 it.remove();
             }
         }
-        return message;
+        return withDone;
     }
 
     /**

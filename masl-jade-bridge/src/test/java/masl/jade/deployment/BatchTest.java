@@ -3,10 +3,13 @@ package masl.jade.deployment;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.IntNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.LongNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.List;
+import masl.runtime.DeployedPrograms;
 import org.junit.jupiter.api.Test;
 
 /** What a batch carries over the wire: every message, in order, alike ones as one run. */
@@ -24,7 +27,7 @@ class BatchTest {
         messages.add(wakeUp(10, 14));
         messages.add(JsonNodeFactory.instance.objectNode().put("kind", "yield").put("agent", 3).put("journal", "x\n"));
         messages.add(JsonNodeFactory.instance.objectNode().put("kind", "yield").put("agent", 5));
-        assertEquals(messages, overTheWire(Batch.of(messages)));
+        assertEquals(messages, overTheWire(batchOf(messages)));
     }
 
     @Test
@@ -33,7 +36,7 @@ class BatchTest {
         for (int agent = 0; agent < 500; agent++) {
             wave.add(wakeUp(agent, 1_000 + agent));
         }
-        ObjectNode batch = Batch.of(wave);
+        ObjectNode batch = batchOf(wave);
         assertEquals(1, batch.get("runs").size(), batch.toString());
         ObjectNode run = (ObjectNode) batch.get("runs").get(0);
         assertEquals(500, run.get("agent").size());
@@ -44,7 +47,7 @@ class BatchTest {
     @Test
     void messagesThatNameNoAgentAndNoNumberAreEachTheirOwnRun() {
         ObjectNode end = JsonNodeFactory.instance.objectNode().put("kind", "end");
-        ObjectNode batch = Batch.of(List.of(end, end.deepCopy()));
+        ObjectNode batch = batchOf(List.of(end, end.deepCopy()));
         assertEquals(2, batch.get("runs").size(), batch.toString());
         assertEquals(List.of(end, end), Batch.each(batch));
     }
@@ -59,7 +62,7 @@ class BatchTest {
 
     @Test
     void aMessageOfARunChangedByItsTakerLeavesTheOthersAsTheyCame() throws Exception {
-        List<ObjectNode> each = overTheWire(Batch.of(List.of(wakeUp(1, 10), wakeUp(2, 11), wakeUp(3, 12))));
+        List<ObjectNode> each = overTheWire(batchOf(List.of(wakeUp(1, 10), wakeUp(2, 11), wakeUp(3, 12))));
         each.get(0).put("pc", 9).remove("seq");
         assertEquals(wakeUp(1, 10).put("pc", 9).without("seq"), each.get(0));
         assertEquals(List.of(wakeUp(2, 11), wakeUp(3, 12)), each.subList(1, 3));
@@ -70,9 +73,22 @@ class BatchTest {
     void alikeMessagesWhoseFieldsCameInAnotherOrderAreRunsOfTheirOwnAndComeBackAsTheyWent() throws Exception {
         ObjectNode first = JsonNodeFactory.instance.objectNode().put("kind", "yield").put("pc", 3).put("agent", 1);
         ObjectNode second = JsonNodeFactory.instance.objectNode().put("pc", 3).put("kind", "yield").put("agent", 2);
-        ObjectNode batch = Batch.of(List.of(first, second));
+        ObjectNode batch = batchOf(List.of(first, second));
         assertEquals(2, batch.get("runs").size(), batch.toString());
         assertEquals(List.of(first, second), overTheWire(batch));
+    }
+
+    @Test
+    void wakeUpsSharingTheirFieldsAreOneRunAndEachComesBackWithItsAgentAndNumber() throws Exception {
+        ObjectNode fields = new WakeUps().of(true, 7, new DeployedPrograms.AtRest(41, true));
+        List<Batch.Held> wave = new ArrayList<>();
+        for (int agent = 0; agent < 3; agent++) {
+            wave.add(new Batch.Held(fields, IntNode.valueOf(agent), LongNode.valueOf(10 + agent)));
+        }
+        ObjectNode batch = Batch.of(wave);
+        assertEquals(1, batch.get("runs").size(), batch.toString());
+        assertEquals(List.of(wakeUp(0, 10).without("done"), wakeUp(1, 11).without("done"), wakeUp(2, 12).without("done")),
+                overTheWire(batch));
     }
 
     @Test
@@ -88,6 +104,11 @@ class BatchTest {
         answer.putObject("atRest").put("latest", 41).put("barrier", true);
         answer.putArray("done");
         return answer.put("agent", agent);
+    }
+
+    /** The batch of {@code messages}, as an outbox makes it of copies of them. */
+    private static ObjectNode batchOf(List<ObjectNode> messages) {
+        return Batch.of(messages.stream().map(message -> Batch.Held.of(message.deepCopy())).toList());
     }
 
     private static List<ObjectNode> overTheWire(ObjectNode batch) throws Exception {
