@@ -1,7 +1,6 @@
 package masl.runtime;
 
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
 import masl.runtime.descriptor.AgentType;
 
 /**
@@ -73,15 +72,23 @@ public final class DeployedPrograms {
     }
 
     /**
-     * Parks {@code agent}, whose step runs in its container, until {@code arrival} completes (the
-     * step's next message has come), holding no thread meanwhile; the caller, the stand-in's
-     * {@code resume}, then returns, and the agent's next slice resumes it. Not blocked while so parked:
-     * its invocations wait for its boundaries, as while its step runs. False, and nothing done, if the
-     * slice has parked already or the program finished (a call performed for the step did): the
-     * caller must wait on its thread. Called by the agent's slice.
+     * Parks {@code agent}, whose step runs in its container, until {@link #arrivedElsewhere} with the
+     * ticket returned (the step's next message has come), holding no thread meanwhile; the caller, the
+     * stand-in's {@code resume}, then returns, and the agent's next slice resumes it. Not blocked
+     * while so parked: its invocations wait for its boundaries, as while its step runs. 0, and
+     * nothing done, if the slice has parked already or the program finished (a call performed for
+     * the step did): the caller must wait on its thread. Called by the agent's slice.
      */
-    public static boolean awaitElsewhere(AgentContext agent, CompletableFuture<?> arrival) {
-        return ((SteppingAgent) agent).awaitElsewhere(arrival);
+    public static long awaitElsewhere(AgentContext agent) {
+        return ((SteppingAgent) agent).awaitElsewhere();
+    }
+
+    /**
+     * The step's next message has come for {@code agent}, parked by {@link #awaitElsewhere} with
+     * {@code ticket}: it runs again. Ignored if that park has ended. Any thread.
+     */
+    public static void arrivedElsewhere(AgentContext agent, long ticket) {
+        ((SteppingAgent) agent).unpark(ticket);
     }
 
     /**

@@ -22,7 +22,7 @@ import masl.runtime.RemotePrimitiveException;
  * tells the container to run the agent's program from here, then performs each request the program
  * makes on this agent's context, in the agent's slices, and answers it, until the container says the
  * step is over. While the step runs in its container, the agent waits for its next message parked,
- * holding no thread ({@link DeployedPrograms#awaitElsewhere}), and the message's arrival makes it
+ * holding no thread ({@link StepMessages#awaitElsewhere}), and the message's arrival makes it
  * runnable: the slice the mission's scheduler then runs takes the message up where the last left off. A call after which the program returns
  * from its step (a boundary that parks it at a barrier) gets no answer then: the program waits in it
  * until the mission resumes this step, and the answer says so, with the resumption point, so that a
@@ -113,7 +113,7 @@ final class StandIn extends AgentProgram {
         if (endOwed) {
             ObjectNode end = requests.poll();
             if (end == null) {
-                if (DeployedPrograms.awaitElsewhere(ctx, requests.arrival())) {
+                if (requests.awaitElsewhere(ctx)) {
                     return;
                 }
                 end = coordination.await(id, requests);
@@ -136,7 +136,7 @@ final class StandIn extends AgentProgram {
         while (true) {
             ObjectNode message = requests.poll();
             if (message == null) {
-                if (DeployedPrograms.awaitElsewhere(ctx, requests.arrival())) {
+                if (requests.awaitElsewhere(ctx)) {
                     away = true;
                     return;
                 }

@@ -1,5 +1,6 @@
 package masl.runtime.scheduling;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -159,24 +160,26 @@ public final class PoolScheduler implements Scheduler {
         if (worker != null && worker.handsOver(agent)) {
             return;
         }
+        if (worker == null) {
+            Together wave = together.get();
+            if (wave != null) {
+                wave.agents.add(agent);
+                return;
+            }
+        }
         runQueue.add(agent);
         // A runner's own slice hands its agent over: that runner takes it once the slice ends, and
         // wakes another only if more work waits then (runAlone). Waking one now would cost a
         // thread wake-up per invocation or event for nothing when the agents take turns.
-        if (worker == null) {
-            Together wave = together.get();
-            if (wave == null || wave.scheduled++ == 0) {
-                startRunnerIfNeeded();
-            }
-        } else if (worker.blockedCalls > 0) {
+        if (worker == null || worker.blockedCalls > 0) {
             startRunnerIfNeeded();
         }
     }
 
     /**
-     * Wakes one runner for the first agent {@code work} makes runnable, and the runners the wave
-     * wants once it returns: a runner that drains the queue meanwhile and goes idle is not woken
-     * again for each agent that follows, a thread wake-up each.
+     * Queues the agents {@code work} makes runnable as one batch once it returns, and wakes the
+     * runners the wave wants then ({@link #scheduleAll}): the runners share it a chunk at a time,
+     * and none is woken for each agent, a thread wake-up each.
      */
     @Override
     public void together(Runnable work) {
@@ -190,7 +193,7 @@ public final class PoolScheduler implements Scheduler {
             work.run();
         } finally {
             together.remove();
-            startRunnersFor(wave.scheduled);
+            scheduleAll(wave.agents);
         }
     }
 
@@ -201,7 +204,7 @@ public final class PoolScheduler implements Scheduler {
 
     /** The agents a thread outside the pool made runnable in {@link #together}. */
     private static final class Together {
-        int scheduled;
+        final List<AgentTask> agents = new ArrayList<>();
     }
 
     /** Appends the whole wave to the run queue as one item, then starts the runners it needs. */

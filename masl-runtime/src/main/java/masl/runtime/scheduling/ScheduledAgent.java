@@ -170,22 +170,21 @@ public abstract class ScheduledAgent extends RunState implements AgentTask {
 
     /**
      * Parks the agent while its step goes on elsewhere (a deployed agent's, in its container) until
-     * {@code arrival} completes, the step's next message having come: its thread is free meanwhile
-     * and it is not blocked ({@link RunState}, {@code AWAY}), so no invocation is served on its
-     * behalf, and the deadlock watchdog counts it running. Not a call of the program, unlike
-     * {@link #await}: no statement, progress or step of the slice is counted. The caller returns
-     * from the program's {@code resume}, which the next slice calls again. False, and nothing
+     * {@link #unpark} with the ticket returned, once the step's next message has come: its thread is
+     * free meanwhile and it is not blocked ({@link RunState}, {@code AWAY}), so no invocation is
+     * served on its behalf, and the deadlock watchdog counts it running. Not a call of the program,
+     * unlike {@link #await}: no statement, progress or step of the slice is counted. The caller
+     * returns from the program's {@code resume}, which the next slice calls again. 0, and nothing
      * done, if the slice has parked already or the program has finished (a call performed for the
      * step did): the caller must then wait on its thread. Called by the agent's slice.
      */
-    public final boolean awaitElsewhere(CompletableFuture<?> arrival) {
+    public final long awaitElsewhere() {
         if (suspended || finished) {
-            return false;
+            return 0;
         }
         long ticket = prepareToPark();
         awayPark = true;
-        arrival.whenComplete((value, failure) -> unpark(ticket));
-        return true;
+        return ticket;
     }
 
     /**
