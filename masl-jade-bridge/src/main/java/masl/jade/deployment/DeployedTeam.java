@@ -250,13 +250,11 @@ public final class DeployedTeam implements AutoCloseable {
 
     /** Sends {@code message} as {@link #send(ObjectNode, int)} does; its fields are not changed, and may be shared. */
     synchronized void send(Batch.Held message, int busyChange) {
-        String written = journal.drain();
-        if (written.isEmpty()) {
-            outbox.add(message, busyChange);
-        } else {
-            ObjectNode withJournal = message.fields().deepCopy().put("journal", written);
-            outbox.add(new Batch.Held(withJournal, message.agent(), message.seq()), busyChange);
+        if (journal.written()) {
+            // The journal text goes in a copy: the message's fields may be shared.
+            message = new Batch.Held(withJournal(message.fields().deepCopy()), message.agent(), message.seq());
         }
+        outbox.add(message, busyChange);
     }
 
     /**
