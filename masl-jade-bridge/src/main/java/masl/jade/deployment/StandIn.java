@@ -189,10 +189,7 @@ final class StandIn extends AgentProgram {
         toStep(ctx, rest -> {
             ObjectNode answer = JsonNodeFactory.instance.objectNode().put("kind", "answer").put("pc", pc);
             answer.set("value", value);
-            if (rest != null) {
-                answer.putObject("atRest").put("latest", rest.latestStep()).put("barrier", rest.barrierDue());
-            }
-            return answer;
+            return WakeUps.withRest(answer, rest);
         });
     }
 

@@ -39,10 +39,14 @@ final class WakeUps {
         } else {
             fields.put("kind", "resume");
         }
-        fields.put("pc", key.pc());
-        if (key.rest() != null) {
-            fields.putObject("atRest").put("latest", key.rest().latestStep()).put("barrier", key.rest().barrierDue());
+        return withRest(fields.put("pc", key.pc()), key.rest());
+    }
+
+    /** {@code message}, which lets a step go on, saying that its boundaries are at rest as {@code rest} says (null: it says nothing). */
+    static ObjectNode withRest(ObjectNode message, DeployedPrograms.AtRest rest) {
+        if (rest != null) {
+            message.putObject("atRest").put("latest", rest.latestStep()).put("barrier", rest.barrierDue());
         }
-        return fields;
+        return message;
     }
 }
