@@ -35,7 +35,7 @@ public final class DeployedTeam implements AutoCloseable {
     /** The context of each agent that runs here, by proxy id (null for the others): fixed once made. */
     private final RemoteContext[] hosted;
     private final Callbacks callbacks = new Callbacks();
-    private final ReturnRequests returnRequests = new ReturnRequests();
+    private final Requests requests = new Requests();
     private final TeamMembers members = new TeamMembers();
     private final TeamJournal journal = new TeamJournal();
     /**
@@ -86,8 +86,8 @@ public final class DeployedTeam implements AutoCloseable {
         return callbacks;
     }
 
-    ReturnRequests returnRequests() {
-        return returnRequests;
+    Requests requests() {
+        return requests;
     }
 
     TeamMembers members() {

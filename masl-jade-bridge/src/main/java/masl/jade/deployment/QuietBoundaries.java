@@ -1,7 +1,6 @@
 package masl.jade.deployment;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 
 /**
  * A deployed agent's boundaries that have nothing to do, passed in its container with no message: a
@@ -120,15 +119,6 @@ final class QuietBoundaries {
 
     private boolean quiet() {
         return atRest && attendFrom <= toldAt;
-    }
-
-    /** Adds to {@code request} the boundaries passed since the last request, as {@link #requested} counts them. */
-    void request(ObjectNode request) {
-        int latest = latestStep;
-        long passedHere = requested();
-        if (passedHere > 0) {
-            request.put("passed", passedHere).put("latest", latest);
-        }
     }
 
     /** The boundaries passed since the last request, which goes now: the next are the mission's until it answers. */

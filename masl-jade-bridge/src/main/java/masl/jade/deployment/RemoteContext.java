@@ -160,9 +160,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
 
     /** {@code request} made the program's request {@code op}, with the boundaries it passed here. */
     private ObjectNode request(String op, ObjectNode request) {
-        request.put("kind", "call").put("agent", id).put("op", op).put("pc", program.pc());
-        quiet.request(request);
-        return request;
+        return Requests.written(request.put("agent", id), op, program.pc(), quiet);
     }
 
     private JsonNode call(String op) {
@@ -182,9 +180,7 @@ final class RemoteContext implements AgentContext, Values.Labels {
         if (!arguments.isEmpty()) {
             return Batch.Held.of(request(op, arguments));
         }
-        int latest = quiet.latestStep();
-        long passed = quiet.requested();
-        return new Batch.Held(team.returnRequests().of(op, program.pc(), passed, latest), IntNode.valueOf(id), null);
+        return new Batch.Held(team.requests().of(op, program.pc(), quiet), IntNode.valueOf(id), null);
     }
 
     ReturningCalls returning() {
